@@ -1,0 +1,27 @@
+#include "gl/objects.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace strata::gl {
+
+Texture createTexture2D(GLenum internalFormat, int width, int height) {
+    Texture t = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), 1, internalFormat, width, height);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+void allocateBuffer(Buffer& buffer, std::size_t bytes, GLenum usage, const char* what) {
+    if (!buffer) buffer = Buffer::create();
+    while (glGetError() != GL_NO_ERROR) {}
+    glNamedBufferData(buffer.id(), GLsizeiptr(bytes == 0 ? 4 : bytes), nullptr, usage);
+    if (glGetError() == GL_OUT_OF_MEMORY)
+        throw std::runtime_error(std::string("out of GPU memory allocating ") + what + " (" +
+                                 std::to_string(bytes) + " bytes)");
+}
+
+}  // namespace strata::gl

@@ -1,0 +1,42 @@
+#pragma once
+// GLSL programs from files in shaders/, with `#include "file"` (relative to the including file,
+// then to the shader root) and `#define` injection after `#version`. A compile or link error
+// throws ShaderError whose first line names the file and line, e.g.
+//   shaders/oit/abuffer_resolve.frag.glsl:42: error: syntax error ...
+#include "gl/objects.hpp"
+
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace strata::gl {
+
+struct ShaderError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// `name=value` pairs; an empty value gives a plain `#define NAME`.
+using Defines = std::map<std::string, std::string>;
+
+// The shader root: $STRATA_SHADER_DIR if set, else the source tree's shaders/.
+std::filesystem::path shaderRoot();
+
+// Result of preprocessing one stage: the text and, for each `#line` source number, its file.
+struct PreprocessedSource {
+    std::string text;
+    std::vector<std::string> files;
+};
+
+PreprocessedSource preprocessShader(const std::filesystem::path& file, const Defines& defines,
+                                    const std::filesystem::path& root);
+
+// Rewrites driver log lines ("0:12(5): error" Mesa, "0(12) : error" NVIDIA) to "file:12: error".
+std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
+
+// Builds a program from stage files (stage from the name: .vert/.frag/.comp/.geom.glsl),
+// given relative to the shader root.
+Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines = {});
+
+}  // namespace strata::gl

@@ -1,0 +1,108 @@
+#include "image/image.hpp"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace strata {
+namespace fs = std::filesystem;
+
+float linearToSrgb(float v) {
+    v = std::clamp(v, 0.0f, 1.0f);
+    return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgbToLinear(float v) {
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+namespace {
+
+// OpenImageIO wants the top row first; our images keep GL's bottom row first.
+OIIO::ImageBuf toImageBuf(const Image& image) {
+    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf buf(spec);
+    std::vector<float> flipped(image.rgba.size());
+    std::size_t row = std::size_t(image.width) * 4;
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(&image.rgba[std::size_t(image.height - 1 - y) * row], row, &flipped[std::size_t(y) * row]);
+    buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, flipped.data());
+    return buf;
+}
+
+}  // namespace
+
+ImageDifference compareImages(const Image& a, const Image& b, float threshold) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("compareImages: sizes differ (" + std::to_string(a.width) + "x" +
+                                    std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
+                                    std::to_string(b.height) + ")");
+    OIIO::ImageBuf A = toImageBuf(a), B = toImageBuf(b);
+    OIIO::ROI rgb = OIIO::get_roi(A.spec());
+    rgb.chbegin = 0;
+    rgb.chend = 3;
+    auto r = OIIO::ImageBufAlgo::compare(A, B, threshold, threshold, rgb);
+    ImageDifference d;
+    d.rmse = r.rms_error;
+    d.maxAbsError = r.maxerror;
+    d.pixelsOver = std::size_t(r.nfail);
+    d.psnr = d.rmse > 0.0 ? std::min(100.0, 20.0 * std::log10(1.0 / d.rmse)) : 100.0;
+    return d;
+}
+
+void writeImage(const fs::path& path, const Image& image) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext != ".png" && ext != ".exr")
+        throw std::runtime_error(path.string() + ": unsupported image type (use .png or .exr)");
+    OIIO::ImageBuf buf = toImageBuf(image);
+    OIIO::ImageBuf out;
+    if (ext == ".png") {
+        // 8-bit PNG holds sRGB-encoded values; alpha stays linear.
+        OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+        out.reset(spec);
+        for (OIIO::ImageBuf::Iterator<float> it(out); !it.done(); ++it) {
+            float px[4];
+            buf.getpixel(it.x(), it.y(), px, 4);
+            for (int c = 0; c < 3; ++c) it[c] = linearToSrgb(px[c]);
+            it[3] = std::clamp(px[3], 0.0f, 1.0f);
+        }
+        out.specmod().attribute("oiio:ColorSpace", "sRGB");
+    } else {
+        out.copy(buf, OIIO::TypeDesc::HALF);
+    }
+    fs::path tmp = path;
+    tmp += ".partial" + ext;
+    if (path.has_parent_path() && !fs::exists(path.parent_path()))
+        throw std::runtime_error(path.string() + ": folder " + path.parent_path().string() + " does not exist");
+    if (!out.write(tmp.string())) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw std::runtime_error(path.string() + ": cannot write image: " + out.geterror());
+    }
+    fs::rename(tmp, path);
+}
+
+Image readImage(const fs::path& path) {
+    OIIO::ImageBuf buf(path.string());
+    if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+        throw std::runtime_error(path.string() + ": cannot read image: " + buf.geterror());
+    const auto& spec = buf.spec();
+    Image image(spec.width, spec.height);
+    bool srgb = path.extension() == ".png";
+    for (int y = 0; y < spec.height; ++y)
+        for (int x = 0; x < spec.width; ++x) {
+            float px[4] = {0, 0, 0, 1};
+            buf.getpixel(x, y, px, std::min(4, spec.nchannels));
+            if (spec.nchannels < 4) px[3] = 1.0f;
+            if (srgb) for (int c = 0; c < 3; ++c) px[c] = srgbToLinear(px[c]);
+            image.set(x, spec.height - 1 - y, {px[0], px[1], px[2], px[3]});
+        }
+    return image;
+}
+
+}  // namespace strata

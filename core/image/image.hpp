@@ -1,0 +1,47 @@
+#pragma once
+// A linear-RGB float image, bottom row first (OpenGL's convention), and what we do with it:
+// write PNG (sRGB-encoded 8 bit) or EXR (linear half), read, and compare.
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgba;  // width * height * 4, row 0 = bottom
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgba(std::size_t(w) * h * 4, 0.0f) {}
+    glm::vec4 at(int x, int y) const {
+        const float* p = &rgba[(std::size_t(y) * width + x) * 4];
+        return {p[0], p[1], p[2], p[3]};
+    }
+    void set(int x, int y, const glm::vec4& v) {
+        float* p = &rgba[(std::size_t(y) * width + x) * 4];
+        p[0] = v.r; p[1] = v.g; p[2] = v.b; p[3] = v.a;
+    }
+};
+
+struct ImageDifference {
+    double rmse = 0.0;          // over RGB, linear
+    double psnr = 0.0;          // dB, peak 1.0; capped at 100 for identical images
+    double maxAbsError = 0.0;   // largest per-channel difference, RGB
+    std::size_t pixelsOver = 0; // pixels whose max channel difference exceeds the threshold
+};
+
+// Compares RGB (alpha ignored) through OpenImageIO. Throws if the sizes differ.
+ImageDifference compareImages(const Image& a, const Image& b, float threshold = 1.0f / 255.0f);
+
+// Writes .png (sRGB 8-bit) or .exr (linear half). Writes to a temporary name and renames,
+// so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
+void writeImage(const std::filesystem::path& path, const Image& image);
+Image readImage(const std::filesystem::path& path);  // .exr linear; .png decoded from sRGB
+
+float linearToSrgb(float v);
+float srgbToLinear(float v);
+
+}  // namespace strata

@@ -1,0 +1,169 @@
+#include "oit/abuffer.hpp"
+
+#include "gl/debug.hpp"
+#include "oit/draw_transparent.hpp"
+#include "render/bindings.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace strata {
+namespace {
+
+constexpr std::uint64_t kNodeBytes = 24;  // shaders/oit/abuffer_node.glsl
+
+struct Tile {
+    glm::ivec2 origin;
+    glm::ivec2 size;
+};
+
+class ABuffer final : public Technique {
+public:
+    explicit ABuffer(TechniqueInfo info) : info_(std::move(info)) {}
+    const TechniqueInfo& info() const override { return info_; }
+
+    std::vector<Parameter> parameters() override {
+        return {
+            {"initial_nodes", "node pool capacity before any growth (fragments)", &initialNodes_, 1, 1e9, true},
+            {"max_block_mib", "largest node pool in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
+             &maxBlockMiB_, 0, 1e6, false},
+        };
+    }
+
+    void render(const FrameContext& frame) override {
+        if (!storeProgram_.program) {
+            storeProgram_ = buildSceneProgram("oit/abuffer_store.frag.glsl");
+            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"});
+            capacityLocation_ = glGetUniformLocation(storeProgram_.id(), "uCapacity");
+            counter_ = gl::Buffer::create();
+            glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+        }
+        if (frame.size != headsSize_) {
+            heads_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
+            headsSize_ = frame.size;
+        }
+        std::uint64_t maxNodes = maxPoolNodes();
+        if (capacity_ == 0) capacity_ = std::min<std::uint64_t>(std::uint64_t(initialNodes_), maxNodes);
+        if (capacity_ > maxNodes) capacity_ = maxNodes;
+        ensurePool();
+
+        stats_ = {};
+        std::vector<Tile> tiles{{{0, 0}, frame.size}};
+        int tilesDone = 0;
+        while (!tiles.empty()) {
+            Tile tile = tiles.back();
+            tiles.pop_back();
+            std::uint64_t needed = store(frame, tile);
+            if (needed > capacity_) {
+                if (needed <= maxNodes) {
+                    // Grow to what this tile needs (with headroom) and render it again.
+                    capacity_ = std::min<std::uint64_t>(maxNodes, needed + needed / 8);
+                    ensurePool();
+                    ++stats_.regrows;
+                    tiles.push_back(tile);
+                    continue;
+                }
+                if (tile.size.x * tile.size.y <= 1)
+                    throw std::runtime_error("abuffer: one pixel holds " + std::to_string(needed) +
+                                             " fragments, more than the largest storage block");
+                capacity_ = maxNodes;
+                ensurePool();
+                splitTile(tile, tiles);
+                continue;
+            }
+            resolve(frame, tile);
+            stats_.fragmentsCaptured += needed;
+            ++tilesDone;
+        }
+        glDisable(GL_SCISSOR_TEST);
+        stats_.tiles = tilesDone;
+        stats_.bytes = capacity_ * kNodeBytes + std::uint64_t(frame.size.x) * frame.size.y * 4 + sizeof(GLuint);
+    }
+
+private:
+    std::uint64_t maxPoolNodes() const {
+        GLint64 limit = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+        std::uint64_t bytes = std::uint64_t(std::max<GLint64>(limit, 1 << 20));
+        if (maxBlockMiB_ > 0) bytes = std::min<std::uint64_t>(bytes, std::uint64_t(maxBlockMiB_ * 1024 * 1024));
+        return std::max<std::uint64_t>(bytes / kNodeBytes, 1);
+    }
+
+    void ensurePool() {
+        if (poolCapacity_ == capacity_) return;
+        gl::allocateBuffer(nodes_, capacity_ * kNodeBytes, GL_DYNAMIC_COPY, "abuffer node pool");
+        poolCapacity_ = capacity_;
+    }
+
+    static void splitTile(const Tile& t, std::vector<Tile>& out) {
+        if (t.size.x >= t.size.y) {
+            int half = t.size.x / 2;
+            out.push_back({t.origin, {half, t.size.y}});
+            out.push_back({{t.origin.x + half, t.origin.y}, {t.size.x - half, t.size.y}});
+        } else {
+            int half = t.size.y / 2;
+            out.push_back({t.origin, {t.size.x, half}});
+            out.push_back({{t.origin.x, t.origin.y + half}, {t.size.x, t.size.y - half}});
+        }
+    }
+
+    // Stores the tile's fragments; returns how many there were (stored or not).
+    std::uint64_t store(const FrameContext& frame, const Tile& tile) {
+        gl::ScopedPass pass(frame.timer, "abuffer store");
+        GLuint zero = 0;
+        glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        setTransparentDepthState(frame);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
+        glProgramUniform1ui(storeProgram_.id(), capacityLocation_, GLuint(std::min<std::uint64_t>(capacity_, 0xFFFFFFFFu)));
+        stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                        GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        ++stats_.passes;
+        GLuint count = 0;
+        glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
+        return count;
+    }
+
+    void resolve(const FrameContext& frame, const Tile& tile) {
+        gl::ScopedPass pass(frame.timer, "abuffer resolve");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
+        glDisable(GL_BLEND);
+        glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
+        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        drawFullscreen(frame, resolveProgram_.id());
+        ++stats_.passes;
+    }
+
+    TechniqueInfo info_;
+    SceneProgram storeProgram_;
+    gl::Program resolveProgram_;
+    GLint capacityLocation_ = -1;
+    gl::Buffer counter_, nodes_;
+    gl::Texture heads_;
+    glm::ivec2 headsSize_{0, 0};
+    std::uint64_t capacity_ = 0, poolCapacity_ = 0;
+    double initialNodes_ = 1 << 20;
+    double maxBlockMiB_ = 0;
+};
+
+}  // namespace
+
+TechniqueEntry abufferEntry() {
+    TechniqueInfo info{"abuffer", "reference", true, true, "2 per tile (+1 store per regrow)",
+                       "w*h*4 heads + 24 B per fragment, pool grown to the fragments present",
+                       "exact reference: per-pixel linked lists of every fragment, sorted by (depth, object, primitive)"};
+    return {info, [info] { return std::make_unique<ABuffer>(info); }};
+}
+
+}  // namespace strata

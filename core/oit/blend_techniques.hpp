@@ -1,0 +1,9 @@
+#pragma once
+#include "oit/technique.hpp"
+
+namespace strata {
+
+TechniqueEntry blendUnsortedEntry();
+TechniqueEntry blendSortedEntry();
+
+}  // namespace strata

@@ -1,0 +1,40 @@
+#include "oit/draw_transparent.hpp"
+
+#include <algorithm>
+
+namespace strata {
+
+void setTransparentDepthState(const FrameContext& frame) {
+    glViewport(0, 0, frame.size.x, frame.size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+}
+
+std::uint64_t drawTransparent(const FrameContext& frame, const SceneProgram& program, const std::vector<int>& order) {
+    glUseProgram(program.id());
+    frame.scene.setFrameUniforms(program, frame.viewProjection);
+    for (int object : order) frame.scene.draw(program, object);
+    return order.size();
+}
+
+void drawFullscreen(const FrameContext& frame, GLuint program) {
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glUseProgram(program);
+    glBindVertexArray(frame.targets.emptyVertexArray());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+std::vector<int> sortedBackToFront(const FrameContext& frame) {
+    std::vector<int> order = frame.transparentOrder;
+    const auto& objects = frame.scene.objects();
+    glm::vec3 eye = frame.camera.position;
+    glm::vec3 forward = frame.camera.forward();
+    auto viewDepth = [&](int i) { return glm::dot(objects[i].worldBounds.center() - eye, forward); };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return viewDepth(a) > viewDepth(b); });
+    return order;
+}
+
+}  // namespace strata

@@ -1,0 +1,24 @@
+#pragma once
+// The geometry pass every technique shares: the transparent objects in a given order, depth
+// tested against the opaque depth (reversed-Z: GL_GREATER passes nearer fragments) without
+// depth writes, both faces, into whatever framebuffer is bound.
+#include "oit/technique.hpp"
+#include "render/scene_program.hpp"
+
+#include <vector>
+
+namespace strata {
+
+// Binds `program`, sets the frame uniforms and draws `order`; returns the number of draws.
+std::uint64_t drawTransparent(const FrameContext& frame, const SceneProgram& program, const std::vector<int>& order);
+
+// Depth test against the opaque depth, no writes, no culling, full viewport.
+void setTransparentDepthState(const FrameContext& frame);
+
+// Draws one full-screen triangle with `program` (depth test off).
+void drawFullscreen(const FrameContext& frame, GLuint program);
+
+// Transparent objects sorted back to front by the distance of their bounds' centres.
+std::vector<int> sortedBackToFront(const FrameContext& frame);
+
+}  // namespace strata

@@ -1,0 +1,91 @@
+#pragma once
+// The transparency-technique interface. A technique composites the scene's transparent objects
+// over the opaque image: it reads the opaque colour and depth from the frame targets and writes
+// the output colour. It declares what it is (TechniqueInfo), exposes its parameters, and reports
+// what the last frame cost and captured (TechniqueStats).
+#include "camera/camera.hpp"
+#include "gl/gpu_timer.hpp"
+#include "render/frame_targets.hpp"
+#include "render/gpu_scene.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+struct TechniqueInfo {
+    std::string id;
+    std::string family;         // baseline, peeling, buffer, coplanarity, volumetric, approximate, reference
+    bool robust = false;        // captures every fragment (given enough memory)
+    bool handlesCoplanarity = false;
+    std::string passes;         // e.g. "1", "N", "ceil(N/2)+1", "2 (+regrow)"
+    std::string memoryModel;    // e.g. "none", "w*h*K*8", "pool sized to fragments"
+    std::string description;
+};
+
+struct TechniqueStats {
+    int passes = 0;                       // geometry and full-screen passes issued
+    std::uint64_t bytes = 0;              // GPU memory the technique holds
+    std::uint64_t fragmentsCaptured = 0;  // fragments that reached the final composite
+    std::uint64_t fragmentsDropped = 0;   // counted but not stored
+    bool overflowed = false;              // something did not fit (and was dropped or approximated)
+    int regrows = 0;                      // exact paths: times memory grew and the frame re-rendered
+    int tiles = 1;                        // exact paths: screen tiles used
+    std::uint64_t objectDraws = 0;        // draw calls issued for transparent objects
+};
+
+// An integer or real knob with its range, driving the panel, --set key=value and JSON alike.
+struct Parameter {
+    std::string name;
+    std::string help;
+    double* value;
+    double min;
+    double max;
+    bool integer;
+};
+
+struct FrameContext {
+    const GpuScene& scene;
+    const Camera& camera;
+    glm::mat4 view;
+    glm::mat4 projection;
+    glm::mat4 viewProjection;
+    glm::ivec2 size;
+    const FrameTargets& targets;
+    gl::GpuTimer* timer;                  // null when not timing
+    std::vector<int> transparentOrder;    // submission order of transparent objects
+};
+
+class Technique {
+public:
+    virtual ~Technique() = default;
+    virtual const TechniqueInfo& info() const = 0;
+    virtual void render(const FrameContext& frame) = 0;
+    const TechniqueStats& stats() const { return stats_; }
+    virtual std::vector<Parameter> parameters() { return {}; }
+
+protected:
+    TechniqueStats stats_;
+};
+
+struct TechniqueEntry {
+    TechniqueInfo info;
+    std::function<std::unique_ptr<Technique>()> create;
+};
+
+// Every technique by id, in display order. The command line, panel and bench read this list.
+const std::vector<TechniqueEntry>& techniqueRegistry();
+// Throws std::invalid_argument listing the known ids when `id` is unknown.
+std::unique_ptr<Technique> createTechnique(const std::string& id);
+const TechniqueEntry* findTechnique(const std::string& id);
+
+// Applies "name=value" to the technique's parameters; throws std::invalid_argument on an
+// unknown name, a malformed value or one outside the range.
+void setParameter(Technique& technique, const std::string& assignment);
+
+}  // namespace strata

@@ -1,0 +1,92 @@
+#include "render/frame_renderer.hpp"
+
+#include "oit/draw_transparent.hpp"
+#include "render/bindings.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace strata {
+
+FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, glm::ivec2 size,
+                                  Technique* technique, const FrameOptions& options) {
+    auto cpuStart = std::chrono::steady_clock::now();
+    targets_.resize(size);
+    if (!opaqueProgram_.program) opaqueProgram_ = buildSceneProgram("common/opaque.frag.glsl");
+    gl::GpuTimer* timer = options.timePasses ? &timer_ : nullptr;
+
+    glm::mat4 view = camera.view();
+    glm::mat4 projection = camera.projection(float(size.x) / float(size.y));
+    FrameContext frame{scene, camera, view, projection, projection * view, size, targets_, timer,
+                       scene.transparentObjects()};
+    if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
+
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    {
+        gl::ScopedPass pass(timer, "opaque");
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_.opaqueFramebuffer());
+        glViewport(0, 0, size.x, size.y);
+        glDisable(GL_SCISSOR_TEST);
+        glDisable(GL_BLEND);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_GREATER);
+        glDepthMask(GL_TRUE);
+        const glm::vec3 bg = scene.scene().background;
+        const float clearColor[4] = {bg.r, bg.g, bg.b, 1.0f};
+        const float clearDepth = 0.0f;  // reversed-Z: 0 is the far plane
+        glClearNamedFramebufferfv(targets_.opaqueFramebuffer(), GL_COLOR, 0, clearColor);
+        glClearNamedFramebufferfv(targets_.opaqueFramebuffer(), GL_DEPTH, 0, &clearDepth);
+        glUseProgram(opaqueProgram_.id());
+        scene.setFrameUniforms(opaqueProgram_, frame.viewProjection);
+        for (int object : scene.opaqueObjects()) scene.draw(opaqueProgram_, object);
+    }
+    targets_.copyOpaqueToOutput();
+
+    FrameResult result;
+    if (technique && scene.hasTransparency()) {
+        technique->render(frame);
+        result.stats = technique->stats();
+        result.transparencyPass = true;
+    }
+    if (options.countFragments) result.fragmentsTotal = scene.hasTransparency() ? countFragments(frame) : 0;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (timer) result.passTimes = timer_.resolve();
+    glFinish();
+    for (const auto& p : result.passTimes) result.gpuMs += p.gpuMs;
+    result.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
+    return result;
+}
+
+std::uint64_t FrameRenderer::countFragments(const FrameContext& frame) {
+    if (!countProgram_.program) {
+        countProgram_ = buildSceneProgram("common/count_fragments.frag.glsl");
+        counter_ = gl::Buffer::create();
+        glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    GLuint zero = 0;
+    glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
+    // A scratch pass: draws into the output framebuffer with colour writes off.
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.outputFramebuffer());
+    setTransparentDepthState(frame);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+    drawTransparent(frame, countProgram_, frame.transparentOrder);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint count = 0;
+    glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
+    return count;
+}
+
+Image FrameRenderer::readOutput() const {
+    glm::ivec2 size = targets_.size();
+    Image image(size.x, size.y);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(targets_.outputColor(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
+                      image.rgba.data());
+    return image;
+}
+
+}  // namespace strata

@@ -1,0 +1,49 @@
+#pragma once
+// One frame, start to end: opaque pass into colour and depth, then the transparency technique
+// composites over it into the output colour. A scene with nothing transparent gets no
+// transparency pass at all. Optionally counts every transparent fragment in front of the opaque
+// depth once, by one shared method, so every technique's robustness ratio means the same.
+#include "camera/camera.hpp"
+#include "gl/gpu_timer.hpp"
+#include "image/image.hpp"
+#include "oit/technique.hpp"
+#include "render/frame_targets.hpp"
+#include "render/gpu_scene.hpp"
+
+#include <optional>
+
+namespace strata {
+
+struct FrameOptions {
+    bool timePasses = true;
+    bool countFragments = false;
+    bool reverseSubmission = false;   // draw transparent objects in reverse id order
+};
+
+struct FrameResult {
+    std::vector<gl::PassTime> passTimes;
+    double gpuMs = 0.0;     // sum over passes
+    double cpuMs = 0.0;     // wall time of the whole frame, including waits for results
+    TechniqueStats stats;
+    std::optional<std::uint64_t> fragmentsTotal;
+    bool transparencyPass = false;
+};
+
+class FrameRenderer {
+public:
+    FrameResult render(const GpuScene& scene, const Camera& camera, glm::ivec2 size, Technique* technique,
+                       const FrameOptions& options = {});
+    // The last frame's output colour (linear RGB, alpha 1), bottom row first.
+    Image readOutput() const;
+    const FrameTargets& targets() const { return targets_; }
+
+private:
+    std::uint64_t countFragments(const FrameContext& frame);
+
+    FrameTargets targets_;
+    gl::GpuTimer timer_;
+    SceneProgram opaqueProgram_, countProgram_;
+    gl::Buffer counter_;
+};
+
+}  // namespace strata

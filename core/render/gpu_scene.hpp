@@ -1,0 +1,50 @@
+#pragma once
+// The scene on the GPU: one vertex array per mesh, the flattened objects split into opaque and
+// transparent lists, and the draw call every pass uses.
+#include "gl/objects.hpp"
+#include "render/scene_program.hpp"
+#include "scene/scene.hpp"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace strata {
+
+struct GpuMesh {
+    gl::VertexArray vertexArray;
+    gl::Buffer vertices;   // interleaved position, normal (6 floats)
+    gl::Buffer indices;    // uint32
+    GLsizei indexCount = 0;
+};
+
+class GpuScene {
+public:
+    explicit GpuScene(Scene scene);
+
+    const Scene& scene() const { return scene_; }
+    const std::vector<Object>& objects() const { return objects_; }
+    const std::vector<int>& opaqueObjects() const { return opaque_; }
+    const std::vector<int>& transparentObjects() const { return transparent_; }
+    bool hasTransparency() const { return !transparent_.empty(); }
+    const Bounds& bounds() const { return bounds_; }
+    std::size_t triangleCount() const { return triangles_; }
+
+    // Sets the per-object uniforms (model, normal matrix, material, id) on `program`, which
+    // must be bound, and draws the object's triangles.
+    void draw(const SceneProgram& program, int objectIndex) const;
+
+    // Uniforms every scene program shares for a frame.
+    void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
+
+private:
+    Scene scene_;
+    std::vector<Object> objects_;
+    std::vector<GpuMesh> meshes_;
+    std::vector<int> opaque_;
+    std::vector<int> transparent_;
+    Bounds bounds_;
+    std::size_t triangles_ = 0;
+};
+
+}  // namespace strata

@@ -1,0 +1,21 @@
+#pragma once
+// A program that draws scene meshes (shaders/common/scene.vert.glsl plus a fragment stage),
+// with the locations of the per-frame and per-object uniforms looked up once. A stage that
+// does not use a uniform has location -1, which GL ignores, so one draw path serves all.
+#include "gl/shader_program.hpp"
+
+#include <string>
+
+namespace strata {
+
+struct SceneProgram {
+    gl::Program program;
+    GLint viewProj = -1, model = -1, normalMatrix = -1, baseColor = -1, alpha = -1, objectId = -1,
+          lightDir = -1, alphaCutoff = -1;
+
+    GLuint id() const { return program.id(); }
+};
+
+SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines = {});
+
+}  // namespace strata

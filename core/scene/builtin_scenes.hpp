@@ -1,0 +1,39 @@
+#pragma once
+// Procedural scenes whose depth complexity and coplanarity are known by construction:
+//   builtin:layers:N     N parallel quads covering the view (depth complexity exactly N), nearest
+//                        first in submission order
+//   builtin:coplanar:K   K coincident full-view quads with different colours (one depth, K fragments)
+//   builtin:cubes        three partially overlapping transparent cubes sharing face planes
+//   builtin:cubes:separated  the same cubes nudged apart so no faces are coplanar
+//   builtin:volumes      intersecting transparent spheres with attenuation tau and albedo
+//   builtin:default      the demo: an opaque room with transparent and intersecting objects,
+//                        coplanar panels and a field of repeated models
+#include "scene/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace strata {
+
+struct BuiltinSceneInfo {
+    std::string name;      // e.g. "layers"
+    std::string argument;  // e.g. "N (1..4096, default 8)"
+    std::string description;
+};
+
+const std::vector<BuiltinSceneInfo>& builtinScenes();
+
+// `spec` is what follows "builtin:", e.g. "layers:8". Throws std::invalid_argument for an
+// unknown name or a bad argument.
+Scene makeBuiltinScene(const std::string& spec);
+
+Scene makeLayersScene(int layers, float alpha = 0.5f);
+Scene makeCoplanarScene(int copies, float alpha = 0.5f);
+Scene makeCubesScene(bool separated);
+Scene makeVolumesScene();
+Scene makeDefaultScene();
+
+// A distinct, saturated colour for index i (golden-angle hue steps).
+glm::vec3 paletteColor(int i);
+
+}  // namespace strata

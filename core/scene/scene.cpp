@@ -1,0 +1,120 @@
+#include "scene/scene.hpp"
+
+#include <stdexcept>
+
+namespace strata {
+
+const char* to_string(AlphaMode mode) {
+    switch (mode) {
+        case AlphaMode::Opaque: return "OPAQUE";
+        case AlphaMode::Mask: return "MASK";
+        case AlphaMode::Blend: return "BLEND";
+    }
+    return "?";
+}
+
+Bounds Bounds::transformed(const glm::mat4& m) const {
+    Bounds out;
+    if (empty()) return out;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 corner((i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z);
+        out.extend(glm::vec3(m * glm::vec4(corner, 1.0f)));
+    }
+    return out;
+}
+
+Bounds Mesh::bounds() const {
+    Bounds b;
+    for (const auto& p : positions) b.extend(p);
+    return b;
+}
+
+int Scene::addNode(Node n, int parent) {
+    nodes.push_back(std::move(n));
+    int index = int(nodes.size()) - 1;
+    if (parent < 0) roots.push_back(index);
+    else nodes[parent].children.push_back(index);
+    return index;
+}
+
+namespace {
+
+struct Flattener {
+    const Scene& scene;
+    std::vector<Object> objects;
+    std::vector<char> onStack;
+
+    void visit(int nodeIndex, const glm::mat4& parentWorld, int inheritedMaterial) {
+        if (nodeIndex < 0 || nodeIndex >= int(scene.nodes.size()))
+            throw std::runtime_error("node index " + std::to_string(nodeIndex) + " out of range");
+        if (onStack[nodeIndex])
+            throw std::runtime_error("node graph has a cycle through node " + std::to_string(nodeIndex));
+        onStack[nodeIndex] = 1;
+        const Node& node = scene.nodes[nodeIndex];
+        glm::mat4 world = parentWorld * node.local;
+        int material = node.materialOverride >= 0 ? node.materialOverride : inheritedMaterial;
+        for (int meshIndex : node.meshes) {
+            if (meshIndex < 0 || meshIndex >= int(scene.meshes.size()))
+                throw std::runtime_error("mesh index " + std::to_string(meshIndex) + " out of range");
+            const Mesh& mesh = scene.meshes[meshIndex];
+            Object o;
+            o.id = int(objects.size());
+            o.mesh = meshIndex;
+            o.material = material >= 0 ? material : mesh.material;
+            if (o.material < 0 || o.material >= int(scene.materials.size()))
+                throw std::runtime_error("material index " + std::to_string(o.material) + " out of range");
+            o.world = world;
+            o.worldBounds = mesh.bounds().transformed(world);
+            objects.push_back(o);
+        }
+        for (int child : node.children) visit(child, world, material);
+        onStack[nodeIndex] = 0;
+    }
+};
+
+}  // namespace
+
+std::vector<Object> flatten(const Scene& scene) {
+    Flattener f{scene, {}, std::vector<char>(scene.nodes.size(), 0)};
+    for (int root : scene.roots) f.visit(root, glm::mat4(1.0f), -1);
+    return std::move(f.objects);
+}
+
+Bounds worldBounds(const Scene&, const std::vector<Object>& objects) {
+    Bounds b;
+    for (const auto& o : objects) b.extend(o.worldBounds);
+    return b;
+}
+
+bool hasTransparency(const Scene& scene, const std::vector<Object>& objects) {
+    for (const auto& o : objects)
+        if (scene.materials[o.material].isTransparent()) return true;
+    return false;
+}
+
+void makeFlatNormals(Mesh& mesh) {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> indices;
+    positions.reserve(mesh.indices.size());
+    normals.reserve(mesh.indices.size());
+    indices.reserve(mesh.indices.size());
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        glm::vec3 a = mesh.positions[mesh.indices[t]];
+        glm::vec3 b = mesh.positions[mesh.indices[t + 1]];
+        glm::vec3 c = mesh.positions[mesh.indices[t + 2]];
+        glm::vec3 n = glm::cross(b - a, c - a);
+        float len = glm::length(n);
+        n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+        for (glm::vec3 p : {a, b, c}) {
+            indices.push_back(std::uint32_t(positions.size()));
+            positions.push_back(p);
+            normals.push_back(n);
+        }
+    }
+    mesh.positions = std::move(positions);
+    mesh.normals = std::move(normals);
+    mesh.indices = std::move(indices);
+}
+
+}  // namespace strata

@@ -1,0 +1,114 @@
+#pragma once
+// The scene graph: materials, triangle meshes, nodes with local transforms, and the flattened
+// list of drawable objects every renderer (GPU techniques and the CPU reference) consumes.
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+const char* to_string(AlphaMode mode);
+
+struct Material {
+    std::string name = "default";
+    glm::vec3 baseColor{0.8f};
+    float alpha = 1.0f;              // coverage/opacity used by the blending techniques
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;        // MASK: fragments with alpha < cutoff are discarded
+    // Volumetric model (Barta & Kovacs): attenuation per metre for each colour channel and the
+    // single-scattering albedo. tau = -ln(attenuationColor) / attenuationDistance for glTF
+    // KHR_materials_volume; zero means "a thin surface" for the surface techniques.
+    glm::vec3 tau{0.0f};
+    glm::vec3 albedo{0.0f};
+    bool doubleSided = true;
+
+    // Transparent materials go through the transparency technique, everything else through
+    // the opaque pass (MASK is an alpha test, hence opaque).
+    bool isTransparent() const { return alphaMode == AlphaMode::Blend; }
+};
+
+struct Bounds {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+
+    bool empty() const { return min.x > max.x; }
+    void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void extend(const Bounds& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    float radius() const { return empty() ? 0.0f : 0.5f * glm::length(max - min); }
+    Bounds transformed(const glm::mat4& m) const;
+};
+
+// One triangle list with one material. Always indexed (non-indexed input gets 0..n-1).
+// Normals are per vertex; a loader without normals produces flat ones by unwelding.
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> indices;
+    int material = 0;
+
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    Bounds bounds() const;
+};
+
+struct Node {
+    std::string name;
+    glm::mat4 local{1.0f};
+    std::vector<int> children;
+    std::vector<int> meshes;          // indices into Scene::meshes
+    int materialOverride = -1;        // applies to this node's meshes and its descendants
+};
+
+// A camera the scene suggests (builtin scenes place one; loaded models are framed instead).
+struct CameraPose {
+    glm::vec3 position{0.0f};
+    glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};   // camera looks down its local -Z
+    float fovYDegrees = 50.0f;
+};
+
+struct Scene {
+    std::string name;
+    std::vector<Material> materials;  // index 0 always exists (the default material)
+    std::vector<Mesh> meshes;
+    std::vector<Node> nodes;
+    std::vector<int> roots;
+    std::optional<CameraPose> camera;
+    glm::vec3 lightDirection = glm::normalize(glm::vec3(0.35f, 0.8f, 0.5f));  // towards the light, world
+    glm::vec3 background{0.08f, 0.08f, 0.1f};                               // linear RGB
+
+    int addMaterial(Material m) { materials.push_back(std::move(m)); return int(materials.size()) - 1; }
+    int addMesh(Mesh m) { meshes.push_back(std::move(m)); return int(meshes.size()) - 1; }
+    int addNode(Node n, int parent = -1);
+};
+
+// A drawable: one mesh placed in the world with its resolved material. `id` is the stable
+// object id (depth-first order of the graph) used to break depth ties between coplanar
+// surfaces; triangle index within the mesh is the primitive id.
+struct Object {
+    int id = 0;
+    int mesh = 0;
+    int material = 0;
+    glm::mat4 world{1.0f};
+    Bounds worldBounds;
+};
+
+// Flattens the graph depth first. Throws std::runtime_error on a cycle or a bad index.
+std::vector<Object> flatten(const Scene& scene);
+
+Bounds worldBounds(const Scene& scene, const std::vector<Object>& objects);
+
+// Counts transparent objects; a scene with none needs no transparency pass.
+bool hasTransparency(const Scene& scene, const std::vector<Object>& objects);
+
+// Computes flat normals by unwelding (every triangle gets its own three vertices).
+void makeFlatNormals(Mesh& mesh);
+
+}  // namespace strata

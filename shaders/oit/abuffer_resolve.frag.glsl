@@ -1,0 +1,71 @@
+#version 450 core
+// A-buffer resolve: sorts each pixel's list front to back by (depth, object id, primitive id)
+// and composites it over the opaque colour. Short lists are insertion-sorted in registers;
+// a list longer than LOCAL_CAPACITY is walked by repeated selection of the next key, O(n^2)
+// but exact for any depth complexity.
+#include "bindings.glsl"
+#include "abuffer_node.glsl"
+
+#ifndef LOCAL_CAPACITY
+#define LOCAL_CAPACITY 64
+#endif
+
+layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
+layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
+
+layout(location = 0) out vec4 outColor;
+
+// True when node a must be composited before node b.
+bool before(uint a, uint b) {
+    FragmentNode na = nodes[a];
+    FragmentNode nb = nodes[b];
+    if (na.depth != nb.depth) return na.depth > nb.depth;
+    if (na.objectId != nb.objectId) return na.objectId < nb.objectId;
+    return na.primitiveId < nb.primitiveId;
+}
+
+void composite(uint n, inout vec3 color, inout float transmittance) {
+    vec2 rg = unpackHalf2x16(nodes[n].colorRG);
+    vec2 ba = unpackHalf2x16(nodes[n].colorBA);
+    color += transmittance * ba.y * vec3(rg, ba.x);
+    transmittance *= 1.0 - ba.y;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 opaque = texelFetch(uOpaqueColor, pixel, 0).rgb;
+    uint head = imageLoad(uHeads, pixel).r;
+    if (head == 0u) { outColor = vec4(opaque, 1.0); return; }
+
+    uint local[LOCAL_CAPACITY];
+    uint count = 0u;
+    bool tooLong = false;
+    for (uint n = head; n != 0u; n = nodes[n - 1u].next) {
+        if (count == LOCAL_CAPACITY) { tooLong = true; break; }
+        uint node = n - 1u;
+        uint i = count++;
+        while (i > 0u && before(node, local[i - 1u])) { local[i] = local[i - 1u]; --i; }
+        local[i] = node;
+    }
+
+    vec3 color = vec3(0.0);
+    float transmittance = 1.0;
+    if (!tooLong) {
+        for (uint i = 0u; i < count; ++i) composite(local[i], color, transmittance);
+    } else {
+        // Selection walk: each step finds the first node after the previous one in key order.
+        uint previous = 0xFFFFFFFFu;
+        while (true) {
+            uint best = 0xFFFFFFFFu;
+            for (uint n = head; n != 0u; n = nodes[n - 1u].next) {
+                uint node = n - 1u;
+                if (previous != 0xFFFFFFFFu && !before(previous, node)) continue;
+                if (best == 0xFFFFFFFFu || before(node, best)) best = node;
+            }
+            if (best == 0xFFFFFFFFu) break;
+            composite(best, color, transmittance);
+            previous = best;
+        }
+    }
+    outColor = vec4(color + transmittance * opaque, 1.0);
+}

@@ -1,0 +1,23 @@
+#version 450 core
+// A-buffer store pass: every transparent fragment in front of the opaque depth is appended to
+// its pixel's list. Fragments past the pool's capacity are counted (the counter keeps running)
+// but not stored; the host grows the pool to the counted size and renders again.
+#include "surface.glsl"
+#include "abuffer_node.glsl"
+
+layout(early_fragment_tests) in;
+layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
+uniform uint uCapacity;
+
+void main() {
+    uint index = atomicCounterIncrement(uNodeCount);
+    if (index >= uCapacity) return;
+    vec4 c = surfaceColor();
+    nodes[index].depth = gl_FragCoord.z;
+    nodes[index].objectId = uObjectId;
+    nodes[index].primitiveId = uint(gl_PrimitiveID);
+    nodes[index].colorRG = packHalf2x16(c.rg);
+    nodes[index].colorBA = packHalf2x16(c.ba);
+    nodes[index].next = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
+}
