@@ -1,0 +1,441 @@
+#include "reference/raycast.hpp"
+
+#include "render/shading.hpp"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace strata {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Per-object BVH over world-space triangles. Median split on the longest centroid axis: simple,
+// deterministic, and fast enough for the reference (the bunny's 69k triangles build in a few
+// milliseconds). Node boxes are padded so float rounding of the box test can never reject a ray
+// the exact triangle test would accept; a false positive only costs time.
+
+struct BvhNode {
+    glm::vec3 min{0.0f};
+    std::uint32_t first = 0;  // leaf: first entry in `order`; inner: index of the left child
+    glm::vec3 max{0.0f};
+    std::uint32_t count = 0;  // leaf: triangle count (> 0); inner: 0 (right child = first + 1)
+};
+
+constexpr std::uint32_t kLeafSize = 4;
+
+struct PreparedObject {
+    int id = 0;
+    const Mesh* mesh = nullptr;
+    const Material* material = nullptr;
+    std::vector<glm::vec3> positions;  // world space, float, as the GPU's vertex stage has them
+    glm::dmat3 normalMatrix{1.0};      // inverse transpose of the world's upper 3x3
+    double frontSign = 1.0;            // -1 when the world flips winding (negative determinant)
+    std::vector<BvhNode> nodes;
+    std::vector<std::uint32_t> order;  // triangle indices, leaves reference ranges of this
+};
+
+glm::vec3 padded(const glm::vec3& v, float pad) { return v + glm::vec3(pad); }
+
+void padBox(BvhNode& n) {
+    // Relative to the box's size and its distance from the origin (float spacing grows with it).
+    glm::vec3 ext = n.max - n.min;
+    float scale = std::max({ext.x, ext.y, ext.z, glm::length(n.max), glm::length(n.min)});
+    float pad = scale * 1e-5f + 1e-30f;
+    n.min = padded(n.min, -pad);
+    n.max = padded(n.max, pad);
+}
+
+struct BvhBuilder {
+    PreparedObject& o;
+    std::vector<glm::vec3> centroids;
+
+    glm::vec3 vertex(std::uint32_t tri, int k) const { return o.positions[o.mesh->indices[tri * 3 + k]]; }
+
+    void build() {
+        std::uint32_t n = std::uint32_t(o.mesh->triangleCount());
+        o.order.resize(n);
+        std::iota(o.order.begin(), o.order.end(), 0u);
+        centroids.resize(n);
+        for (std::uint32_t t = 0; t < n; ++t) centroids[t] = (vertex(t, 0) + vertex(t, 1) + vertex(t, 2)) / 3.0f;
+        o.nodes.clear();
+        o.nodes.reserve(n ? 2 * (n / kLeafSize) + 2 : 1);
+        o.nodes.emplace_back();
+        if (n) split(0, 0, n);
+    }
+
+    void split(std::uint32_t nodeIndex, std::uint32_t begin, std::uint32_t end) {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        glm::vec3 clo = lo, chi = hi;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            std::uint32_t t = o.order[i];
+            for (int k = 0; k < 3; ++k) { lo = glm::min(lo, vertex(t, k)); hi = glm::max(hi, vertex(t, k)); }
+            clo = glm::min(clo, centroids[t]);
+            chi = glm::max(chi, centroids[t]);
+        }
+        BvhNode node;
+        node.min = lo;
+        node.max = hi;
+        padBox(node);
+        glm::vec3 ext = chi - clo;
+        int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+        if (end - begin <= kLeafSize || ext[axis] <= 0.0f) {
+            node.first = begin;
+            node.count = end - begin;
+            o.nodes[nodeIndex] = node;
+            return;
+        }
+        std::uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(o.order.begin() + begin, o.order.begin() + mid, o.order.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+        node.first = std::uint32_t(o.nodes.size());
+        node.count = 0;
+        o.nodes[nodeIndex] = node;
+        o.nodes.emplace_back();
+        o.nodes.emplace_back();
+        split(node.first, begin, mid);
+        split(node.first + 1, mid, end);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Watertight ray/triangle intersection (Woop, Benthin, Wald 2013).
+//
+// The ray is made the +z axis of a sheared "ray space" (permute so the dominant direction axis
+// is z, keeping handedness, then shear x and y). A vertex's 2D ray-space position depends only
+// on the vertex and the ray, so triangles sharing an edge evaluate that edge's function from
+// bit-identical inputs. The 2D coordinates are rounded to float and the edge functions computed
+// in double: the products of floats are then exact, so each edge function is correctly rounded,
+// its sign exact, and reversing the edge gives exactly the negated value - also under FMA
+// contraction, which cannot change an exact product. This is the paper's double fallback, taken
+// always (it is cheap on a CPU).
+//
+// Tie rule when an edge function is exactly 0: decide as if the ray were moved by an
+// infinitesimal (eps, eps^2) in the 2D ray space. For edge P->Q, F(p) = (P - p) x (Q - p),
+// F(eps, eps^2) = F(0) + eps (Py - Qy) + eps^2 (Qx - Px) exactly (the mixed terms cancel), so
+// the edge belongs to the triangle when s (Py - Qy) > 0, or Py == Qy and s (Qx - Px) > 0, with s
+// the sign of the triangle's 2D area. Because it is a genuine perturbation of one point, it is
+// consistent everywhere: an edge shared by two triangles on opposite sides goes to exactly one,
+// a vertex shared by a fan to exactly one, and a closed mesh is crossed an even number of times.
+
+struct Ray {
+    glm::dvec3 org{0.0};
+    glm::dvec3 dir{0.0, 0.0, -1.0};
+    glm::dvec3 invDir{0.0};
+    int kx = 0, ky = 1, kz = 2;
+    double sx = 0.0, sy = 0.0, sz = 1.0;
+    double tNear = 0.0, tFar = 0.0;
+
+    Ray(const glm::dvec3& o, const glm::dvec3& d, double n, double f) : org(o), dir(d), tNear(n), tFar(f) {
+        glm::dvec3 a = glm::abs(d);
+        kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+        kx = (kz + 1) % 3;
+        ky = (kx + 1) % 3;
+        if (d[kz] < 0.0) std::swap(kx, ky);  // keep the winding as seen along the ray
+        sx = d[kx] / d[kz];
+        sy = d[ky] / d[kz];
+        sz = 1.0 / d[kz];
+        for (int k = 0; k < 3; ++k) invDir[k] = d[k] != 0.0 ? 1.0 / d[k] : 0.0;
+    }
+};
+
+struct TriangleHit {
+    double t = 0.0;
+    double b0 = 0.0, b1 = 0.0, b2 = 0.0;  // barycentrics of vertices 0, 1, 2
+    bool tie = false;                     // an edge function was exactly zero
+};
+
+// Separate statements keep a compiler from fusing across the subtraction; with float inputs the
+// products are exact anyway (see above).
+inline double edgeFunction(float px, float py, float qx, float qy) {
+    double a = double(px) * double(qy);
+    double b = double(py) * double(qx);
+    return a - b;
+}
+
+inline bool ownsEdge(float px, float py, float qx, float qy, double s) {
+    if (py != qy) return s * (double(py) - double(qy)) > 0.0;
+    return s * (double(qx) - double(px)) > 0.0;
+}
+
+bool intersectTriangle(const Ray& r, const glm::vec3& v0, const glm::vec3& v1, const glm::vec3& v2, TriangleHit& hit) {
+    const glm::dvec3 a = glm::dvec3(v0) - r.org;
+    const glm::dvec3 b = glm::dvec3(v1) - r.org;
+    const glm::dvec3 c = glm::dvec3(v2) - r.org;
+    const float ax = float(a[r.kx] - r.sx * a[r.kz]), ay = float(a[r.ky] - r.sy * a[r.kz]);
+    const float bx = float(b[r.kx] - r.sx * b[r.kz]), by = float(b[r.ky] - r.sy * b[r.kz]);
+    const float cx = float(c[r.kx] - r.sx * c[r.kz]), cy = float(c[r.ky] - r.sy * c[r.kz]);
+    // U: edge C->B (weights A), V: edge A->C (weights B), W: edge B->A (weights C).
+    const double u = edgeFunction(cx, cy, bx, by);
+    const double v = edgeFunction(ax, ay, cx, cy);
+    const double w = edgeFunction(bx, by, ax, ay);
+    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return false;
+    const double det = u + v + w;
+    if (det == 0.0) return false;  // edge-on in ray space: the rasterizer draws nothing either
+    const double s = det > 0.0 ? 1.0 : -1.0;
+    bool tie = false;
+    if (u == 0.0) { if (!ownsEdge(cx, cy, bx, by, s)) return false; tie = true; }
+    if (v == 0.0) { if (!ownsEdge(ax, ay, cx, cy, s)) return false; tie = true; }
+    if (w == 0.0) { if (!ownsEdge(bx, by, ax, ay, s)) return false; tie = true; }
+    const double az = r.sz * a[r.kz], bz = r.sz * b[r.kz], cz = r.sz * c[r.kz];
+    const double t = (u * az + v * bz + w * cz) / det;
+    if (!(t >= r.tNear && t <= r.tFar)) return false;  // GL clips to [near, far] inclusive
+    hit.t = t;
+    hit.b0 = u / det;
+    hit.b1 = v / det;
+    hit.b2 = w / det;
+    hit.tie = tie;
+    return true;
+}
+
+bool rayHitsBox(const Ray& r, const BvhNode& n, double tMax) {
+    double lo = r.tNear, hi = tMax;
+    for (int k = 0; k < 3; ++k) {
+        if (r.dir[k] == 0.0) {
+            if (r.org[k] < n.min[k] || r.org[k] > n.max[k]) return false;
+            continue;
+        }
+        double t0 = (double(n.min[k]) - r.org[k]) * r.invDir[k];
+        double t1 = (double(n.max[k]) - r.org[k]) * r.invDir[k];
+        if (t0 > t1) std::swap(t0, t1);
+        lo = std::max(lo, t0);
+        hi = std::min(hi, t1);
+        if (lo > hi) return false;
+    }
+    return true;
+}
+
+// Calls visit(triangle, hit) for every triangle of `o` hit within [tNear, limit()], where
+// limit() may shrink as hits are found (nearest-hit search).
+template <class Visit, class Limit>
+void traverse(const PreparedObject& o, const Ray& r, Visit&& visit, Limit&& limit) {
+    if (o.nodes.empty() || o.order.empty()) return;
+    std::uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    const auto& idx = o.mesh->indices;
+    while (top > 0) {
+        const BvhNode& n = o.nodes[stack[--top]];
+        if (!rayHitsBox(r, n, limit())) continue;
+        if (n.count > 0) {
+            for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+                std::uint32_t t = o.order[i];
+                TriangleHit h;
+                if (intersectTriangle(r, o.positions[idx[3 * t]], o.positions[idx[3 * t + 1]],
+                                      o.positions[idx[3 * t + 2]], h) && h.t <= limit())
+                    visit(t, h);
+            }
+        } else {
+            // Median splits keep the depth near log2(n / 4); 64 is far beyond any real mesh.
+            if (top + 2 > 64) throw std::logic_error("raycast: BVH deeper than the traversal stack");
+            stack[top++] = n.first + 1;
+            stack[top++] = n.first;
+        }
+    }
+}
+
+bool frontFacing(const PreparedObject& o, std::uint32_t tri, const glm::dvec3& dir) {
+    const auto& idx = o.mesh->indices;
+    glm::dvec3 a(o.positions[idx[3 * tri]]), b(o.positions[idx[3 * tri + 1]]), c(o.positions[idx[3 * tri + 2]]);
+    // Counter-clockwise is front in object space; a mirroring world keeps that face the front.
+    glm::dvec3 front = o.frontSign * glm::cross(b - a, c - a);
+    return glm::dot(front, dir) < 0.0;
+}
+
+glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h) {
+    const auto& idx = o.mesh->indices;
+    glm::dvec3 normal;
+    if (o.mesh->normals.size() == o.mesh->positions.size()) {
+        glm::dvec3 objectNormal = h.b0 * glm::dvec3(o.mesh->normals[idx[3 * tri]]) +
+                                  h.b1 * glm::dvec3(o.mesh->normals[idx[3 * tri + 1]]) +
+                                  h.b2 * glm::dvec3(o.mesh->normals[idx[3 * tri + 2]]);
+        normal = o.normalMatrix * objectNormal;
+    } else {
+        glm::dvec3 a(o.positions[idx[3 * tri]]), b(o.positions[idx[3 * tri + 1]]), c(o.positions[idx[3 * tri + 2]]);
+        normal = glm::cross(b - a, c - a);
+    }
+    double len = glm::length(normal);
+    glm::vec3 n = len > 0.0 ? glm::vec3(normal / len) : glm::vec3(0.0f);
+    return shadeSurface(o.material->baseColor, n, scene.lightDirection);
+}
+
+}  // namespace
+
+struct RaycastReference::Impl {
+    const Scene* scene = nullptr;
+    RaycastOptions options;
+    std::vector<PreparedObject> opaque;       // opaque and MASK-passing objects
+    std::vector<PreparedObject> transparent;  // BLEND objects
+};
+
+RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>& objects, RaycastOptions options)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->scene = &scene;
+    impl_->options = options;
+    for (const Object& obj : objects) {
+        if (obj.mesh < 0 || obj.mesh >= int(scene.meshes.size()) || obj.material < 0 ||
+            obj.material >= int(scene.materials.size()))
+            throw std::runtime_error("raycast: object " + std::to_string(obj.id) + " has a bad mesh or material index");
+        const Mesh& mesh = scene.meshes[obj.mesh];
+        const Material& material = scene.materials[obj.material];
+        // MASK with alpha below the cutoff discards every fragment: nothing to intersect.
+        if (material.alphaMode == AlphaMode::Mask && material.alpha < material.alphaCutoff) continue;
+        for (std::uint32_t i : mesh.indices)
+            if (i >= mesh.positions.size())
+                throw std::runtime_error("raycast: mesh '" + mesh.name + "' has index " + std::to_string(i) +
+                                         " past its " + std::to_string(mesh.positions.size()) + " vertices");
+        PreparedObject p;
+        p.id = obj.id;
+        p.mesh = &mesh;
+        p.material = &material;
+        p.positions.reserve(mesh.positions.size());
+        for (const auto& v : mesh.positions) p.positions.emplace_back(obj.world * glm::vec4(v, 1.0f));
+        glm::dmat3 linear(glm::dmat4(obj.world));
+        double det = glm::determinant(linear);
+        p.frontSign = det < 0.0 ? -1.0 : 1.0;
+        p.normalMatrix = det != 0.0 ? glm::transpose(glm::inverse(linear)) : glm::dmat3(1.0);
+        BvhBuilder{p, {}}.build();
+        (material.isTransparent() ? impl_->transparent : impl_->opaque).push_back(std::move(p));
+    }
+}
+
+RaycastReference::~RaycastReference() = default;
+RaycastReference::RaycastReference(RaycastReference&&) noexcept = default;
+
+std::size_t RaycastReference::triangleCount() const {
+    std::size_t n = 0;
+    for (const auto* list : {&impl_->opaque, &impl_->transparent})
+        for (const auto& o : *list) n += o.mesh->triangleCount();
+    return n;
+}
+
+PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dvec3& direction, double nearDepth,
+                                        double farDepth) const {
+    const Scene& scene = *impl_->scene;
+    const bool cull = impl_->options.cullSingleSidedBackFaces;
+    PixelSample out;
+    out.opaqueColor = scene.background;
+    Ray ray(origin, direction, nearDepth, farDepth);
+    auto culled = [&](const PreparedObject& o, std::uint32_t tri) {
+        return cull && !o.material->doubleSided && !frontFacing(o, tri, direction);
+    };
+
+    // Nearest opaque hit; equal depths go to the lower (object id, primitive id), which is what
+    // a GL_GREATER depth test keeps when objects are drawn in id order.
+    const PreparedObject* best = nullptr;
+    std::uint32_t bestTri = 0;
+    TriangleHit bestHit;
+    bestHit.t = farDepth;
+    for (const auto& o : impl_->opaque) {
+        traverse(
+            o, ray,
+            [&](std::uint32_t tri, const TriangleHit& h) {
+                if (culled(o, tri)) return;
+                if (h.tie) ++out.edgeTieHits;
+                bool better = !best || h.t < bestHit.t ||
+                              (h.t == bestHit.t && (o.id < best->id || (o.id == best->id && tri < bestTri)));
+                if (better) { best = &o; bestTri = tri; bestHit = h; }
+            },
+            [&] { return bestHit.t; });
+    }
+    if (best) {
+        out.hasOpaque = true;
+        out.opaqueDepth = float(bestHit.t);
+        out.opaqueObject = best->id;
+        out.opaquePrimitive = int(bestTri);
+        out.opaqueColor = shadeHit(scene, *best, bestTri, bestHit);
+    }
+
+    // Every transparent hit strictly nearer than the opaque one (the GPU tests GL_GREATER
+    // against the opaque depth, so an equal depth is hidden).
+    const double limit = best ? bestHit.t : farDepth;
+    for (const auto& o : impl_->transparent) {
+        traverse(
+            o, ray,
+            [&](std::uint32_t tri, const TriangleHit& h) {
+                if (best && !(h.t < limit)) return;
+                if (culled(o, tri)) return;
+                if (h.tie) ++out.edgeTieHits;
+                SurfaceFragment f;
+                f.depth = float(h.t);
+                f.object = o.id;
+                f.primitive = int(tri);
+                f.color = shadeHit(scene, o, tri, h);
+                f.alpha = o.material->alpha;
+                f.frontFacing = frontFacing(o, tri, direction);
+                out.fragments.push_back(f);
+            },
+            [&] { return limit; });
+    }
+    // compositeFrontToBack sorts with nearerFirst, so the fragments come back in order.
+    out.color = compositeFrontToBack(out.fragments, out.opaqueColor);
+    for (std::size_t i = 1; i < out.fragments.size(); ++i)
+        if (out.fragments[i].depth == out.fragments[i - 1].depth) ++out.depthTies;
+    return out;
+}
+
+void pixelRay(const Camera& camera, int width, int height, int x, int y, glm::dvec3& origin, glm::dvec3& direction) {
+    // Invert the GPU's own projection matrix entries (float, as uploaded) rather than
+    // recomputing the focal length, so a pixel centre maps to the same eye-space direction.
+    const glm::mat4 p = camera.projection(float(width) / float(height));
+    const double ndcX = (double(x) + 0.5) / double(width) * 2.0 - 1.0;
+    const double ndcY = (double(y) + 0.5) / double(height) * 2.0 - 1.0;
+    // Eye-space direction with z = -1: the ray parameter is then the eye depth GL clips on.
+    const glm::dvec3 eyeDir(ndcX / double(p[0][0]), ndcY / double(p[1][1]), -1.0);
+    const glm::dquat q = glm::normalize(glm::dquat(camera.orientation));
+    origin = glm::dvec3(camera.position);
+    direction = glm::mat3_cast(q) * eyeDir;
+}
+
+PixelSample RaycastReference::samplePixel(const Camera& camera, int width, int height, int x, int y) const {
+    if (width <= 0 || height <= 0 || x < 0 || y < 0 || x >= width || y >= height)
+        throw std::invalid_argument("raycast: pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                    ") outside a " + std::to_string(width) + "x" + std::to_string(height) + " image");
+    glm::dvec3 origin, direction;
+    pixelRay(camera, width, height, x, y, origin, direction);
+    return sampleRay(origin, direction, camera.nearPlane, camera.farPlane);
+}
+
+Image RaycastReference::render(const Camera& camera, int width, int height, ReferenceStats* stats) const {
+    if (width <= 0 || height <= 0)
+        throw std::invalid_argument("raycast: image size " + std::to_string(width) + "x" + std::to_string(height));
+    Image image(width, height);
+    ReferenceStats s;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            PixelSample p = samplePixel(camera, width, height, x, y);
+            image.set(x, y, glm::vec4(p.color, 1.0f));
+            ++s.pixels;
+            s.fragments += p.fragments.size();
+            s.maxFragmentsPerPixel = std::max(s.maxFragmentsPerPixel, int(p.fragments.size()));
+            if (!p.fragments.empty()) ++s.pixelsWithFragments;
+            s.tiedFragments += std::size_t(p.depthTies);
+            if (p.depthTies > 0) ++s.pixelsWithTies;
+            s.edgeTieHits += std::size_t(p.edgeTieHits);
+        }
+    }
+    if (stats) *stats = s;
+    return image;
+}
+
+Image raycastReference(const Scene& scene, const std::vector<Object>& objects, const Camera& camera, int width,
+                       int height, ReferenceStats* stats) {
+    return RaycastReference(scene, objects).render(camera, width, height, stats);
+}
+
+PixelSample samplePixel(const Scene& scene, const std::vector<Object>& objects, const Camera& camera, int width,
+                        int height, int x, int y) {
+    return RaycastReference(scene, objects).samplePixel(camera, width, height, x, y);
+}
+
+std::vector<SurfaceFragment> fragmentsAtPixel(const Scene& scene, const std::vector<Object>& objects,
+                                              const Camera& camera, int width, int height, int x, int y) {
+    return samplePixel(scene, objects, camera, width, height, x, y).fragments;
+}
+
+}  // namespace strata
