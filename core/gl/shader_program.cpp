@@ -64,6 +64,7 @@ struct Preprocessor {
             if (std::regex_match(line, m, includeRe)) {
                 fs::path target = file.parent_path() / m[1].str();
                 if (!fs::exists(target)) target = root / m[1].str();
+                if (!fs::exists(target)) target = root / "common" / m[1].str();
                 expand(target, displayName(file) + ":" + std::to_string(lineNumber), false, {});
                 out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
                 continue;

@@ -1,6 +1,6 @@
 #pragma once
 // GLSL programs from files in shaders/, with `#include "file"` (relative to the including file,
-// then to the shader root) and `#define` injection after `#version`. A compile or link error
+// then to the shader root, then to shaders/common) and `#define` injection after `#version`. A compile or link error
 // throws ShaderError whose first line names the file and line, e.g.
 //   shaders/oit/abuffer_resolve.frag.glsl:42: error: syntax error ...
 #include "gl/objects.hpp"

@@ -43,9 +43,14 @@ void main() {
     for (uint n = head; n != 0u; n = nodes[n - 1u].next) {
         if (count == LOCAL_CAPACITY) { tooLong = true; break; }
         uint node = n - 1u;
-        uint i = count++;
-        while (i > 0u && before(node, local[i - 1u])) { local[i] = local[i - 1u]; --i; }
-        local[i] = node;
+        uint j = count;
+        while (j > 0u) {
+            if (!before(node, local[j - 1u])) break;
+            local[j] = local[j - 1u];
+            j--;
+        }
+        local[j] = node;
+        count++;
     }
 
     vec3 color = vec3(0.0);

@@ -1,0 +1,49 @@
+#pragma once
+// Shared by the *_gl_test.cpp files: one headless GL context for the test process, and helpers
+// that render a scene with a technique and read the frame back.
+#include "camera/camera.hpp"
+#include "gl/context.hpp"
+#include "gl/debug.hpp"
+#include "image/image.hpp"
+#include "oit/technique.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/gpu_scene.hpp"
+
+#include <memory>
+#include <string>
+
+namespace strata::test {
+
+// Created on first use; KHR_debug errors are recorded and `gl::checkGl` turns them into
+// exceptions, which the helpers below call after every GL step.
+inline gl::HeadlessContext& glContext() {
+    static gl::HeadlessContext context;
+    return context;
+}
+
+struct Rendered {
+    Image image;
+    FrameResult result;
+};
+
+inline Rendered renderWith(const GpuScene& scene, const Camera& camera, glm::ivec2 size, Technique& technique,
+                           FrameOptions options = {}) {
+    glContext();
+    FrameRenderer renderer;
+    options.countFragments = true;
+    Rendered r;
+    r.result = renderer.render(scene, camera, size, &technique, options);
+    gl::checkGl("render");
+    r.image = renderer.readOutput();
+    gl::checkGl("read back");
+    return r;
+}
+
+inline Rendered renderWith(const GpuScene& scene, const Camera& camera, glm::ivec2 size, const std::string& id,
+                           FrameOptions options = {}) {
+    glContext();
+    auto technique = createTechnique(id);
+    return renderWith(scene, camera, size, *technique, options);
+}
+
+}  // namespace strata::test
