@@ -446,10 +446,17 @@ TEST_CASE("raycast: facing and single-sided culling") {
     REQUIRE(p.fragments.size() == 1);
     CHECK_FALSE(p.fragments[0].frontFacing);
     s.materials.back().doubleSided = false;
-    CHECK(samplePixel(s, objects, originCamera(), 4, 4, 2, 2).fragments.empty());
-    RaycastOptions keep;
-    keep.cullSingleSidedBackFaces = false;
-    CHECK(RaycastReference(s, objects, keep).samplePixel(originCamera(), 4, 4, 2, 2).fragments.size() == 1);
+    // By default every face is kept, as the GPU pipeline draws with culling off.
+    CHECK(samplePixel(s, objects, originCamera(), 4, 4, 2, 2).fragments.size() == 1);
+    RaycastOptions cull;
+    cull.cullSingleSidedBackFaces = true;
+    CHECK(RaycastReference(s, objects, cull).samplePixel(originCamera(), 4, 4, 2, 2).fragments.empty());
+    // A front face of a single-sided material survives culling.
+    Scene front = emptyScene();
+    addObject(front, quad(-3.0f, 10.0f), m);
+    front.materials.back().doubleSided = false;
+    auto frontObjects = flatten(front);
+    CHECK(RaycastReference(front, frontObjects, cull).samplePixel(originCamera(), 4, 4, 2, 2).fragments.size() == 1);
 }
 
 TEST_CASE("raycast: normals are interpolated and follow the inverse transpose") {

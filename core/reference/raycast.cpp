@@ -316,6 +316,8 @@ std::size_t RaycastReference::triangleCount() const {
 
 PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dvec3& direction, double nearDepth,
                                         double farDepth) const {
+    if (!(glm::length(direction) > 0.0) || !std::isfinite(glm::length(direction)))
+        throw std::invalid_argument("raycast: ray direction must be finite and non-zero");
     const Scene& scene = *impl_->scene;
     const bool cull = impl_->options.cullSingleSidedBackFaces;
     PixelSample out;

@@ -28,10 +28,11 @@
 namespace strata {
 
 struct RaycastOptions {
-    // glTF: a material with doubleSided = false is not drawn from behind. The GPU path must
-    // cull back faces for such objects (glFrontFace flipped for negative-determinant worlds)
-    // for the two to agree; turn this off to compare against a renderer that never culls.
-    bool cullSingleSidedBackFaces = true;
+    // glTF says a material with doubleSided = false is not drawn from behind. The GPU frame
+    // pipeline draws every face (GL_CULL_FACE off), so the reference does too by default; turn
+    // this on only against a renderer that culls such objects (with glFrontFace flipped for
+    // negative-determinant worlds, which is how `frontFacing` is defined here).
+    bool cullSingleSidedBackFaces = false;
 };
 
 // Everything one pixel's ray meets, for tests and statistics.
