@@ -1,0 +1,641 @@
+#include "scene/gltf_loader.hpp"
+
+#include "scene/gltf_schema.hpp"
+
+// The Debian package ships libtinygltf.so with the implementation (and its own JSON parser),
+// so this file only includes the declarations; defining TINYGLTF_IMPLEMENTATION here would
+// duplicate the library's symbols.
+#include <tiny_gltf.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <new>
+#include <numeric>
+
+namespace strata {
+namespace {
+
+// Internal error carrying only the "what is wrong" part; loadGltf prefixes the file name.
+struct Bad : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void fail(const std::string& what) { throw Bad(what); }
+
+std::string str(std::size_t v) { return std::to_string(v); }
+std::string str(int v) { return std::to_string(v); }
+
+// tinygltf reports several problems as a multi-line string; the contract is one line.
+std::string oneLine(const std::string& text) {
+    std::string out;
+    bool pendingBreak = false;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') { pendingBreak = !out.empty(); continue; }
+        if (pendingBreak) { out += "; "; pendingBreak = false; }
+        out += c;
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    return out;
+}
+
+// Textures are never used, so every image is accepted and dropped; this keeps missing or
+// undecodable images from failing the load and means no image decoder is linked.
+bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                 const unsigned char*, int, void*) {
+    return true;
+}
+
+// Very large tau is "opaque within a micrometre"; a finite clamp keeps exp(-tau d) and its
+// derivatives well defined in the shaders (attenuationColor 0 would give +inf).
+constexpr float kMaxTau = 1.0e4f;
+// An accessor without a bufferView is all zeros (plus sparse values); its count is not bounded
+// by any buffer, so cap it to keep a hostile file from asking for a huge allocation.
+constexpr std::size_t kMaxCountWithoutView = std::size_t(1) << 24;
+
+int componentSize(int componentType) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+        default: return 0;  // INT and DOUBLE are not glTF 2.0 accessor component types
+    }
+}
+
+const char* typeName(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+        case TINYGLTF_TYPE_VEC2: return "VEC2";
+        case TINYGLTF_TYPE_VEC3: return "VEC3";
+        case TINYGLTF_TYPE_VEC4: return "VEC4";
+        case TINYGLTF_TYPE_MAT2: return "MAT2";
+        case TINYGLTF_TYPE_MAT3: return "MAT3";
+        case TINYGLTF_TYPE_MAT4: return "MAT4";
+        default: return "unknown";
+    }
+}
+
+// Component count for the vector types the loader reads; matrices are never geometry (and
+// their column padding rules for small types are not worth supporting), so they count as 0.
+int vectorComponents(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return 1;
+        case TINYGLTF_TYPE_VEC2: return 2;
+        case TINYGLTF_TYPE_VEC3: return 3;
+        case TINYGLTF_TYPE_VEC4: return 4;
+        default: return 0;
+    }
+}
+
+// Decodes one component; normalized integers follow the spec's max(c / MAX, -1) mapping.
+double decode(const unsigned char* p, int componentType, bool normalized) {
+    switch (componentType) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            std::int8_t v; std::memcpy(&v, p, 1);
+            return normalized ? std::max(v / 127.0, -1.0) : double(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+            std::uint8_t v; std::memcpy(&v, p, 1);
+            return normalized ? v / 255.0 : double(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            std::int16_t v; std::memcpy(&v, p, 2);
+            return normalized ? std::max(v / 32767.0, -1.0) : double(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            std::uint16_t v; std::memcpy(&v, p, 2);
+            return normalized ? v / 65535.0 : double(v);
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            std::uint32_t v; std::memcpy(&v, p, 4);
+            return normalized ? v / 4294967295.0 : double(v);
+        }
+        default: {  // FLOAT (checked by the caller)
+            float v; std::memcpy(&v, p, 4);
+            return double(v);
+        }
+    }
+}
+
+bool isIndexType(int componentType) {
+    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+}
+
+// A byte range inside a buffer, validated once: [data, data + size) is always readable.
+struct Span {
+    const unsigned char* data = nullptr;
+    std::size_t size = 0;
+};
+
+Span bufferViewSpan(const tinygltf::Model& model, int viewIndex, const std::string& what) {
+    if (viewIndex < 0 || std::size_t(viewIndex) >= model.bufferViews.size())
+        fail(what + ": bufferView " + str(viewIndex) + " does not exist");
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(viewIndex)];
+    if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
+        fail(what + ": bufferView " + str(viewIndex) + " refers to buffer " + str(view.buffer) +
+             ", which does not exist");
+    const auto& bytes = model.buffers[std::size_t(view.buffer)].data;
+    // Written as two comparisons so that offset + length cannot overflow.
+    if (view.byteOffset > bytes.size() || view.byteLength > bytes.size() - view.byteOffset)
+        fail(what + ": bufferView " + str(viewIndex) + " (offset " + str(view.byteOffset) +
+             ", length " + str(view.byteLength) + ") exceeds buffer " + str(view.buffer) + " (" +
+             str(bytes.size()) + " bytes)");
+    return {bytes.data() + view.byteOffset, view.byteLength};
+}
+
+// Everything needed to read an accessor, checked against the buffers so that reading any
+// element 0..count-1 stays in bounds.
+struct AccessorView {
+    std::size_t count = 0;
+    int components = 0;
+    int componentType = 0;
+    bool normalized = false;
+    Span dense;                 // empty data: all zeros (no bufferView)
+    std::size_t offset = 0;     // accessor.byteOffset inside `dense`
+    std::size_t stride = 0;
+    // Sparse substitution (count 0 when the accessor is not sparse).
+    std::size_t sparseCount = 0;
+    Span sparseIndices, sparseValues;
+    int sparseIndexType = 0;
+};
+
+AccessorView checkAccessor(const tinygltf::Model& model, int index, int wantComponents,
+                           bool indices, const std::string& what) {
+    if (index < 0 || std::size_t(index) >= model.accessors.size())
+        fail(what + ": accessor " + str(index) + " does not exist");
+    const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
+    std::string where = what + " (accessor " + str(index) + ")";
+    AccessorView v;
+    v.components = vectorComponents(acc.type);
+    if (v.components != wantComponents)
+        fail(where + ": type " + typeName(acc.type) + ", expected " +
+             (wantComponents == 1 ? "SCALAR" : "VEC" + str(wantComponents)));
+    v.componentType = acc.componentType;
+    int csize = componentSize(acc.componentType);
+    if (csize == 0) fail(where + ": component type " + str(acc.componentType) + " is not allowed");
+    if (indices && !isIndexType(acc.componentType))
+        fail(where + ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, not component type " +
+             str(acc.componentType));
+    v.normalized = acc.normalized && !indices && acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT;
+    v.count = acc.count;
+    std::size_t elementSize = std::size_t(v.components) * std::size_t(csize);
+
+    if (acc.bufferView < 0) {
+        if (v.count > kMaxCountWithoutView)
+            fail(where + ": count " + str(v.count) + " without a bufferView is too large");
+    } else {
+        v.dense = bufferViewSpan(model, acc.bufferView, where);
+        const tinygltf::BufferView& view = model.bufferViews[std::size_t(acc.bufferView)];
+        v.stride = view.byteStride ? view.byteStride : elementSize;
+        if (v.stride < elementSize)
+            fail(where + ": byteStride " + str(v.stride) + " is smaller than the element (" +
+                 str(elementSize) + " bytes)");
+        v.offset = acc.byteOffset;
+        if (v.count > 0) {
+            // Last element must end inside the view: offset + stride*(count-1) + size <= length.
+            bool fits = v.offset <= v.dense.size && elementSize <= v.dense.size - v.offset &&
+                        (v.count - 1) <= (v.dense.size - v.offset - elementSize) / v.stride;
+            if (!fits)
+                fail(where + ": " + str(v.count) + " elements at offset " + str(v.offset) + " stride " +
+                     str(v.stride) + " exceed bufferView " + str(acc.bufferView) + " (" +
+                     str(v.dense.size) + " bytes)");
+        }
+    }
+
+    if (acc.sparse.isSparse) {
+        const auto& sp = acc.sparse;
+        if (sp.count < 1 || std::size_t(sp.count) > v.count)
+            fail(where + ": sparse count " + str(sp.count) + " outside 1.." + str(v.count));
+        if (!isIndexType(sp.indices.componentType))
+            fail(where + ": sparse indices component type " + str(sp.indices.componentType) + " is not allowed");
+        if (sp.indices.byteOffset < 0 || sp.values.byteOffset < 0)
+            fail(where + ": negative sparse byteOffset");
+        v.sparseCount = std::size_t(sp.count);
+        v.sparseIndexType = sp.indices.componentType;
+        auto sub = [&](int viewIndex, int byteOffset, std::size_t bytesEach, const char* part) {
+            Span s = bufferViewSpan(model, viewIndex, where + " sparse " + part);
+            std::size_t off = std::size_t(byteOffset);
+            if (off > s.size || (s.size - off) / bytesEach < v.sparseCount)
+                fail(where + ": sparse " + part + " exceed bufferView " + str(viewIndex));
+            return Span{s.data + off, s.size - off};
+        };
+        v.sparseIndices = sub(sp.indices.bufferView, sp.indices.byteOffset,
+                              std::size_t(componentSize(sp.indices.componentType)), "indices");
+        v.sparseValues = sub(sp.values.bufferView, sp.values.byteOffset, elementSize, "values");
+    }
+    return v;
+}
+
+// Calls out(element, component, value) for every component: dense values (or zeros), then
+// the sparse substitutions, so the last write for an element is the right one.
+template <class Out>
+void readAccessor(const AccessorView& v, const std::string& what, Out&& out) {
+    int csize = componentSize(v.componentType);
+    for (std::size_t e = 0; e < v.count; ++e) {
+        const unsigned char* p = v.dense.data ? v.dense.data + v.offset + e * v.stride : nullptr;
+        for (int c = 0; c < v.components; ++c)
+            out(e, c, p ? decode(p + std::size_t(c) * std::size_t(csize), v.componentType, v.normalized) : 0.0);
+    }
+    std::size_t isize = std::size_t(componentSize(v.sparseIndexType));
+    std::size_t elementSize = std::size_t(v.components) * std::size_t(csize);
+    for (std::size_t s = 0; s < v.sparseCount; ++s) {
+        auto target = std::size_t(decode(v.sparseIndices.data + s * isize, v.sparseIndexType, false));
+        if (target >= v.count)
+            fail(what + ": sparse index " + str(target) + " out of range (" + str(v.count) + " elements)");
+        const unsigned char* p = v.sparseValues.data + s * elementSize;
+        for (int c = 0; c < v.components; ++c)
+            out(target, c, decode(p + std::size_t(c) * std::size_t(csize), v.componentType, v.normalized));
+    }
+}
+
+std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor, const std::string& what,
+                                const char* semantic) {
+    AccessorView v = checkAccessor(model, accessor, 3, false, what + " " + semantic);
+    std::vector<glm::vec3> out(v.count);
+    readAccessor(v, what + " " + semantic, [&](std::size_t e, int c, double x) { out[e][c] = float(x); });
+    for (const auto& p : out)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            fail(what + ": non-finite " + semantic + " value");
+    return out;
+}
+
+std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor, const std::string& what) {
+    AccessorView v = checkAccessor(model, accessor, 1, true, what + " indices");
+    std::vector<std::uint32_t> out(v.count);
+    readAccessor(v, what + " indices", [&](std::size_t e, int, double x) { out[e] = std::uint32_t(x); });
+    return out;
+}
+
+// glTF's primitive topologies to a triangle list (spec section 3.7.2.1 vertex orders).
+std::vector<std::uint32_t> toTriangleList(int mode, const std::vector<std::uint32_t>& idx, bool indexed,
+                                          const std::string& what) {
+    std::vector<std::uint32_t> tris;
+    std::size_t n = idx.size();
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        if (n % 3 != 0)
+            fail(what + ": TRIANGLES with " + str(n) + (indexed ? " indices" : " vertices") + " (not a multiple of 3)");
+        return idx;
+    }
+    if (n < 3) return tris;
+    tris.reserve((n - 2) * 3);
+    for (std::size_t i = 0; i + 2 < n; ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // Odd triangles swap their first two vertices to keep the winding consistent.
+            std::size_t odd = i % 2;
+            tris.insert(tris.end(), {idx[i], idx[i + 1 + odd], idx[i + 2 - odd]});
+        } else {  // TRIANGLE_FAN
+            tris.insert(tris.end(), {idx[i + 1], idx[i + 2], idx[0]});
+        }
+    }
+    return tris;
+}
+
+// Normalizes normals; returns false if one is degenerate (then the mesh gets flat normals).
+bool normalizeNormals(std::vector<glm::vec3>& normals) {
+    for (auto& n : normals) {
+        float len = glm::length(n);
+        if (!(len > 1e-20f) || !std::isfinite(len)) return false;
+        n /= len;
+    }
+    return true;
+}
+
+struct Converter {
+    const tinygltf::Model& model;
+    GltfLoadReport& report;
+    Scene scene;
+    std::vector<std::vector<int>> meshMap;  // glTF mesh -> strata meshes (one per triangle primitive)
+
+    double number(const tinygltf::Value& obj, const char* key, double fallback, const std::string& what) {
+        if (!obj.IsObject() || !obj.Has(key)) return fallback;
+        const tinygltf::Value& v = obj.Get(key);
+        if (!v.IsNumber()) fail(what + ": " + key + " is not a number");
+        return v.GetNumberAsDouble();
+    }
+
+    void convertMaterials() {
+        scene.materials.push_back(Material{});  // index 0: the default for primitives without one
+        for (std::size_t i = 0; i < model.materials.size(); ++i) {
+            const tinygltf::Material& g = model.materials[i];
+            std::string what = "material " + str(i);
+            Material m;
+            m.name = g.name.empty() ? what : g.name;
+            glm::vec4 factor(1.0f);
+            const auto& f = g.pbrMetallicRoughness.baseColorFactor;
+            if (!f.empty()) {
+                if (f.size() != 4) fail(what + ": baseColorFactor must have 4 components");
+                for (int c = 0; c < 4; ++c) {
+                    if (!std::isfinite(f[std::size_t(c)])) fail(what + ": non-finite baseColorFactor");
+                    factor[c] = std::clamp(float(f[std::size_t(c)]), 0.0f, 1.0f);
+                }
+            }
+            m.baseColor = glm::vec3(factor);
+            m.alpha = factor.a;
+            if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
+            else if (g.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
+            else if (g.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
+            else fail(what + ": unknown alphaMode '" + g.alphaMode + "'");
+            if (!std::isfinite(g.alphaCutoff) || g.alphaCutoff < 0.0)
+                fail(what + ": alphaCutoff must be a finite number >= 0");
+            m.alphaCutoff = float(g.alphaCutoff);
+            m.doubleSided = g.doubleSided;
+            // Albedo stays 0 (a purely absorbing or thin surface) unless the material declares a
+            // volume; then the single-scattering albedo is taken from the base colour, the only
+            // colour glTF gives for what the medium scatters back.
+            auto vol = g.extensions.find("KHR_materials_volume");
+            if (vol != g.extensions.end()) {
+                std::string vw = what + " KHR_materials_volume";
+                const tinygltf::Value& ext = vol->second;
+                double distance = number(ext, "attenuationDistance", std::numeric_limits<double>::infinity(), vw);
+                if (std::isnan(distance) || distance <= 0.0) fail(vw + ": attenuationDistance must be > 0");
+                glm::dvec3 color(1.0);
+                if (ext.IsObject() && ext.Has("attenuationColor")) {
+                    const tinygltf::Value& c = ext.Get("attenuationColor");
+                    if (!c.IsArray() || c.ArrayLen() != 3) fail(vw + ": attenuationColor must be an array of 3 numbers");
+                    for (int k = 0; k < 3; ++k) {
+                        const tinygltf::Value& ck = c.Get(k);
+                        if (!ck.IsNumber() || !std::isfinite(ck.GetNumberAsDouble()))
+                            fail(vw + ": attenuationColor must be an array of 3 numbers");
+                        color[k] = ck.GetNumberAsDouble();
+                    }
+                }
+                for (int k = 0; k < 3; ++k) {
+                    double tau = 0.0;  // infinite distance: no attenuation (spec default)
+                    if (std::isfinite(distance)) {
+                        // Colour 0 means "nothing gets through"; colours above 1 cannot amplify.
+                        double c = std::clamp(color[k], 0.0, 1.0);
+                        tau = c > 0.0 ? -std::log(c) / distance : double(kMaxTau);
+                    }
+                    m.tau[k] = float(std::clamp(tau, 0.0, double(kMaxTau)));
+                }
+                m.albedo = m.baseColor;
+            }
+            scene.materials.push_back(std::move(m));
+        }
+    }
+
+    void convertMeshes() {
+        meshMap.resize(model.meshes.size());
+        for (std::size_t mi = 0; mi < model.meshes.size(); ++mi) {
+            const tinygltf::Mesh& gm = model.meshes[mi];
+            for (std::size_t pi = 0; pi < gm.primitives.size(); ++pi) {
+                std::string what = "mesh " + str(mi) + " primitive " + str(pi);
+                int mesh = convertPrimitive(gm, pi, what);
+                if (mesh >= 0) meshMap[mi].push_back(mesh);
+            }
+        }
+    }
+
+    int convertPrimitive(const tinygltf::Mesh& gm, std::size_t pi, const std::string& what) {
+        const tinygltf::Primitive& p = gm.primitives[pi];
+        int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+        if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE ||
+            mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) {
+            ++report.skippedPrimitives;  // not surfaces: nothing for a transparency technique to do
+            return -1;
+        }
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            fail(what + ": unknown primitive mode " + str(mode));
+        if (p.extensions.count("KHR_draco_mesh_compression"))
+            fail(what + ": KHR_draco_mesh_compression is not supported");
+        auto pos = p.attributes.find("POSITION");
+        if (pos == p.attributes.end()) fail(what + ": no POSITION attribute");
+
+        Mesh mesh;
+        mesh.name = gm.name.empty() ? "mesh " + std::to_string(&gm - model.meshes.data()) : gm.name;
+        if (gm.primitives.size() > 1) mesh.name += "#" + str(pi);
+        mesh.positions = readVec3(model, pos->second, what, "POSITION");
+        std::size_t vertexCount = mesh.positions.size();
+        if (vertexCount > std::numeric_limits<std::uint32_t>::max())
+            fail(what + ": too many vertices (" + str(vertexCount) + ")");
+
+        std::vector<std::uint32_t> idx;
+        if (p.indices >= 0) {
+            idx = readIndices(model, p.indices, what);
+            for (std::uint32_t i : idx)
+                if (i >= vertexCount)
+                    fail(what + ": index " + std::to_string(i) + " out of range (" + str(vertexCount) + " vertices)");
+        } else {
+            idx.resize(vertexCount);
+            std::iota(idx.begin(), idx.end(), 0u);
+        }
+        mesh.indices = toTriangleList(mode, idx, p.indices >= 0, what);
+        if (mesh.indices.empty()) {
+            report.warnings.push_back(what + ": no triangles, skipped");
+            return -1;
+        }
+
+        if (p.material >= 0) {
+            if (std::size_t(p.material) >= model.materials.size())
+                fail(what + ": material " + str(p.material) + " does not exist");
+            mesh.material = p.material + 1;  // materials[0] is the inserted default
+        }
+
+        auto nrm = p.attributes.find("NORMAL");
+        bool flat = true;
+        if (nrm != p.attributes.end()) {
+            mesh.normals = readVec3(model, nrm->second, what, "NORMAL");
+            if (mesh.normals.size() != vertexCount)
+                fail(what + ": NORMAL has " + str(mesh.normals.size()) + " elements, POSITION " + str(vertexCount));
+            flat = !normalizeNormals(mesh.normals);
+            if (flat) report.warnings.push_back(what + ": zero-length NORMAL, using flat normals");
+        }
+        if (flat) {
+            makeFlatNormals(mesh);
+            ++report.flatNormalMeshes;
+        }
+        return scene.addMesh(std::move(mesh));
+    }
+
+    static glm::mat4 localTransform(const tinygltf::Node& n, const std::string& what) {
+        auto finite = [&](const std::vector<double>& v) {
+            for (double x : v)
+                if (!std::isfinite(x)) fail(what + ": non-finite transform");
+        };
+        if (!n.matrix.empty()) {
+            if (n.matrix.size() != 16) fail(what + ": matrix must have 16 numbers");
+            finite(n.matrix);
+            glm::mat4 m;
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) m[c][r] = float(n.matrix[std::size_t(c * 4 + r)]);  // column major
+            return m;
+        }
+        glm::vec3 t(0.0f), s(1.0f);
+        glm::quat q(1.0f, 0.0f, 0.0f, 0.0f);
+        if (!n.translation.empty()) {
+            if (n.translation.size() != 3) fail(what + ": translation must have 3 numbers");
+            finite(n.translation);
+            t = glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2]));
+        }
+        if (!n.rotation.empty()) {
+            if (n.rotation.size() != 4) fail(what + ": rotation must have 4 numbers");
+            finite(n.rotation);
+            // glTF stores x, y, z, w; glm's constructor takes w first.
+            q = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
+            float len = glm::length(q);
+            if (!(len > 1e-6f)) fail(what + ": rotation is a zero quaternion");
+            q = q / len;
+        }
+        if (!n.scale.empty()) {
+            if (n.scale.size() != 3) fail(what + ": scale must have 3 numbers");
+            finite(n.scale);
+            s = glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2]));
+        }
+        return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), s);
+    }
+
+    // The node graph must be a forest: every child index exists, no node has two parents and
+    // no parent chain loops. Checked iteratively so a hostile file cannot overflow the stack.
+    std::vector<int> checkForest() {
+        std::size_t n = model.nodes.size();
+        std::vector<int> parent(n, -1);
+        for (std::size_t i = 0; i < n; ++i) {
+            for (int c : model.nodes[i].children) {
+                if (c < 0 || std::size_t(c) >= n) fail("node " + str(i) + ": child " + str(c) + " does not exist");
+                if (std::size_t(c) == i) fail("node graph has a cycle: node " + str(i) + " is its own child");
+                if (parent[std::size_t(c)] == int(i))
+                    fail("node " + str(i) + " lists child " + str(c) + " twice");
+                if (parent[std::size_t(c)] >= 0)
+                    fail("node " + str(c) + " has two parents (nodes " + str(parent[std::size_t(c)]) + " and " +
+                         str(i) + ")");
+                parent[std::size_t(c)] = int(i);
+            }
+        }
+        // 0 unknown, 1 on the current walk, 2 reaches a parentless node.
+        std::vector<char> state(n, 0);
+        std::vector<std::size_t> walk;
+        for (std::size_t i = 0; i < n; ++i) {
+            walk.clear();
+            std::size_t k = i;
+            for (;;) {
+                if (state[k] == 1) fail("node graph has a cycle through node " + str(k));
+                if (state[k] == 2) break;
+                state[k] = 1;
+                walk.push_back(k);
+                if (parent[k] < 0) break;
+                k = std::size_t(parent[k]);
+            }
+            for (std::size_t w : walk) state[w] = 2;
+        }
+        return parent;
+    }
+
+    void convertNodes() {
+        std::vector<int> parent = checkForest();
+        for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+            const tinygltf::Node& g = model.nodes[i];
+            std::string what = "node " + str(i);
+            Node node;
+            node.name = g.name.empty() ? what : g.name;
+            node.local = localTransform(g, what);
+            node.children = g.children;
+            if (g.mesh >= 0) {
+                if (std::size_t(g.mesh) >= model.meshes.size()) fail(what + ": mesh " + str(g.mesh) + " does not exist");
+                node.meshes = meshMap[std::size_t(g.mesh)];
+            }
+            scene.nodes.push_back(std::move(node));  // 1:1 with glTF nodes, so children keep their indices
+        }
+        if (!model.scenes.empty() && model.defaultScene >= 0) {
+            if (std::size_t(model.defaultScene) >= model.scenes.size())
+                fail("default scene " + str(model.defaultScene) + " does not exist");
+            std::vector<char> listed(model.nodes.size(), 0);
+            for (int r : model.scenes[std::size_t(model.defaultScene)].nodes) {
+                std::string what = "scene " + str(model.defaultScene);
+                if (r < 0 || std::size_t(r) >= model.nodes.size()) fail(what + ": node " + str(r) + " does not exist");
+                if (parent[std::size_t(r)] >= 0)
+                    fail(what + ": node " + str(r) + " is not a root (its parent is node " + str(parent[std::size_t(r)]) + ")");
+                if (listed[std::size_t(r)]) fail(what + ": node " + str(r) + " listed twice");
+                listed[std::size_t(r)] = 1;
+                scene.roots.push_back(r);
+            }
+        } else {
+            // No default scene: show every root node (what a viewer is expected to do).
+            for (std::size_t i = 0; i < model.nodes.size(); ++i)
+                if (parent[i] < 0) scene.roots.push_back(int(i));
+        }
+    }
+
+    std::size_t reachableTriangles() const {
+        std::size_t triangles = 0;
+        std::vector<int> stack(scene.roots.begin(), scene.roots.end());
+        while (!stack.empty()) {  // the graph is a checked forest, so this terminates
+            const Node& node = scene.nodes[std::size_t(stack.back())];
+            stack.pop_back();
+            for (int m : node.meshes) triangles += scene.meshes[std::size_t(m)].triangleCount();
+            stack.insert(stack.end(), node.children.begin(), node.children.end());
+        }
+        return triangles;
+    }
+};
+
+tinygltf::Model parseFile(const std::filesystem::path& file, GltfLoadReport& report) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) fail("file not found");
+    if (!std::filesystem::is_regular_file(file, ec)) fail("not a regular file");
+    // tinygltf replaces mistyped properties by defaults; refuse them instead (see gltf_schema.hpp).
+    if (std::string problem = detail::checkGltfSchema(file); !problem.empty()) fail(problem);
+    // The container is decided by the magic bytes, not the extension (.glb renamed .gltf happens).
+    char magic[4] = {0, 0, 0, 0};
+    {
+        std::ifstream in(file, std::ios::binary);
+        if (!in) fail("cannot open file");
+        in.read(magic, 4);
+    }
+    bool binary = std::memcmp(magic, "glTF", 4) == 0;
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&ignoreImage, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
+                     : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
+    if (!ok) fail(err.empty() ? std::string("not a valid glTF file") : oneLine(err));
+    if (!warn.empty()) report.warnings.push_back(oneLine(warn));
+    return model;
+}
+
+}  // namespace
+
+Scene loadGltf(const std::filesystem::path& file) {
+    GltfLoadReport report;
+    return loadGltf(file, report);
+}
+
+Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report) {
+    try {
+        tinygltf::Model model = parseFile(file, report);
+        Converter conv{model, report, {}, {}};
+        conv.scene.name = file.stem().string();
+        conv.convertMaterials();
+        conv.convertMeshes();
+        conv.convertNodes();
+        if (conv.reachableTriangles() == 0) {
+            std::string skipped = report.skippedPrimitives
+                ? " (" + std::to_string(report.skippedPrimitives) + " point/line primitives skipped)" : "";
+            fail("no triangle geometry" + skipped);
+        }
+        return std::move(conv.scene);
+    } catch (const Bad& e) {
+        throw LoadError(file.string() + ": " + e.what());
+    } catch (const std::bad_alloc&) {
+        throw LoadError(file.string() + ": out of memory");
+    } catch (const LoadError&) {
+        throw;
+    } catch (const std::exception& e) {  // tinygltf's JSON parser may throw on malformed input
+        throw LoadError(file.string() + ": " + oneLine(e.what()));
+    }
+}
+
+}  // namespace strata

@@ -1,0 +1,26 @@
+#pragma once
+// glTF 2.0 (.gltf and .glb) to strata::Scene. CPU only; textures are not loaded (the
+// techniques shade with material factors), so a missing or broken image is never fatal.
+#include "scene/load_error.hpp"
+#include "scene/scene.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+// What the loader dropped on purpose, for callers that want to tell the user.
+struct GltfLoadReport {
+    int skippedPrimitives = 0;           // POINTS and LINES* primitives (not drawable as surfaces)
+    int flatNormalMeshes = 0;            // meshes without (usable) NORMAL that got flat normals
+    std::vector<std::string> warnings;   // tinygltf's warnings, one line each
+};
+
+// Loads a glTF file. Scene::name is the file stem; materials[0] is a default material and
+// glTF material i is materials[i + 1]; every triangle primitive becomes one Mesh and a node's
+// `meshes` lists those of its glTF mesh. Throws LoadError("<file>: <what is wrong>").
+Scene loadGltf(const std::filesystem::path& file);
+Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report);
+
+}  // namespace strata

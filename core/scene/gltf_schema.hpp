@@ -1,0 +1,17 @@
+#pragma once
+// A light schema check of a glTF file's JSON, run before tinygltf parses it. tinygltf quietly
+// replaces a property of the wrong JSON type by its default (a texture index of -1, a
+// pbrMetallicRoughness that is an array, a name that is a number), which would render the file
+// "successfully" but wrongly; this check turns those into errors. It covers the core properties
+// (types only; index ranges are checked by the loader), rejects absurd nesting depth, and
+// refuses files whose extensionsRequired names an extension the loader cannot honour.
+#include <filesystem>
+#include <string>
+
+namespace strata::detail {
+
+// Returns "" when the JSON (of a .gltf, or the JSON chunk of a .glb) passes, otherwise one line
+// saying what is wrong, e.g. "materials[0].pbrMetallicRoughness: expected an object".
+std::string checkGltfSchema(const std::filesystem::path& file);
+
+}  // namespace strata::detail

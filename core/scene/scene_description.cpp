@@ -1,0 +1,271 @@
+#include "scene/scene_description.hpp"
+
+#include "scene/gltf_loader.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <algorithm>
+#include <initializer_list>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace strata {
+namespace {
+
+using json = nlohmann::json;
+
+// Internal error holding the part after "<json file>: ".
+struct Bad : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void fail(const std::string& what) { throw Bad(what); }
+
+void onlyKeys(const json& obj, std::initializer_list<const char*> allowed, const std::string& where) {
+    for (const auto& item : obj.items()) {
+        bool known = false;
+        for (const char* k : allowed) known = known || item.key() == k;
+        if (!known) fail(where + "unknown key '" + item.key() + "'");
+    }
+}
+
+double number(const json& v, const std::string& where) {
+    if (!v.is_number()) fail(where + ": expected a number");
+    double d = v.get<double>();
+    if (!std::isfinite(d)) fail(where + ": expected a finite number");
+    return d;
+}
+
+template <int N>
+glm::vec<N, float> vector(const json& v, const std::string& where) {
+    if (!v.is_array() || v.size() != N) fail(where + ": expected an array of " + std::to_string(N) + " numbers");
+    glm::vec<N, float> out;
+    for (int i = 0; i < N; ++i) out[i] = float(number(v[std::size_t(i)], where));
+    return out;
+}
+
+glm::vec3 unitRange3(const json& v, const std::string& where) {
+    glm::vec3 c = vector<3>(v, where);
+    for (int i = 0; i < 3; ++i)
+        if (c[i] < 0.0f || c[i] > 1.0f) fail(where + ": components must be in [0, 1]");
+    return c;
+}
+
+Material parseMaterial(const json& m, const std::string& where) {
+    if (!m.is_object()) fail(where + "material: expected an object");
+    onlyKeys(m, {"name", "base_color", "alpha", "alpha_mode", "alpha_cutoff", "tau", "albedo", "double_sided"},
+             where + "material: ");
+    std::string w = where + "material.";
+    Material mat;
+    mat.name = "override";
+    if (m.contains("name")) {
+        if (!m["name"].is_string()) fail(w + "name: expected a string");
+        mat.name = m["name"].get<std::string>();
+    }
+    if (m.contains("base_color")) mat.baseColor = unitRange3(m["base_color"], w + "base_color");
+    if (m.contains("alpha")) {
+        mat.alpha = float(number(m["alpha"], w + "alpha"));
+        if (mat.alpha < 0.0f || mat.alpha > 1.0f) fail(w + "alpha: must be in [0, 1]");
+    }
+    // A description that lowers alpha means "see through"; requiring BLEND as well is a trap.
+    mat.alphaMode = mat.alpha < 1.0f ? AlphaMode::Blend : AlphaMode::Opaque;
+    if (m.contains("alpha_mode")) {
+        if (!m["alpha_mode"].is_string()) fail(w + "alpha_mode: expected a string");
+        std::string mode = m["alpha_mode"].get<std::string>();
+        if (mode == "OPAQUE") mat.alphaMode = AlphaMode::Opaque;
+        else if (mode == "MASK") mat.alphaMode = AlphaMode::Mask;
+        else if (mode == "BLEND") mat.alphaMode = AlphaMode::Blend;
+        else fail(w + "alpha_mode: unknown mode '" + mode + "' (OPAQUE, MASK or BLEND)");
+    }
+    if (m.contains("alpha_cutoff")) {
+        mat.alphaCutoff = float(number(m["alpha_cutoff"], w + "alpha_cutoff"));
+        if (mat.alphaCutoff < 0.0f) fail(w + "alpha_cutoff: must be >= 0");
+    }
+    if (m.contains("tau")) {
+        mat.tau = vector<3>(m["tau"], w + "tau");
+        if (mat.tau.x < 0.0f || mat.tau.y < 0.0f || mat.tau.z < 0.0f) fail(w + "tau: must be >= 0");
+    }
+    if (m.contains("albedo")) mat.albedo = unitRange3(m["albedo"], w + "albedo");
+    if (m.contains("double_sided")) {
+        if (!m["double_sided"].is_boolean()) fail(w + "double_sided: expected true or false");
+        mat.doubleSided = m["double_sided"].get<bool>();
+    }
+    return mat;
+}
+
+glm::mat4 objectTransform(const json& o, const std::string& where) {
+    glm::mat4 t(1.0f), r(1.0f), s(1.0f);
+    if (o.contains("translate")) t = glm::translate(glm::mat4(1.0f), vector<3>(o["translate"], where + "translate"));
+    if (o.contains("rotate_deg") && o.contains("rotate_axis_angle"))
+        fail(where + "give rotate_deg or rotate_axis_angle, not both");
+    if (o.contains("rotate_deg")) {
+        glm::vec3 e = glm::radians(vector<3>(o["rotate_deg"], where + "rotate_deg"));
+        // X first, then Y, then Z (column vectors: the leftmost applies last).
+        r = glm::rotate(glm::mat4(1.0f), e.z, glm::vec3(0, 0, 1)) *
+            glm::rotate(glm::mat4(1.0f), e.y, glm::vec3(0, 1, 0)) *
+            glm::rotate(glm::mat4(1.0f), e.x, glm::vec3(1, 0, 0));
+    }
+    if (o.contains("rotate_axis_angle")) {
+        glm::vec4 aa = vector<4>(o["rotate_axis_angle"], where + "rotate_axis_angle");
+        glm::vec3 axis(aa);
+        if (!(glm::length(axis) > 1e-6f)) fail(where + "rotate_axis_angle: the axis is zero");
+        r = glm::rotate(glm::mat4(1.0f), glm::radians(aa.w), glm::normalize(axis));
+    }
+    if (o.contains("scale")) {
+        const json& sc = o["scale"];
+        glm::vec3 f = sc.is_array() ? vector<3>(sc, where + "scale") : glm::vec3(float(number(sc, where + "scale")));
+        if (f.x == 0.0f || f.y == 0.0f || f.z == 0.0f) fail(where + "scale: must not be zero");
+        s = glm::scale(glm::mat4(1.0f), f);
+    }
+    return t * r * s;
+}
+
+// Centres the model's bounds at the origin and scales its largest extent to `size`.
+glm::mat4 fitTransform(const Scene& model, float size) {
+    Bounds b = worldBounds(model, flatten(model));
+    glm::vec3 extent = b.max - b.min;
+    float largest = std::max(extent.x, std::max(extent.y, extent.z));
+    float k = largest > 0.0f ? size / largest : 1.0f;
+    return glm::scale(glm::mat4(1.0f), glm::vec3(k)) * glm::translate(glm::mat4(1.0f), -b.center());
+}
+
+// Appends `model` to `scene` under a new root node; returns that node's index.
+int merge(Scene& scene, Scene&& model, Node objectNode) {
+    int materialBase = int(scene.materials.size()) - 1;  // model material 0 (default) maps to ours
+    int meshBase = int(scene.meshes.size());
+    int nodeBase = int(scene.nodes.size());
+    auto material = [&](int m) { return m <= 0 ? m : m + materialBase; };
+    for (std::size_t i = 1; i < model.materials.size(); ++i) scene.materials.push_back(std::move(model.materials[i]));
+    for (Mesh& mesh : model.meshes) {
+        mesh.material = material(mesh.material);
+        scene.meshes.push_back(std::move(mesh));
+    }
+    for (Node& node : model.nodes) {
+        for (int& c : node.children) c += nodeBase;
+        for (int& m : node.meshes) m += meshBase;
+        node.materialOverride = material(node.materialOverride);
+        scene.nodes.push_back(std::move(node));
+    }
+    for (int root : model.roots) objectNode.children.push_back(root + nodeBase);
+    return scene.addNode(std::move(objectNode));
+}
+
+void parseCamera(Scene& scene, const json& c) {
+    if (!c.is_object()) fail("camera: expected an object");
+    onlyKeys(c, {"position", "target", "up", "fov_y_deg"}, "camera: ");
+    if (!c.contains("position") || !c.contains("target")) fail("camera: needs position and target");
+    glm::vec3 position = vector<3>(c["position"], "camera.position");
+    glm::vec3 target = vector<3>(c["target"], "camera.target");
+    glm::vec3 up = c.contains("up") ? vector<3>(c["up"], "camera.up") : glm::vec3(0, 1, 0);
+    glm::vec3 dir = target - position;
+    if (!(glm::length(dir) > 1e-6f)) fail("camera: position and target coincide");
+    dir = glm::normalize(dir);
+    if (!(glm::length(up) > 1e-6f)) fail("camera.up: is zero");
+    up = glm::normalize(up);
+    // Looking straight along `up` leaves the roll undefined; pick another up then.
+    if (std::abs(glm::dot(dir, up)) > 0.999f) up = std::abs(dir.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
+    CameraPose pose;
+    pose.position = position;
+    pose.orientation = glm::quatLookAtRH(dir, up);  // maps the camera's -Z onto dir
+    if (c.contains("fov_y_deg")) {
+        pose.fovYDegrees = float(number(c["fov_y_deg"], "camera.fov_y_deg"));
+        if (pose.fovYDegrees <= 0.0f || pose.fovYDegrees >= 180.0f) fail("camera.fov_y_deg: must be in (0, 180)");
+    }
+    scene.camera = pose;
+}
+
+Scene parse(const json& doc, const std::filesystem::path& jsonFile) {
+    if (!doc.is_object()) fail("expected a JSON object at the top level");
+    onlyKeys(doc, {"name", "camera", "light_direction", "background", "objects"}, "");
+    Scene scene;
+    scene.name = jsonFile.stem().string();
+    if (doc.contains("name")) {
+        if (!doc["name"].is_string()) fail("name: expected a string");
+        scene.name = doc["name"].get<std::string>();
+    }
+    scene.materials.push_back(Material{});  // index 0 always exists
+    if (doc.contains("camera")) parseCamera(scene, doc["camera"]);
+    if (doc.contains("light_direction")) {
+        glm::vec3 l = vector<3>(doc["light_direction"], "light_direction");
+        if (!(glm::length(l) > 1e-6f)) fail("light_direction: is zero");
+        scene.lightDirection = glm::normalize(l);
+    }
+    if (doc.contains("background")) {
+        scene.background = vector<3>(doc["background"], "background");
+        if (glm::any(glm::lessThan(scene.background, glm::vec3(0.0f)))) fail("background: must be >= 0");
+    }
+    if (!doc.contains("objects")) fail("missing field 'objects'");
+    const json& objects = doc["objects"];
+    if (!objects.is_array() || objects.empty()) fail("objects: expected a non-empty array");
+
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const json& o = objects[i];
+        std::string where = "object " + std::to_string(i) + ": ";
+        if (!o.is_object()) fail(where + "expected an object");
+        onlyKeys(o, {"model", "name", "fit", "translate", "rotate_deg", "rotate_axis_angle", "scale", "material"}, where);
+        if (!o.contains("model")) fail(where + "missing field 'model'");
+        if (!o["model"].is_string()) fail(where + "model: expected a string");
+        std::filesystem::path model = o["model"].get<std::string>();
+        if (model.is_relative()) model = jsonFile.parent_path() / model;
+
+        Node node;
+        node.name = model.stem().string();
+        if (o.contains("name")) {
+            if (!o["name"].is_string()) fail(where + "name: expected a string");
+            node.name = o["name"].get<std::string>();
+        }
+        node.local = objectTransform(o, where);
+        std::optional<Material> override;
+        if (o.contains("material")) override = parseMaterial(o["material"], where);
+        float fit = 0.0f;
+        if (o.contains("fit")) {
+            fit = float(number(o["fit"], where + "fit"));
+            if (fit <= 0.0f) fail(where + "fit: must be > 0");
+        }
+
+        Scene loaded;
+        try {
+            loaded = loadGltf(model);
+        } catch (const LoadError& e) {
+            fail("object " + std::to_string(i) + ": " + e.what());
+        }
+        if (fit > 0.0f) node.local = node.local * fitTransform(loaded, fit);
+        if (override) node.materialOverride = scene.addMaterial(std::move(*override));
+        merge(scene, std::move(loaded), std::move(node));
+    }
+    return scene;
+}
+
+}  // namespace
+
+Scene loadSceneDescription(const std::filesystem::path& jsonFile) {
+    std::string prefix = jsonFile.string() + ": ";
+    std::ifstream in(jsonFile, std::ios::binary);
+    if (!in) throw LoadError(prefix + (std::filesystem::exists(jsonFile) ? "cannot open file" : "file not found"));
+    std::stringstream text;
+    text << in.rdbuf();
+    json doc;
+    try {
+        doc = json::parse(text.str());
+    } catch (const json::parse_error& e) {
+        // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
+        std::string what = e.what();
+        auto close = what.find("] ");
+        throw LoadError(prefix + "JSON " + (close == std::string::npos ? what : what.substr(close + 2)));
+    }
+    try {
+        return parse(doc, jsonFile);
+    } catch (const Bad& e) {
+        throw LoadError(prefix + e.what());
+    } catch (const std::runtime_error& e) {  // flatten() on a loaded model (cannot happen for checked graphs)
+        throw LoadError(prefix + e.what());
+    }
+}
+
+}  // namespace strata

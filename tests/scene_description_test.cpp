@@ -1,0 +1,181 @@
+// Scene descriptions: the shipped scenes load, transforms and material overrides apply, and
+// errors name the JSON file and the problem.
+#include "gltf_test_builder.hpp"
+
+#include "scene/scene_description.hpp"
+
+#include <doctest/doctest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <string>
+
+using namespace strata;
+using namespace strata::test;
+
+namespace {
+
+std::string descriptionError(const std::filesystem::path& file) {
+    try {
+        loadSceneDescription(file);
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    return "(loaded)";
+}
+
+// A quad model with one glTF material (red, opaque), written once.
+std::filesystem::path quadModel() {
+    static std::filesystem::path path = [] {
+        GltfBuilder b;
+        int pos = b.positions(kQuadPositions);
+        b.material({{"name", "red"}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}});
+        int idx = b.accessor(b.view(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3}), kUByte, 6, "SCALAR");
+        b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}, {"indices", idx}, {"material", 0}}}));
+        return b.writeGltf("desc-quad");
+    }();
+    return path;
+}
+
+std::filesystem::path writeDescription(const std::string& name, const std::string& text) {
+    auto path = tempDir() / (name + ".json");
+    writeFile(path, text);
+    return path;
+}
+
+bool sharedModelsPresent() {
+    bool present = std::filesystem::is_directory(STRATA_SHARED_SCENES_DIR);
+    if (!present) MESSAGE("skipped: " << STRATA_SHARED_SCENES_DIR << " is absent");
+    return present;
+}
+
+}  // namespace
+
+TEST_CASE("scene description: the shipped scenes load") {
+    if (!sharedModelsPresent()) return;
+    std::filesystem::path scenes = std::filesystem::path(STRATA_SOURCE_DIR) / "scenes";
+
+    Scene fandisk = loadSceneDescription(scenes / "fandisk-glass.json");
+    CHECK(fandisk.name == "fandisk-glass");
+    auto objects = flatten(fandisk);
+    REQUIRE(objects.size() == 1);
+    const Material& glass = fandisk.materials[std::size_t(objects[0].material)];
+    CHECK(glass.alphaMode == AlphaMode::Blend);
+    CHECK(glass.alpha == doctest::Approx(0.4f));
+    CHECK(glass.baseColor.b > glass.baseColor.r);  // bluish
+    CHECK(hasTransparency(fandisk, objects));
+    CHECK(fandisk.meshes[std::size_t(objects[0].mesh)].triangleCount() == 12946);
+    REQUIRE(fandisk.camera.has_value());
+    CHECK(fandisk.camera->fovYDegrees == doctest::Approx(45.0f));
+    // "fit": 2 centres the part at the origin with a largest extent of 2.
+    Bounds b = worldBounds(fandisk, objects);
+    glm::vec3 extent = b.max - b.min;
+    CHECK(std::max(extent.x, std::max(extent.y, extent.z)) == doctest::Approx(2.0f).epsilon(1e-4));
+    CHECK(glm::length(b.center()) < 1e-4f);
+
+    Scene bunny = loadSceneDescription(scenes / "bunny-glass.json");
+    auto bunnyObjects = flatten(bunny);
+    REQUIRE(bunnyObjects.size() == 1);
+    CHECK(bunny.materials[std::size_t(bunnyObjects[0].material)].alpha == doctest::Approx(0.5f));
+    CHECK(hasTransparency(bunny, bunnyObjects));
+
+    Scene opaque = loadSceneDescription(scenes / "models-opaque.json");
+    auto opaqueObjects = flatten(opaque);
+    CHECK(opaqueObjects.size() == 4);
+    CHECK_FALSE(hasTransparency(opaque, opaqueObjects));
+    // Side by side: the objects' bounds do not overlap along x.
+    for (std::size_t i = 1; i < opaqueObjects.size(); ++i)
+        CHECK(opaqueObjects[i - 1].worldBounds.max.x < opaqueObjects[i].worldBounds.min.x);
+}
+
+TEST_CASE("scene description: transforms, overrides and merged indices") {
+    std::string model = quadModel().string();
+    auto path = writeDescription("two-quads", R"({
+      "camera": {"position": [0, 0, 5], "target": [0, 0, 0], "fov_y_deg": 30},
+      "light_direction": [0, 2, 0], "background": [0.5, 0.5, 0.5],
+      "objects": [
+        {"model": ")" + model + R"(", "name": "plain", "translate": [1, 2, 3], "rotate_deg": [0, 0, 90], "scale": 2},
+        {"model": "desc-quad.gltf", "rotate_axis_angle": [0, 1, 0, 180], "scale": [1, 2, 3],
+         "material": {"base_color": [0.1, 0.2, 0.3], "alpha": 0.25, "tau": [1, 2, 3], "albedo": [0.5, 0.5, 0.5],
+                      "double_sided": false}}
+      ]})");
+    Scene s = loadSceneDescription(path);
+    CHECK(s.name == "two-quads");
+    CHECK(s.lightDirection == glm::vec3(0, 1, 0));
+    CHECK(s.background == glm::vec3(0.5f));
+    REQUIRE(s.camera.has_value());
+    glm::vec3 forward = s.camera->orientation * glm::vec3(0, 0, -1);
+    CHECK(forward.z == doctest::Approx(-1.0f));
+    // default + red (object 0) + red (object 1) + the override
+    REQUIRE(s.materials.size() == 4);
+    CHECK(s.materials[1].baseColor == glm::vec3(1, 0, 0));
+    CHECK(s.meshes.size() == 2);
+    CHECK(s.meshes[1].material == 3);  // the second red: after the first and the override
+    CHECK(s.roots.size() == 2);
+
+    auto objects = flatten(s);
+    REQUIRE(objects.size() == 2);
+    CHECK(objects[0].material == 1);
+    glm::vec4 p = objects[0].world * glm::vec4(1, 0, 0, 1);  // scale 2, rotate 90 about z, translate
+    CHECK(p.x == doctest::Approx(1.0f));
+    CHECK(p.y == doctest::Approx(4.0f));
+    CHECK(p.z == doctest::Approx(3.0f));
+    glm::vec4 q = objects[1].world * glm::vec4(1, 1, 0, 1);  // scale (1,2,3) then 180 about y
+    CHECK(q.x == doctest::Approx(-1.0f));
+    CHECK(q.y == doctest::Approx(2.0f));
+    CHECK(q.z == doctest::Approx(0.0f).epsilon(1e-5));
+
+    const Material& over = s.materials[std::size_t(objects[1].material)];
+    CHECK(objects[1].material == 2);
+    CHECK(over.alphaMode == AlphaMode::Blend);  // alpha < 1 implies BLEND
+    CHECK(over.alpha == doctest::Approx(0.25f));
+    CHECK(over.tau == glm::vec3(1, 2, 3));
+    CHECK(over.albedo == glm::vec3(0.5f));
+    CHECK_FALSE(over.doubleSided);
+    CHECK(hasTransparency(s, objects));
+}
+
+TEST_CASE("scene description: errors name the file and the problem") {
+    std::string model = quadModel().string();
+    auto obj = [&](const std::string& extra) {
+        return R"({"objects": [{"model": ")" + model + "\"" + extra + "}]}";
+    };
+    struct Case { const char* name; std::string text; const char* error; };
+    std::vector<Case> cases = {
+        {"badjson", "{\n  \"objects\": [\n  }\n", "badjson.json: JSON parse error at line 3"},
+        {"noobjects", "{}", "noobjects.json: missing field 'objects'"},
+        {"emptyobjects", R"({"objects": []})", "objects: expected a non-empty array"},
+        {"nomodel", R"({"objects": [{}]})", "nomodel.json: object 0: missing field 'model'"},
+        {"typo", obj(R"(, "translation": [1, 2, 3])"), "typo.json: object 0: unknown key 'translation'"},
+        {"badtranslate", obj(R"(, "translate": [1, "2", 3])"), "object 0: translate: expected a number"},
+        {"shorttranslate", obj(R"(, "translate": [1, 2])"), "object 0: translate: expected an array of 3 numbers"},
+        {"badmode", obj(R"(, "material": {"alpha_mode": "GLASS"})"), "object 0: material.alpha_mode: unknown mode 'GLASS'"},
+        {"badalpha", obj(R"(, "material": {"alpha": 2})"), "object 0: material.alpha: must be in [0, 1]"},
+        {"badscale", obj(R"(, "scale": 0)"), "object 0: scale: must not be zero"},
+        {"tworotations", obj(R"(, "rotate_deg": [0, 0, 0], "rotate_axis_angle": [0, 1, 0, 90])"), "not both"},
+        {"badcamera", R"({"camera": {"position": [0, 0, 0], "target": [0, 0, 0]}, "objects": []})", "camera: position and target coincide"},
+        {"missingmodel", R"({"objects": [{"model": ")" + model + R"("}, {"model": "nowhere.glb"}]})",
+         "missingmodel.json: object 1: "},
+    };
+    for (const Case& c : cases) {
+        std::string name = c.name;
+        CAPTURE(name);
+        std::string error = descriptionError(writeDescription(c.name, c.text));
+        CHECK(error.find(c.error) != std::string::npos);
+        CHECK(error.find('\n') == std::string::npos);
+    }
+    std::string missing = descriptionError(tempDir() / "missingmodel.json");
+    CHECK(missing.find("nowhere.glb: file not found") != std::string::npos);
+    CHECK(descriptionError(tempDir() / "absent.json").find("absent.json: file not found") != std::string::npos);
+
+    // A model that fails to load: the loader's own message follows the object number.
+    GltfBuilder b;
+    int pos = b.positions(kQuadPositions);
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}},
+                             {"indices", b.accessor(b.view(std::vector<std::uint8_t>{0, 1, 9}), kUByte, 3, "SCALAR")}}}));
+    auto broken = b.writeGltf("broken-model");
+    std::string error = descriptionError(writeDescription("broken", R"({"objects": [{"model": ")" + model +
+                                                          R"("}, {"model": "broken-model.gltf"}]})"));
+    CHECK(error.find("broken.json: object 1: ") != std::string::npos);
+    CHECK(error.find("broken-model.gltf: mesh 0 primitive 0: index 9 out of range (4 vertices)") != std::string::npos);
+}
