@@ -24,7 +24,7 @@ public:
 
     std::vector<Parameter> parameters() override {
         return {
-            {"initial_nodes", "node pool capacity before any growth (fragments)", &initialNodes_, 1, 1e9, true},
+            {"initial_nodes", "node pool capacity on the first frame (0: two per pixel); it grows as needed", &initialNodes_, 0, 1e9, true},
             {"max_block_mib", "largest node pool in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
              &maxBlockMiB_, 0, 1e6, false},
         };
@@ -43,7 +43,11 @@ public:
             headsSize_ = frame.size;
         }
         std::uint64_t maxNodes = maxPoolNodes();
-        if (capacity_ == 0) capacity_ = std::min<std::uint64_t>(std::uint64_t(initialNodes_), maxNodes);
+        // First frame: the parameter, or two fragments per pixel; later frames keep what the
+        // previous frame needed, so the pool follows the fragments present.
+        if (capacity_ == 0)
+            capacity_ = initialNodes_ > 0 ? std::uint64_t(initialNodes_) : std::uint64_t(frame.size.x) * frame.size.y * 2;
+        capacity_ = std::max<std::uint64_t>(capacity_, 1);
         if (capacity_ > maxNodes) capacity_ = maxNodes;
         ensurePool();
 
@@ -78,7 +82,11 @@ public:
         glDisable(GL_SCISSOR_TEST);
         stats_.tiles = tilesDone;
         stats_.bytes = capacity_ * kNodeBytes + std::uint64_t(frame.size.x) * frame.size.y * 4 + sizeof(GLuint);
+        // Memory sized to the fragments present: give back a pool four times larger than needed.
+        std::uint64_t largestTile = tilesDone == 1 ? stats_.fragmentsCaptured : capacity_;
+        if (largestTile * 4 < capacity_) capacity_ = std::max<std::uint64_t>(largestTile + largestTile / 8, 1024);
     }
+
 
 private:
     std::uint64_t maxPoolNodes() const {
@@ -153,7 +161,7 @@ private:
     gl::Texture heads_;
     glm::ivec2 headsSize_{0, 0};
     std::uint64_t capacity_ = 0, poolCapacity_ = 0;
-    double initialNodes_ = 1 << 20;
+    double initialNodes_ = 0;
     double maxBlockMiB_ = 0;
 };
 

@@ -23,14 +23,22 @@ public:
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         stats_ = {};
         stats_.passes = 1;
+        // Every fragment that passes the depth test is blended: an occlusion query counts them.
+        if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         stats_.objectDraws = drawTransparent(frame, program_, order);
+        glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
+        GLuint64 blended = 0;
+        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
+        stats_.fragmentsCaptured = blended;
     }
 
 private:
     TechniqueInfo info_;
     bool sorted_;
     SceneProgram program_;
+    gl::Query samples_;
 };
 
 }  // namespace

@@ -1,0 +1,159 @@
+#include "bench/bench.hpp"
+
+#include "gl/debug.hpp"
+#include "oit/technique.hpp"
+#include "reference/raycast.hpp"
+#include "render/frame_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace strata {
+namespace {
+
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    double rank = p * double(values.size() - 1);
+    std::size_t lo = std::size_t(std::floor(rank));
+    std::size_t hi = std::min(lo + 1, values.size() - 1);
+    return values[lo] + (values[hi] - values[lo]) * (rank - double(lo));
+}
+
+std::vector<Camera> benchCameras(const GpuScene& scene, const BenchOptions& options) {
+    Camera base = defaultCamera(scene.scene(), scene.objects());
+    std::vector<Camera> cameras;
+    for (int i = 0; i < options.frames; ++i) {
+        if (!options.cameraPath) {
+            cameras.push_back(base);
+            continue;
+        }
+        const CameraPath& path = *options.cameraPath;
+        double t = path.startTime() + path.duration() * (options.frames > 1 ? double(i) / (options.frames - 1) : 0.0);
+        Camera c = cameraAt(path, t, base);
+        c.fitClipPlanes(scene.bounds());
+        cameras.push_back(c);
+    }
+    return cameras;
+}
+
+void applyParameters(Technique& technique, const std::vector<std::string>& assignments) {
+    const std::string& id = technique.info().id;
+    for (const auto& a : assignments) {
+        auto dot = a.find('.');
+        auto eq = a.find('=');
+        if (dot != std::string::npos && dot < eq) {
+            if (a.substr(0, dot) == id) setParameter(technique, a.substr(dot + 1));
+            continue;
+        }
+        // An unqualified name applies to every technique that has it.
+        std::string name = a.substr(0, eq);
+        auto params = technique.parameters();
+        if (std::any_of(params.begin(), params.end(), [&](const Parameter& p) { return p.name == name; }))
+            setParameter(technique, a);
+    }
+}
+
+}  // namespace
+
+BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
+    if (options.frames < 1) throw std::invalid_argument("bench: --frames must be at least 1");
+    std::vector<std::string> modes = options.modes;
+    if (modes.empty())
+        for (const auto& e : techniqueRegistry()) modes.push_back(e.info.id);
+    for (const auto& m : modes)
+        if (!findTechnique(m)) createTechnique(m);  // throws the list of known ids
+    // The reference renders first, so every technique is compared on the same frames.
+    modes.erase(std::remove(modes.begin(), modes.end(), "abuffer"), modes.end());
+    modes.insert(modes.begin(), "abuffer");
+    bool referenceRequested = std::find(options.modes.begin(), options.modes.end(), "abuffer") != options.modes.end() ||
+                              options.modes.empty();
+
+    BenchReport report;
+    report.scene = options.sceneName;
+    report.size = options.size;
+    report.frames = options.frames;
+    report.device = gl::currentDeviceInfo();
+    report.triangles = scene.triangleCount();
+    report.objects = scene.objects().size();
+
+    std::vector<Camera> cameras = benchCameras(scene, options);
+    {
+        // Coplanarity: exact depth ties among transparent fragments, on the CPU at <= 128 px wide.
+        int w = std::min(options.size.x, 128);
+        int h = std::max(1, int(std::lround(double(w) * options.size.y / options.size.x)));
+        ReferenceStats stats;
+        RaycastReference(scene.scene(), scene.objects()).render(cameras.front(), w, h, &stats);
+        report.coplanarityProbability = stats.coplanarityProbability();
+    }
+
+    FrameRenderer renderer;
+    std::vector<Image> referenceImages;
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+        const std::string& id = modes[m];
+        if (options.progress)
+            options.progress("bench: [" + std::to_string(m + 1) + "/" + std::to_string(modes.size()) + "] " + id);
+        auto technique = createTechnique(id);
+        applyParameters(*technique, options.parameters);
+
+        FrameOptions frameOptions;
+        frameOptions.countFragments = true;
+        for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique.get(), frameOptions);
+        gl::checkGl(("bench warm-up of " + id).c_str());
+
+        BenchMode mode;
+        mode.id = id;
+        mode.family = technique->info().family;
+        mode.robust = technique->info().robust;
+        mode.handlesCoplanarity = technique->info().handlesCoplanarity;
+        std::vector<double> gpu, cpu, opaque;
+        std::map<std::string, std::vector<double>> perPass;
+        std::vector<std::string> passOrder;
+        double sumSquares = 0.0;
+        std::size_t channels = 0;
+        for (int f = 0; f < options.frames; ++f) {
+            FrameResult r = renderer.render(scene, cameras[f], options.size, technique.get(), frameOptions);
+            gl::checkGl(("bench frame of " + id).c_str());
+            double techniqueMs = 0.0, opaqueMs = 0.0;
+            std::map<std::string, double> frameByPass;
+            for (const auto& p : r.passTimes) {
+                (p.name == "opaque" ? opaqueMs : techniqueMs) += p.gpuMs;
+                if (!frameByPass.count(p.name) && !perPass.count(p.name)) passOrder.push_back(p.name);
+                frameByPass[p.name] += p.gpuMs;
+            }
+            for (const auto& [name, ms] : frameByPass) perPass[name].push_back(ms);
+            gpu.push_back(techniqueMs);
+            opaque.push_back(opaqueMs);
+            cpu.push_back(r.cpuMs);
+            mode.passes = std::max(mode.passes, r.stats.passes);
+            mode.bytes = std::max(mode.bytes, r.stats.bytes);
+            mode.fragmentsTotal += r.fragmentsTotal.value_or(0);
+            mode.fragmentsCaptured += r.stats.fragmentsCaptured;
+            mode.overflowed = mode.overflowed || r.stats.overflowed;
+            mode.regrows += r.stats.regrows;
+            mode.tiles = std::max(mode.tiles, r.stats.tiles);
+
+            Image image = renderer.readOutput();
+            if (m == 0) referenceImages.push_back(image);
+            ImageDifference d = compareImages(image, referenceImages[f]);
+            sumSquares += d.rmse * d.rmse * double(image.width) * image.height * 3;
+            channels += std::size_t(image.width) * image.height * 3;
+            mode.maxAbsError = std::max(mode.maxAbsError, d.maxAbsError);
+            if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), image);
+        }
+        mode.msMedian = percentile(gpu, 0.5);
+        mode.msP95 = percentile(gpu, 0.95);
+        mode.cpuMsMedian = percentile(cpu, 0.5);
+        mode.opaqueMsMedian = percentile(opaque, 0.5);
+        for (const auto& name : passOrder) mode.passMsMedian.emplace_back(name, percentile(perPass[name], 0.5));
+        mode.rmse = channels ? std::sqrt(sumSquares / double(channels)) : 0.0;
+        mode.psnr = mode.rmse > 0.0 ? std::min(100.0, 20.0 * std::log10(1.0 / mode.rmse)) : 100.0;
+        mode.robustnessRatio = mode.fragmentsTotal ? double(mode.fragmentsCaptured) / double(mode.fragmentsTotal) : 1.0;
+        if (m > 0 || referenceRequested) report.modes.push_back(std::move(mode));
+    }
+    return report;
+}
+
+}  // namespace strata

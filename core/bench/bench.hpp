@@ -1,0 +1,75 @@
+#pragma once
+// `strata bench`: renders each requested technique and the exact reference over the same
+// frames (a camera path or a fixed view), and reports cost (GPU ms from timer queries, CPU wall
+// ms, passes, bytes) and loss (fragments captured against the shared count, RMSE/PSNR/max error
+// against the reference in linear RGB). Warm-up frames are rendered and not recorded.
+#include "camera/camera_path.hpp"
+#include "gl/context.hpp"
+#include "image/image.hpp"
+#include "render/gpu_scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+struct BenchOptions {
+    std::string sceneName;                  // as given on the command line
+    std::vector<std::string> modes;         // technique ids; empty = all
+    glm::ivec2 size{512, 512};
+    int frames = 10;
+    int warmupFrames = 2;
+    std::optional<CameraPath> cameraPath;   // else the scene's default camera, fixed
+    std::vector<std::string> parameters;    // "id.name=value" or "name=value" (applies to every mode having it)
+    std::optional<std::filesystem::path> imagesDir;  // first frame of each mode as PNG
+    std::function<void(const std::string&)> progress;  // one line per step, may be empty
+};
+
+struct BenchMode {
+    std::string id;
+    std::string family;
+    bool robust = false;
+    bool handlesCoplanarity = false;
+    double msMedian = 0, msP95 = 0;          // GPU ms of the technique's passes (opaque pass excluded)
+    double cpuMsMedian = 0;                  // CPU wall ms of the whole frame
+    double opaqueMsMedian = 0;               // GPU ms of the opaque pass, for scale
+    int passes = 0;
+    std::uint64_t bytes = 0;
+    std::uint64_t fragmentsTotal = 0;        // summed over frames, the shared count
+    std::uint64_t fragmentsCaptured = 0;     // summed over frames
+    double robustnessRatio = 1.0;
+    bool overflowed = false;
+    int regrows = 0;
+    int tiles = 1;
+    double rmse = 0, psnr = 100, maxAbsError = 0;
+    std::vector<std::pair<std::string, double>> passMsMedian;  // per pass name
+};
+
+struct BenchReport {
+    std::string scene;
+    glm::ivec2 size{0, 0};
+    int frames = 0;
+    gl::DeviceInfo device;
+    std::string reference = "abuffer";
+    std::vector<BenchMode> modes;
+    double coplanarityProbability = 0.0;     // share of covered pixels with exact depth ties (CPU ray cast)
+    std::size_t triangles = 0;
+    std::size_t objects = 0;
+};
+
+// Needs a current GL context. Throws std::invalid_argument for an unknown mode or parameter.
+BenchReport runBench(const GpuScene& scene, const BenchOptions& options);
+
+nlohmann::json benchToJson(const BenchReport& report);
+std::string benchToTable(const BenchReport& report);
+std::string benchToCsv(const BenchReport& report);
+
+// Writes text to `path` through a temporary file and a rename: never half-written.
+void writeTextFile(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace strata

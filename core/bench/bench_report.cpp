@@ -1,0 +1,106 @@
+// The bench report in the three shapes it is read in: the JSON contract of DESIGN.md, a
+// table for people, and CSV for plots.
+#include "bench/bench.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace strata {
+namespace {
+
+// JSON has no NaN or infinity; the contract promises finite numbers.
+double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+
+std::string fmt(const char* format, double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, v);
+    return buffer;
+}
+
+std::string humanBytes(std::uint64_t bytes) {
+    if (bytes >= (1ull << 20)) return fmt("%.1f MiB", double(bytes) / double(1 << 20));
+    if (bytes >= 1024) return fmt("%.1f KiB", double(bytes) / 1024.0);
+    return std::to_string(bytes) + " B";
+}
+
+}  // namespace
+
+nlohmann::json benchToJson(const BenchReport& r) {
+    nlohmann::json modes = nlohmann::json::array();
+    for (const auto& m : r.modes) {
+        nlohmann::json passes = nlohmann::json::object();
+        for (const auto& [name, ms] : m.passMsMedian) passes[name] = finite(ms);
+        modes.push_back({
+            {"id", m.id}, {"family", m.family}, {"robust", m.robust}, {"handles_coplanarity", m.handlesCoplanarity},
+            {"ms_median", finite(m.msMedian)}, {"ms_p95", finite(m.msP95)}, {"cpu_ms_median", finite(m.cpuMsMedian)},
+            {"opaque_ms_median", finite(m.opaqueMsMedian)}, {"pass_ms_median", passes},
+            {"passes", m.passes}, {"bytes", m.bytes},
+            {"fragments_total", m.fragmentsTotal}, {"fragments_captured", m.fragmentsCaptured},
+            {"robustness_ratio", finite(m.robustnessRatio)}, {"overflowed", m.overflowed},
+            {"regrows", m.regrows}, {"tiles", m.tiles},
+            {"rmse", finite(m.rmse)}, {"psnr", finite(m.psnr)}, {"max_abs_error", finite(m.maxAbsError)},
+        });
+    }
+    return {
+        {"scene", r.scene},
+        {"size", {r.size.x, r.size.y}},
+        {"frames", r.frames},
+        {"device", {{"vendor", r.device.vendor}, {"renderer", r.device.renderer}, {"version", r.device.version}}},
+        {"reference", r.reference},
+        {"modes", modes},
+        {"coplanarity_probability", finite(r.coplanarityProbability)},
+        {"triangles", r.triangles},
+        {"objects", r.objects},
+    };
+}
+
+std::string benchToTable(const BenchReport& r) {
+    std::ostringstream out;
+    out << "scene " << r.scene << "  " << r.size.x << "x" << r.size.y << "  " << r.frames << " frames  "
+        << r.objects << " objects, " << r.triangles << " triangles\n";
+    out << "device " << r.device.renderer << " (" << r.device.vendor << ", " << r.device.version << ")\n";
+    out << "coplanarity probability " << fmt("%.3f", r.coplanarityProbability) << "  reference " << r.reference
+        << "\n\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "%-16s %9s %9s %9s %6s %11s %12s %7s %9s %8s %9s\n", "mode", "gpu ms", "p95 ms",
+                  "cpu ms", "passes", "memory", "fragments", "ratio", "rmse", "psnr", "max err");
+    out << line;
+    for (const auto& m : r.modes) {
+        std::snprintf(line, sizeof line, "%-16s %9.3f %9.3f %9.2f %6d %11s %12llu %7.4f %9.2e %8.2f %9.2e%s\n",
+                      m.id.c_str(), m.msMedian, m.msP95, m.cpuMsMedian, m.passes, humanBytes(m.bytes).c_str(),
+                      (unsigned long long)m.fragmentsCaptured, m.robustnessRatio, m.rmse, m.psnr, m.maxAbsError,
+                      m.overflowed ? "  OVERFLOW" : (m.regrows ? "  (grew)" : ""));
+        out << line;
+    }
+    return out.str();
+}
+
+std::string benchToCsv(const BenchReport& r) {
+    std::ostringstream out;
+    out << "scene,width,height,frames,mode,family,robust,handles_coplanarity,ms_median,ms_p95,cpu_ms_median,"
+           "passes,bytes,fragments_total,fragments_captured,robustness_ratio,overflowed,rmse,psnr,max_abs_error\n";
+    for (const auto& m : r.modes) {
+        out << r.scene << ',' << r.size.x << ',' << r.size.y << ',' << r.frames << ',' << m.id << ',' << m.family
+            << ',' << m.robust << ',' << m.handlesCoplanarity << ',' << finite(m.msMedian) << ',' << finite(m.msP95)
+            << ',' << finite(m.cpuMsMedian) << ',' << m.passes << ',' << m.bytes << ',' << m.fragmentsTotal << ','
+            << m.fragmentsCaptured << ',' << finite(m.robustnessRatio) << ',' << m.overflowed << ','
+            << finite(m.rmse) << ',' << finite(m.psnr) << ',' << finite(m.maxAbsError) << '\n';
+    }
+    return out.str();
+}
+
+void writeTextFile(const std::filesystem::path& path, const std::string& text) {
+    std::filesystem::path tmp = path;
+    tmp += ".partial";
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
+        out << text;
+        if (!out.flush()) throw std::runtime_error(path.string() + ": write failed");
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+}  // namespace strata

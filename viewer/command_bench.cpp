@@ -1,0 +1,81 @@
+// `strata bench`: every requested technique against the exact reference on the same frames.
+#include "commands.hpp"
+
+#include "bench/bench.hpp"
+#include "gl/context.hpp"
+#include "scene/scene_source.hpp"
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace strata {
+namespace {
+
+struct BenchArgs {
+    std::string scene;
+    std::string modes = "all";
+    std::string size = "512x512";
+    int frames = 10;
+    int warmup = 2;
+    std::string cameraPath;
+    std::string json, csv, images;
+    std::vector<std::string> parameters;
+};
+
+std::vector<std::string> splitModes(const std::string& text) {
+    std::vector<std::string> out;
+    if (text == "all") return out;
+    std::stringstream in(text);
+    std::string id;
+    while (std::getline(in, id, ','))
+        if (!id.empty()) out.push_back(id);
+    if (out.empty()) throw std::invalid_argument("--modes '" + text + "' names no technique");
+    return out;
+}
+
+void run(const BenchArgs& a) {
+    BenchOptions options;
+    options.sceneName = a.scene;
+    options.modes = splitModes(a.modes);
+    options.size = parseSize(a.size);
+    options.frames = a.frames;
+    options.warmupFrames = a.warmup;
+    options.parameters = a.parameters;
+    if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
+    if (!a.images.empty()) {
+        std::filesystem::create_directories(a.images);
+        options.imagesDir = a.images;
+    }
+    options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+
+    Scene scene = openScene(a.scene);
+    gl::HeadlessContext context;
+    GpuScene gpu(std::move(scene));
+    BenchReport report = runBench(gpu, options);
+    // Everything is computed before anything is written: no half-written outputs on failure.
+    std::string json = benchToJson(report).dump(2) + "\n";
+    if (!a.json.empty()) writeTextFile(a.json, json);
+    if (!a.csv.empty()) writeTextFile(a.csv, benchToCsv(report));
+    std::cout << benchToTable(report);
+}
+
+}  // namespace
+
+void registerBenchCommand(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    auto* cmd = app.add_subcommand("bench", "time and measure techniques against the exact reference");
+    cmd->add_option("scene", args->scene, "builtin:NAME[:ARG], a .gltf/.glb, a .json description, or a scenes/ name")->required();
+    cmd->add_option("--modes", args->modes, "all, or technique ids separated by commas")->capture_default_str();
+    cmd->add_option("--size", args->size, "WxH")->capture_default_str();
+    cmd->add_option("--frames", args->frames, "recorded frames per technique")->check(CLI::Range(1, 100000))->capture_default_str();
+    cmd->add_option("--warmup", args->warmup, "unrecorded frames per technique")->check(CLI::Range(0, 1000))->capture_default_str();
+    cmd->add_option("--camera-path", args->cameraPath, "camera path: frames are spread evenly over its duration");
+    cmd->add_option("--json", args->json, "write the JSON report here");
+    cmd->add_option("--csv", args->csv, "write one CSV row per technique here");
+    cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
+    cmd->add_option("--set", args->parameters, "technique parameter [id.]name=value (repeatable)");
+    cmd->callback([args] { run(*args); });
+}
+
+}  // namespace strata

@@ -1,0 +1,32 @@
+// `strata modes`: the technique registry as a table.
+#include "commands.hpp"
+
+#include "oit/technique.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace strata {
+
+glm::ivec2 parseSize(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
+        w > 16384 || h > 16384)
+        throw std::invalid_argument("size '" + text + "' is not WxH with 1 <= W, H <= 16384");
+    return {w, h};
+}
+
+void registerModesCommand(CLI::App& app) {
+    auto* cmd = app.add_subcommand("modes", "list the transparency techniques: id, family, robust?, coplanarity?, passes, memory");
+    cmd->callback([] {
+        std::printf("%-16s %-11s %-7s %-10s %-34s %s\n", "id", "family", "robust", "coplanar", "passes", "memory");
+        for (const auto& e : techniqueRegistry()) {
+            const auto& i = e.info;
+            std::printf("%-16s %-11s %-7s %-10s %-34s %s\n", i.id.c_str(), i.family.c_str(), i.robust ? "yes" : "no",
+                        i.handlesCoplanarity ? "yes" : "no", i.passes.c_str(), i.memoryModel.c_str());
+        }
+    });
+}
+
+}  // namespace strata

@@ -1,0 +1,39 @@
+// `strata view`: the interactive viewer.
+#include "commands.hpp"
+
+#include "view_app.hpp"
+
+namespace strata {
+
+void registerViewCommand(CLI::App& app) {
+    auto options = std::make_shared<ViewOptions>();
+    auto size = std::make_shared<std::string>("1280x800");
+    auto play = std::make_shared<std::string>();
+    auto record = std::make_shared<std::string>();
+    auto trace = std::make_shared<std::string>();
+    auto screenshot = std::make_shared<std::string>();
+    auto* cmd = app.add_subcommand("view", "open the interactive viewer");
+    cmd->add_option("scene", options->scene, "scene to open")->capture_default_str();
+    cmd->add_option("--mode", options->mode, "technique id")->capture_default_str();
+    cmd->add_option("--set", options->parameters, "technique parameter name=value (repeatable)");
+    cmd->add_option("--path", *play, "play this camera path");
+    cmd->add_option("--record", *record, "record the camera to this path file (R toggles)");
+    cmd->add_flag("--immersive", options->immersive, "head-tracked mode driven by --trace");
+    cmd->add_option("--trace", *trace, "head-pose trace for --immersive");
+    cmd->add_option("--exit-after-frames", options->exitAfterFrames, "render N frames, then exit (smoke tests)");
+    cmd->add_option("--screenshot", *screenshot, "with --exit-after-frames: save the window here (.png)");
+    cmd->add_option("--size", *size, "window size WxH")->capture_default_str();
+    cmd->callback([=] {
+        glm::ivec2 s = parseSize(*size);
+        options->width = s.x;
+        options->height = s.y;
+        if (!play->empty()) options->playPath = *play;
+        if (!record->empty()) options->recordPath = *record;
+        if (!trace->empty()) options->trace = *trace;
+        if (!screenshot->empty()) options->screenshot = *screenshot;
+        int rc = runViewer(*options);
+        if (rc != 0) throw std::runtime_error("viewer exited with status " + std::to_string(rc));
+    });
+}
+
+}  // namespace strata

@@ -1,0 +1,31 @@
+#pragma once
+// `strata view`: the interactive window (GLFW + Dear ImGui) over the same frame pipeline the
+// headless commands use.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+struct ViewOptions {
+    std::string scene = "builtin:default";
+    std::string mode = "abuffer";
+    std::vector<std::string> parameters;                 // name=value for the technique
+    std::optional<std::filesystem::path> playPath;       // --path: play a camera path
+    std::optional<std::filesystem::path> recordPath;     // --record: record the camera to a path file
+    bool immersive = false;
+    std::optional<std::filesystem::path> trace;          // --trace (immersive)
+    // Smoke testing: exit after this many frames (0 = run until closed), saving a screenshot.
+    int exitAfterFrames = 0;
+    std::optional<std::filesystem::path> screenshot;
+    int width = 1280, height = 800;
+};
+
+// Runs until the window closes. Throws std::runtime_error when no window can be opened.
+int runViewer(const ViewOptions& options);
+
+// True when a display is reachable (DISPLAY or WAYLAND_DISPLAY set and GLFW initialises).
+bool displayAvailable();
+
+}  // namespace strata
