@@ -221,6 +221,20 @@ TEST_CASE("gltf: missing normals become flat normals; GLB container") {
     CHECK(m.normals[3] == glm::vec3(0, 1, 0));  // triangle (0, 3, 1) lies in y = 0
 }
 
+TEST_CASE("gltf: textures are never loaded, so a missing or broken image is not fatal") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    b.doc["images"] = {{{"uri", "does-not-exist.png"}}, {{"uri", "data:image/png;base64,AAAA"}}};
+    b.doc["textures"] = {{{"source", 0}}, {{"source", 1}}};
+    b.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"normalTexture", {{"index", 1}}}});
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}, {"material", 0}}}));
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("textures"), report);
+    CHECK(s.meshes.size() == 1);
+    CHECK(s.materials[1].baseColor == glm::vec3(1.0f));  // glTF's default factor
+    CHECK_FALSE(report.warnings.empty());                // tinygltf noted the missing file
+}
+
 TEST_CASE("gltf: sparse accessors are applied") {
     GltfBuilder b;
     int pos = b.positions(kQuadPositions);
@@ -335,6 +349,20 @@ TEST_CASE("gltf: bad inputs give one clear line naming the file") {
     CHECK(loadError(tempDir() / "deep.gltf").find("nested deeper than") != std::string::npos);
     writeFile(tempDir() / "short.glb", "glTF\x02");
     CHECK(loadError(tempDir() / "short.glb").find("short.glb: GLB: truncated header") != std::string::npos);
+}
+
+TEST_CASE("gltf: node hierarchies are bounded in depth (consumers recurse per level)") {
+    auto chain = [](int length) {
+        GltfBuilder b;
+        int pos = b.positions(kTrianglePositions);
+        b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}}}));
+        for (int i = 1; i < length; ++i) b.doc["nodes"].push_back({{"children", {i - 1}}});
+        return b.writeGlb("chain" + std::to_string(length));
+    };
+    Scene ok = loadGltf(chain(1001));  // depth 1000: the deepest accepted
+    CHECK(flatten(ok).size() == 1);
+    CHECK(ok.roots == std::vector<int>{1000});
+    CHECK(loadError(chain(5000)).find("node hierarchy deeper than 1000 levels") != std::string::npos);
 }
 
 TEST_CASE("gltf: truncated and corrupted GLB files never crash") {

@@ -45,6 +45,14 @@ std::string oneLine(const std::string& text) {
     return out;
 }
 
+// The message is printed on a terminal: control bytes from a corrupt file (nlohmann quotes
+// what it "last read") must not reach it.
+std::string printable(std::string text) {
+    for (char& c : text)
+        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
+    return text;
+}
+
 // Textures are never used, so every image is accepted and dropped; this keeps missing or
 // undecodable images from failing the load and means no image decoder is linked.
 bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
@@ -58,6 +66,10 @@ constexpr float kMaxTau = 1.0e4f;
 // An accessor without a bufferView is all zeros (plus sparse values); its count is not bounded
 // by any buffer, so cap it to keep a hostile file from asking for a huge allocation.
 constexpr std::size_t kMaxCountWithoutView = std::size_t(1) << 24;
+
+// Real scenes nest a few dozen levels; the scene graph's consumers (flatten) recurse per level,
+// so a hostile chain of a million nodes must stop here rather than overflow their stack.
+constexpr int kMaxNodeDepth = 1000;
 
 int componentSize(int componentType) {
     switch (componentType) {
@@ -515,6 +527,7 @@ struct Converter {
         }
         // 0 unknown, 1 on the current walk, 2 reaches a parentless node.
         std::vector<char> state(n, 0);
+        std::vector<int> depth(n, 0);
         std::vector<std::size_t> walk;
         for (std::size_t i = 0; i < n; ++i) {
             walk.clear();
@@ -527,7 +540,13 @@ struct Converter {
                 if (parent[k] < 0) break;
                 k = std::size_t(parent[k]);
             }
-            for (std::size_t w : walk) state[w] = 2;
+            // The walk ends at a root or at a node of known depth; fill depths back down it.
+            for (auto w = walk.rbegin(); w != walk.rend(); ++w) {
+                state[*w] = 2;
+                depth[*w] = parent[*w] < 0 ? 0 : depth[std::size_t(parent[*w])] + 1;
+                if (depth[*w] > kMaxNodeDepth)
+                    fail("node hierarchy deeper than " + str(kMaxNodeDepth) + " levels (node " + str(*w) + ")");
+            }
         }
         return parent;
     }
@@ -628,13 +647,13 @@ Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report) {
         }
         return std::move(conv.scene);
     } catch (const Bad& e) {
-        throw LoadError(file.string() + ": " + e.what());
+        throw LoadError(file.string() + ": " + printable(e.what()));
     } catch (const std::bad_alloc&) {
         throw LoadError(file.string() + ": out of memory");
     } catch (const LoadError&) {
         throw;
     } catch (const std::exception& e) {  // tinygltf's JSON parser may throw on malformed input
-        throw LoadError(file.string() + ": " + oneLine(e.what()));
+        throw LoadError(file.string() + ": " + printable(oneLine(e.what())));
     }
 }
 

@@ -257,7 +257,10 @@ Scene loadSceneDescription(const std::filesystem::path& jsonFile) {
         // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
         std::string what = e.what();
         auto close = what.find("] ");
-        throw LoadError(prefix + "JSON " + (close == std::string::npos ? what : what.substr(close + 2)));
+        what = close == std::string::npos ? what : what.substr(close + 2);
+        for (char& c : what)  // it quotes raw input; keep control bytes off the terminal
+            if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
+        throw LoadError(prefix + "JSON " + what);
     }
     try {
         return parse(doc, jsonFile);
