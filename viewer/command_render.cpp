@@ -69,6 +69,8 @@ void run(const RenderArgs& a) {
     std::printf("%s: %s %dx%d, %.3f ms GPU (%d passes), %llu of %llu fragments%s\n", a.out.c_str(), a.mode.c_str(),
                 size.x, size.y, result.gpuMs, s.passes, (unsigned long long)s.fragmentsCaptured,
                 (unsigned long long)result.fragmentsTotal.value_or(0), s.overflowed ? ", OVERFLOWED" : "");
+    for (const auto& p : result.passTimes)
+        std::printf("  %-18s %9.3f ms GPU %9.3f ms CPU\n", p.name.c_str(), p.gpuMs, p.cpuMs);
 }
 
 }  // namespace

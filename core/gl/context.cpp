@@ -91,7 +91,7 @@ void requireCoreFeatures() {
                                  std::to_string(epoxy_gl_version() / 10) + "." +
                                  std::to_string(epoxy_gl_version() % 10));
     GLint bits = 0;
-    glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+    glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
     if (bits == 0) throw std::runtime_error("timer queries are not supported by this context");
 }
 

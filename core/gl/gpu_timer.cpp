@@ -6,17 +6,20 @@ namespace strata::gl {
 
 void GpuTimer::begin(std::string pass) {
     assert(!open_ && "timer queries cannot nest");
-    std::size_t index = pending_.size();
-    if (index >= pool_.size()) pool_.push_back(createQuery(GL_TIME_ELAPSED));
-    glBeginQuery(GL_TIME_ELAPSED, pool_[index].id());
+    // A pair of GL_TIMESTAMP queries per pass rather than GL_TIME_ELAPSED: llvmpipe reports the
+    // first TIME_ELAPSED query on a new framebuffer as seconds of uptime; timestamps are exact
+    // on every driver and give the same difference.
+    std::size_t index = pending_.size() * 2;
+    while (pool_.size() < index + 2) pool_.push_back(createQuery(GL_TIMESTAMP));
+    glQueryCounter(pool_[index].id(), GL_TIMESTAMP);
     pending_.push_back({std::move(pass), index, std::chrono::steady_clock::now()});
     open_ = true;
 }
 
 void GpuTimer::end() {
     assert(open_);
-    glEndQuery(GL_TIME_ELAPSED);
     auto& p = pending_.back();
+    glQueryCounter(pool_[p.query + 1].id(), GL_TIMESTAMP);
     p.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.cpuStart).count();
     open_ = false;
 }
@@ -25,9 +28,10 @@ std::vector<PassTime> GpuTimer::resolve() {
     std::vector<PassTime> out;
     out.reserve(pending_.size());
     for (const auto& p : pending_) {
-        GLuint64 ns = 0;
-        glGetQueryObjectui64v(pool_[p.query].id(), GL_QUERY_RESULT, &ns);
-        out.push_back({p.name, double(ns) * 1e-6, p.cpuMs});
+        GLuint64 start = 0, end = 0;
+        glGetQueryObjectui64v(pool_[p.query].id(), GL_QUERY_RESULT, &start);
+        glGetQueryObjectui64v(pool_[p.query + 1].id(), GL_QUERY_RESULT, &end);
+        out.push_back({p.name, end > start ? double(end - start) * 1e-6 : 0.0, p.cpuMs});
     }
     pending_.clear();
     return out;

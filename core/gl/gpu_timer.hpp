@@ -1,6 +1,6 @@
 #pragma once
-// GPU time per pass from GL_TIME_ELAPSED queries, with the CPU wall time beside it.
-// Passes are sequential (timer queries cannot nest); results are read after the frame.
+// GPU time per pass from timer queries (a GL_TIMESTAMP pair per pass), with the CPU wall time
+// beside it. Passes are sequential, not nested; results are read after the frame.
 #include "gl/objects.hpp"
 
 #include <chrono>

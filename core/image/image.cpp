@@ -59,31 +59,41 @@ void writeImage(const fs::path& path, const Image& image) {
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext != ".png" && ext != ".exr")
         throw std::runtime_error(path.string() + ": unsupported image type (use .png or .exr)");
-    OIIO::ImageBuf buf = toImageBuf(image);
-    OIIO::ImageBuf out;
-    if (ext == ".png") {
-        // 8-bit PNG holds sRGB-encoded values; alpha stays linear.
-        OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-        out.reset(spec);
-        for (OIIO::ImageBuf::Iterator<float> it(out); !it.done(); ++it) {
-            float px[4];
-            buf.getpixel(it.x(), it.y(), px, 4);
-            for (int c = 0; c < 3; ++c) it[c] = linearToSrgb(px[c]);
-            it[3] = std::clamp(px[3], 0.0f, 1.0f);
+    if (path.has_parent_path() && !fs::is_directory(path.parent_path()))
+        throw std::runtime_error(path.string() + ": folder " + path.parent_path().string() + " does not exist");
+    if (image.width <= 0 || image.height <= 0) throw std::runtime_error(path.string() + ": empty image");
+
+    // Top row first for the file; PNG holds sRGB-encoded 8-bit colour, EXR linear half floats.
+    const std::size_t row = std::size_t(image.width) * 4;
+    std::vector<float> pixels(image.rgba.size());
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(&image.rgba[std::size_t(image.height - 1 - y) * row], row, &pixels[std::size_t(y) * row]);
+    bool png = ext == ".png";
+    std::vector<unsigned char> bytes;
+    if (png) {
+        bytes.resize(pixels.size());
+        for (std::size_t i = 0; i < pixels.size(); ++i) {
+            float v = (i % 4 == 3) ? std::clamp(pixels[i], 0.0f, 1.0f) : linearToSrgb(pixels[i]);
+            bytes[i] = static_cast<unsigned char>(std::lround(v * 255.0f));
         }
-        out.specmod().attribute("oiio:ColorSpace", "sRGB");
-    } else {
-        out.copy(buf, OIIO::TypeDesc::HALF);
     }
+
     fs::path tmp = path;
     tmp += ".partial" + ext;
-    if (path.has_parent_path() && !fs::exists(path.parent_path()))
-        throw std::runtime_error(path.string() + ": folder " + path.parent_path().string() + " does not exist");
-    if (!out.write(tmp.string())) {
+    auto fail = [&](const std::string& why) {
         std::error_code ec;
         fs::remove(tmp, ec);
-        throw std::runtime_error(path.string() + ": cannot write image: " + out.geterror());
-    }
+        throw std::runtime_error(path.string() + ": cannot write image: " + why);
+    };
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out) fail(OIIO::geterror());
+    OIIO::ImageSpec spec(image.width, image.height, 4, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
+    spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
+    if (!out->open(tmp.string(), spec)) fail(out->geterror());
+    bool ok = png ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data())
+                  : out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+    if (!ok) fail(out->geterror());
+    if (!out->close()) fail(out->geterror());
     fs::rename(tmp, path);
 }
 

@@ -22,9 +22,9 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.opaqueFramebuffer());
     {
         gl::ScopedPass pass(timer, "opaque");
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_.opaqueFramebuffer());
         glViewport(0, 0, size.x, size.y);
         glDisable(GL_SCISSOR_TEST);
         glDisable(GL_BLEND);
