@@ -134,6 +134,9 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.overflowed = mode.overflowed || r.stats.overflowed;
             mode.regrows += r.stats.regrows;
             mode.tiles = std::max(mode.tiles, r.stats.tiles);
+            mode.objectDraws += r.stats.objectDraws;
+            mode.objectDrawsSkipped += r.stats.objectDrawsSkipped;
+            mode.fragmentsTail += r.stats.fragmentsTail;
 
             Image image = renderer.readOutput();
             if (m == 0) referenceImages.push_back(image);

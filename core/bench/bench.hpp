@@ -46,6 +46,9 @@ struct BenchMode {
     bool overflowed = false;
     int regrows = 0;
     int tiles = 1;
+    std::uint64_t objectDraws = 0;           // summed over frames
+    std::uint64_t objectDrawsSkipped = 0;    // summed over frames
+    std::uint64_t fragmentsTail = 0;         // summed over frames
     double rmse = 0, psnr = 100, maxAbsError = 0;
     std::vector<std::pair<std::string, double>> passMsMedian;  // per pass name
 };

@@ -39,7 +39,8 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"passes", m.passes}, {"bytes", m.bytes},
             {"fragments_total", m.fragmentsTotal}, {"fragments_captured", m.fragmentsCaptured},
             {"robustness_ratio", finite(m.robustnessRatio)}, {"overflowed", m.overflowed},
-            {"regrows", m.regrows}, {"tiles", m.tiles},
+            {"regrows", m.regrows}, {"tiles", m.tiles}, {"object_draws", m.objectDraws},
+            {"object_draws_skipped", m.objectDrawsSkipped}, {"fragments_tail", m.fragmentsTail},
             {"rmse", finite(m.rmse)}, {"psnr", finite(m.psnr)}, {"max_abs_error", finite(m.maxAbsError)},
         });
     }

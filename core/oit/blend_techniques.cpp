@@ -1,9 +1,8 @@
 // The blending baselines: one geometry pass with fixed-function "over" blending, in submission
 // order (blend-unsorted) or with objects sorted back to front (blend-sorted). Both are exact only
 // when no two objects overlap out of order; neither resolves intersecting or coplanar surfaces.
-#include "oit/blend_techniques.hpp"
-
 #include "oit/draw_transparent.hpp"
+#include "oit/technique_families.hpp"
 
 namespace strata {
 namespace {
@@ -41,8 +40,6 @@ private:
     gl::Query samples_;
 };
 
-}  // namespace
-
 TechniqueEntry blendUnsortedEntry() {
     TechniqueInfo info{"blend-unsorted", "baseline", false, false, "1", "none",
                        "alpha blending in submission order (wrong wherever objects arrive front to back)"};
@@ -54,5 +51,9 @@ TechniqueEntry blendSortedEntry() {
                        "alpha blending with objects sorted back to front by bounds centre"};
     return {info, [info] { return std::make_unique<BlendTechnique>(info, true); }};
 }
+
+}  // namespace
+
+std::vector<TechniqueEntry> baselineEntries() { return {blendUnsortedEntry(), blendSortedEntry()}; }
 
 }  // namespace strata

@@ -37,6 +37,8 @@ struct TechniqueStats {
     int regrows = 0;                      // exact paths: times memory grew and the frame re-rendered
     int tiles = 1;                        // exact paths: screen tiles used
     std::uint64_t objectDraws = 0;        // draw calls issued for transparent objects
+    std::uint64_t objectDrawsSkipped = 0; // draws avoided (objects already peeled, culled by queries)
+    std::uint64_t fragmentsTail = 0;      // overflowed fragments blended approximately ("tail" option)
 };
 
 // An integer or real knob with its range, driving the panel, --set key=value and JSON alike.

@@ -1,6 +1,6 @@
 #include "oit/abuffer.hpp"
-#include "oit/blend_techniques.hpp"
 #include "oit/technique.hpp"
+#include "oit/technique_families.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -10,11 +10,16 @@ namespace strata {
 
 const std::vector<TechniqueEntry>& techniqueRegistry() {
     // Explicit list (not static self-registration, which a static library's linker drops).
-    static const std::vector<TechniqueEntry> registry = {
-        blendUnsortedEntry(),
-        blendSortedEntry(),
-        abufferEntry(),
-    };
+    // Each family adds one line here (see technique_families.hpp).
+    static const std::vector<TechniqueEntry> registry = [] {
+        std::vector<TechniqueEntry> all;
+        auto add = [&all](std::vector<TechniqueEntry> family) {
+            for (auto& e : family) all.push_back(std::move(e));
+        };
+        add(baselineEntries());
+        add({abufferEntry()});
+        return all;
+    }();
     return registry;
 }
 

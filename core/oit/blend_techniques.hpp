@@ -1,9 +1,0 @@
-#pragma once
-#include "oit/technique.hpp"
-
-namespace strata {
-
-TechniqueEntry blendUnsortedEntry();
-TechniqueEntry blendSortedEntry();
-
-}  // namespace strata
