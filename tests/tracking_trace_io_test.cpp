@@ -1,0 +1,109 @@
+// Trace files: animation-path round trip, the head-movement CSV layout, and malformed input
+// failing with `file:line: what`.
+#include "tracking/trace_io.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace strata::tracking;
+
+namespace {
+
+std::string tempPath(const std::string& name) {
+    return (std::filesystem::temp_directory_path() / ("strata_tracking_" + name)).string();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream f(path);
+    f << text;
+}
+
+// what() of the TraceError thrown while reading `text` stored as `name`.
+std::string errorOf(const std::string& name, const std::string& text) {
+    const std::string path = tempPath(name);
+    writeText(path, text);
+    try {
+        (void)readTrace(path);
+    } catch (const strata::TraceError& e) {
+        std::filesystem::remove(path);
+        return e.what();
+    }
+    std::filesystem::remove(path);
+    return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("animation path: comments, blank lines, renormalisation and round trip") {
+    std::istringstream in("# header\n\n0 1 2 3 0 0 0 1\n0.5 1 2 3.5 0 0.7071068 0 0.7071068  # trailing\n");
+    const Trace t = parseAnimationPath(in, "mem");
+    REQUIRE(t.size() == 2);
+    CHECK(t[1].t == doctest::Approx(0.5));
+    CHECK(t[1].p.z() == doctest::Approx(3.5));
+    CHECK(t[1].q.norm() == doctest::Approx(1.0).epsilon(1e-15));
+
+    const std::string path = tempPath("roundtrip.path");
+    writeAnimationPath(path, t, "two\nlines");
+    const Trace back = readAnimationPath(path);
+    std::filesystem::remove(path);
+    REQUIRE(back.size() == t.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        CHECK(back[i].t == doctest::Approx(t[i].t).epsilon(1e-9));
+        CHECK((back[i].p - t[i].p).norm() < 1e-6);
+        CHECK(angleBetween(back[i].q, t[i].q) < 1e-8);
+    }
+}
+
+TEST_CASE("animation path: malformed lines name file and line") {
+    const std::string ok = "0 0 0 0 0 0 0 1\n";
+    CHECK(errorOf("a.path", ok + "# c\n0.1 0 0 0 0 0 1\n") ==
+          tempPath("a.path") + ":3: expected 8 fields `time px py pz qx qy qz qw`, found 7");
+    CHECK(errorOf("b.path", ok + "0.1 0 zero 0 0 0 0 1\n").rfind(tempPath("b.path") + ":2: field 3 `zero`", 0) == 0);
+    CHECK(errorOf("c.path", ok + "0.1 0 0 0 0 0 0 0\n") == tempPath("c.path") + ":2: quaternion is zero");
+    CHECK(errorOf("d.path", ok + "0.1 0 0 0 0 0 0 2\n").rfind(tempPath("d.path") + ":2: quaternion is not unit", 0) == 0);
+    CHECK(errorOf("e.path", "1 0 0 0 0 0 0 1\n0.5 0 0 0 0 0 0 1\n").rfind(tempPath("e.path") + ":2: time", 0) == 0);
+    CHECK(errorOf("f.path", ok + "0.1 0 0 nan 0 0 0 1\n") == tempPath("f.path") + ":2: field 4 is not finite");
+    // One line, no newline inside: the message is printable as is.
+    CHECK(errorOf("g.path", "x\n").find('\n') == std::string::npos);
+    try {
+        (void)readTrace(tempPath("does-not-exist.path"));
+        FAIL("no error");
+    } catch (const strata::TraceError& e) {
+        CHECK(std::string(e.what()).find("does-not-exist.path:0: cannot open") != std::string::npos);
+    }
+}
+
+TEST_CASE("head-movement CSV: numeric and date-time timestamps, Unity frame converted") {
+    const std::string header =
+        "Timestamp,PlaybackTime,UnitQuaternion.x,UnitQuaternion.y,UnitQuaternion.z,UnitQuaternion.w,"
+        "HmdPosition.x,HmdPosition.y,HmdPosition.z\n";
+    {
+        std::istringstream in(header + "10.0,0.0,0,0,0,1,0.1,0.2,0.3\n10.25,0.25,0.1,0.2,0.3,0.927362,0,0,1\n");
+        const Trace t = parseHeadMovementCsv(in, "mem.csv");
+        REQUIRE(t.size() == 2);
+        CHECK(t[0].t == 0.0);
+        CHECK(t[1].t == doctest::Approx(0.25));
+        CHECK(t[0].p.z() == doctest::Approx(-0.3));  // mirrored Z
+        CHECK(t[1].q.x() == doctest::Approx(-0.1).epsilon(1e-5));
+        CHECK(t[1].q.z() == doctest::Approx(0.3).epsilon(1e-5));
+    }
+    {
+        // Midnight crossing: date-time differences go through days, not time of day.
+        std::istringstream in(header + "2016-12-31 23:59:59.900, 0, 0,0,0,1, 0,0,0\n"
+                                       "2017-01-01 00:00:00.150, 0, 0,0,0,1, 0,0,0\n");
+        const Trace t = parseHeadMovementCsv(in, "mem.csv");
+        REQUIRE(t.size() == 2);
+        CHECK(t[1].t == doctest::Approx(0.25).epsilon(1e-9));
+    }
+    double s = 0.0;
+    CHECK(parseDateTimeSeconds("1970-01-02T00:00:01.5", s));
+    CHECK(s == doctest::Approx(86401.5));
+    CHECK_FALSE(parseDateTimeSeconds("yesterday", s));
+    CHECK(errorOf("h.csv", "Timestamp,Foo\n1,2\n") == tempPath("h.csv") + ":1: header lacks column `UnitQuaternion.x`");
+    CHECK(errorOf("i.csv", header + "0,0,0,0,0,1,0,0,0\nnoon,0,0,0,0,1,0,0,0\n").rfind(tempPath("i.csv") + ":3: Timestamp", 0) == 0);
+    CHECK(errorOf("j.csv", header + "0,0,0,0,0,1,0,0\n").rfind(tempPath("j.csv") + ":2: expected 9", 0) == 0);
+}
