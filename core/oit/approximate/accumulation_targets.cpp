@@ -1,0 +1,52 @@
+#include "oit/approximate/accumulation_targets.hpp"
+
+#include "oit/approximate/approximate_bindings.hpp"
+#include "oit/draw_transparent.hpp"
+
+#include <stdexcept>
+
+namespace strata::approximate {
+
+void AccumulationTargets::beginAccumulation(const FrameContext& frame) {
+    if (frame.size != size_ || !fbo_) {
+        accum_ = gl::createTexture2D(GL_RGBA32F, frame.size.x, frame.size.y);
+        transmittance_ = gl::createTexture2D(transmittanceFormat_, frame.size.x, frame.size.y);
+        fbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
+        glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, transmittance_.id(), 0);
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
+        size_ = frame.size;
+    }
+    // The frame targets may have been reallocated since the last frame: attach every time.
+    glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("accumulation framebuffer incomplete");
+    const float zero[4] = {0, 0, 0, 0};
+    const float one[4] = {1, 1, 1, 1};
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 1, one);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    setTransparentDepthState(frame);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
+}
+
+void AccumulationTargets::endAccumulation() const {
+    glDisable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ZERO);
+    glBindTextureUnit(approximate_bindings::kAccum, accum_.id());
+    glBindTextureUnit(approximate_bindings::kTransmittance, transmittance_.id());
+}
+
+std::uint64_t AccumulationTargets::bytesPerPixel() const {
+    switch (transmittanceFormat_) {
+        case GL_R8: return 16 + 1;
+        case GL_R16F: return 16 + 2;
+        default: return 16 + 4;
+    }
+}
+
+}  // namespace strata::approximate

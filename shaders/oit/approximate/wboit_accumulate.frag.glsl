@@ -1,0 +1,40 @@
+#version 450 core
+// Weighted blended OIT (McGuire and Bavoil 2013), accumulation pass. Location 0 is blended
+// additively (ONE, ONE): (premultiplied colour, alpha) times the depth weight w(z, alpha).
+// Location 1 is blended with (ZERO, ONE_MINUS_SRC_COLOR): revealage *= (1 - alpha).
+#include "surface.glsl"
+
+layout(early_fragment_tests) in;
+layout(location = 0) out vec4 outAccum;
+layout(location = 1) out vec4 outRevealage;
+
+uniform float uNear;
+uniform float uFar;
+uniform int uWeightEquation;  // 7, 8, 9 (view depth) or 10 (window depth) of the paper
+
+// Eye distance from reversed-Z window depth: z_w = n (f - d) / (d (f - n))  =>  d = n f / (z_w (f - n) + n).
+float viewDepth(float windowDepth) {
+    return uNear * uFar / (windowDepth * (uFar - uNear) + uNear);
+}
+
+float depthWeight(float alpha) {
+    float z = viewDepth(gl_FragCoord.z);
+    float w;
+    if (uWeightEquation == 8)
+        w = 10.0 / (1e-5 + pow(z / 10.0, 3.0) + pow(z / 200.0, 6.0));
+    else if (uWeightEquation == 9)
+        w = 0.03 / (1e-5 + pow(z / 200.0, 4.0));
+    else if (uWeightEquation == 10)
+        // The paper's d(z) is conventional window depth (0 near, 1 far): 1 - d = reversed-Z depth.
+        return alpha * max(1e-2, 3e3 * pow(gl_FragCoord.z, 3.0));
+    else
+        w = 10.0 / (1e-5 + pow(z / 5.0, 2.0) + pow(z / 200.0, 6.0));
+    return alpha * clamp(w, 1e-2, 3e3);
+}
+
+void main() {
+    vec4 c = surfaceColor();
+    float w = depthWeight(c.a);
+    outAccum = vec4(c.rgb * c.a, c.a) * w;
+    outRevealage = vec4(c.a);
+}
