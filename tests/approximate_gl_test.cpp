@@ -169,3 +169,27 @@ TEST_CASE("floor adds every fragment: opaque + sum of alpha * colour, and counts
         }
     }
 }
+
+TEST_CASE("bench gives every time as a multiple of the floor's when the floor row is present") {
+    BenchReport with = benchLayers(3, 0.5f, {"abuffer", "wboit", "floor"}, {16, 16});
+    nlohmann::json j = benchToJson(with);
+    double floorMs = row(with, "floor").msMedian;
+    REQUIRE(floorMs > 0.0);
+    for (const auto& m : j["modes"]) {
+        std::string id = m["id"];
+        CAPTURE(id);
+        REQUIRE(m.contains("ms_over_floor"));
+        CHECK(m["ms_over_floor"].get<double>() == doctest::Approx(m["ms_median"].get<double>() / floorMs));
+        if (id == "floor") CHECK(m["ms_over_floor"].get<double>() == 1.0);
+    }
+    std::string csv = benchToCsv(with);
+    std::string header = csv.substr(0, csv.find('\n'));
+    CHECK(header.size() > 14);
+    CHECK(header.substr(header.size() - 14) == ",ms_over_floor");
+    CHECK(benchToTable(with).find("x floor") != std::string::npos);
+
+    BenchReport without = benchLayers(3, 0.5f, {"wboit"}, {16, 16});
+    nlohmann::json k = benchToJson(without);
+    CHECK_FALSE(k["modes"][0].contains("ms_over_floor"));
+    CHECK(benchToCsv(without).find("ms_over_floor") == std::string::npos);
+}

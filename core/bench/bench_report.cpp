@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace strata {
@@ -25,10 +26,19 @@ std::string humanBytes(std::uint64_t bytes) {
     return std::to_string(bytes) + " B";
 }
 
+// The floor row's median time, when the run measured one (it is in the registry, so
+// `--modes all` includes it): every technique's time is also given as a multiple of it.
+std::optional<double> floorMs(const BenchReport& r) {
+    for (const auto& m : r.modes)
+        if (m.id == "floor" && m.msMedian > 0.0) return m.msMedian;
+    return std::nullopt;
+}
+
 }  // namespace
 
 nlohmann::json benchToJson(const BenchReport& r) {
     nlohmann::json modes = nlohmann::json::array();
+    const std::optional<double> floorTime = floorMs(r);
     for (const auto& m : r.modes) {
         nlohmann::json passes = nlohmann::json::object();
         for (const auto& [name, ms] : m.passMsMedian) passes[name] = finite(ms);
@@ -43,6 +53,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"object_draws_skipped", m.objectDrawsSkipped}, {"fragments_tail", m.fragmentsTail},
             {"rmse", finite(m.rmse)}, {"psnr", finite(m.psnr)}, {"max_abs_error", finite(m.maxAbsError)},
         });
+        if (floorTime) modes.back()["ms_over_floor"] = finite(m.msMedian / *floorTime);
     }
     return {
         {"scene", r.scene},
@@ -64,15 +75,17 @@ std::string benchToTable(const BenchReport& r) {
     out << "device " << r.device.renderer << " (" << r.device.vendor << ", " << r.device.version << ")\n";
     out << "coplanarity probability " << fmt("%.3f", r.coplanarityProbability) << "  reference " << r.reference
         << "\n\n";
+    const std::optional<double> floorTime = floorMs(r);
     char line[256];
-    std::snprintf(line, sizeof line, "%-16s %9s %9s %9s %6s %11s %12s %7s %9s %8s %9s\n", "mode", "gpu ms", "p95 ms",
-                  "cpu ms", "passes", "memory", "fragments", "ratio", "rmse", "psnr", "max err");
+    std::snprintf(line, sizeof line, "%-16s %9s %9s %9s %6s %11s %12s %7s %9s %8s %9s%s\n", "mode", "gpu ms", "p95 ms",
+                  "cpu ms", "passes", "memory", "fragments", "ratio", "rmse", "psnr", "max err", floorTime ? "   x floor" : "");
     out << line;
     for (const auto& m : r.modes) {
-        std::snprintf(line, sizeof line, "%-16s %9.3f %9.3f %9.2f %6d %11s %12llu %7.4f %9.2e %8.2f %9.2e%s\n",
+        std::string overFloor = floorTime ? fmt(" %9.2f", m.msMedian / *floorTime) : "";
+        std::snprintf(line, sizeof line, "%-16s %9.3f %9.3f %9.2f %6d %11s %12llu %7.4f %9.2e %8.2f %9.2e%s%s\n",
                       m.id.c_str(), m.msMedian, m.msP95, m.cpuMsMedian, m.passes, humanBytes(m.bytes).c_str(),
                       (unsigned long long)m.fragmentsCaptured, m.robustnessRatio, m.rmse, m.psnr, m.maxAbsError,
-                      m.overflowed ? "  OVERFLOW" : (m.regrows ? "  (grew)" : ""));
+                      overFloor.c_str(), m.overflowed ? "  OVERFLOW" : (m.regrows ? "  (grew)" : ""));
         out << line;
     }
     return out.str();
@@ -81,13 +94,18 @@ std::string benchToTable(const BenchReport& r) {
 std::string benchToCsv(const BenchReport& r) {
     std::ostringstream out;
     out << "scene,width,height,frames,mode,family,robust,handles_coplanarity,ms_median,ms_p95,cpu_ms_median,"
-           "passes,bytes,fragments_total,fragments_captured,robustness_ratio,overflowed,rmse,psnr,max_abs_error\n";
+           "passes,bytes,fragments_total,fragments_captured,robustness_ratio,overflowed,rmse,psnr,max_abs_error";
+    // Appended last, so the columns before it keep their positions with or without a floor row.
+    const std::optional<double> floorTime = floorMs(r);
+    out << (floorTime ? ",ms_over_floor\n" : "\n");
     for (const auto& m : r.modes) {
         out << r.scene << ',' << r.size.x << ',' << r.size.y << ',' << r.frames << ',' << m.id << ',' << m.family
             << ',' << m.robust << ',' << m.handlesCoplanarity << ',' << finite(m.msMedian) << ',' << finite(m.msP95)
             << ',' << finite(m.cpuMsMedian) << ',' << m.passes << ',' << m.bytes << ',' << m.fragmentsTotal << ','
             << m.fragmentsCaptured << ',' << finite(m.robustnessRatio) << ',' << m.overflowed << ','
-            << finite(m.rmse) << ',' << finite(m.psnr) << ',' << finite(m.maxAbsError) << '\n';
+            << finite(m.rmse) << ',' << finite(m.psnr) << ',' << finite(m.maxAbsError);
+        if (floorTime) out << ',' << finite(m.msMedian / *floorTime);
+        out << '\n';
     }
     return out.str();
 }
