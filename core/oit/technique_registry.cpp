@@ -18,6 +18,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
         };
         add(baselineEntries());
         add({abufferEntry()});
+        add(bufferEntries());
         add(approximateEntries());
         return all;
     }();

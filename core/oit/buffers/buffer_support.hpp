@@ -1,0 +1,72 @@
+#pragma once
+// What the buffer family (fab, kbuffer, ll, sbuffer) shares: its binding points, the atomic
+// counters each store pass reports through, and the optional "tail" targets that blend
+// overflowed fragments approximately instead of dropping them.
+#include "gl/objects.hpp"
+#include "oit/technique.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace strata::buffers {
+
+// Mirrors shaders/oit/buffers/buffer_bindings.glsl.
+constexpr unsigned kBindEntries = 2;       // SSBO
+constexpr unsigned kBindPixelOffsets = 3;  // SSBO
+constexpr unsigned kBindDepthKeys = 4;     // SSBO
+constexpr unsigned kBindPixelCounts = 1;   // image unit
+constexpr unsigned kBindTailAccum = 2;     // texture unit
+constexpr unsigned kBindTailReveal = 3;    // texture unit
+
+constexpr std::uint64_t kEntryBytes = 20;  // shaders/oit/buffers/entry.glsl
+constexpr std::uint64_t kNodeBytes = 24;   // shaders/oit/abuffer_node.glsl
+constexpr std::uint64_t kCounterBytes = 16;
+
+// Four atomic counters (uint) a store pass increments; meaning per technique.
+class Counters {
+public:
+    void reset();                    // creates on first use, zeroes
+    void bind() const;               // GL_ATOMIC_COUNTER_BUFFER at bindings::kCounters
+    std::array<std::uint32_t, 4> read() const;  // after the pass and a barrier
+
+private:
+    gl::Buffer buffer_;
+};
+
+// Accumulation targets of the tail: RGBA32F sum(a*c, a) and R32F prod(1-a), sharing the opaque
+// depth so the store pass depth-tests as usual. 20 bytes per pixel.
+class TailTargets {
+public:
+    static constexpr std::uint64_t kBytesPerPixel = 20;
+    // Binds a framebuffer for a store pass: the tail targets (cleared on `clear`) when `enabled`,
+    // else the output framebuffer with colour writes masked. Sets blending for the tail.
+    void bindForStore(const FrameContext& frame, bool enabled, bool clear);
+    // Restores colour writes and blending after the store pass.
+    static void endStore();
+    // Binds the tail textures for the resolve (also when disabled: the shader skips them).
+    void bindForResolve(const FrameContext& frame, bool enabled);
+    std::uint64_t bytes(bool enabled, glm::ivec2 size) const {
+        return enabled ? kBytesPerPixel * std::uint64_t(size.x) * size.y : 0;
+    }
+
+private:
+    void ensure(const FrameContext& frame);
+    gl::Texture accum_, reveal_;
+    gl::Framebuffer fbo_;
+    glm::ivec2 size_{0, 0};
+    GLuint depth_ = 0;
+};
+
+// The knobs every bounded buffer offers.
+inline Parameter capacityParameter(double* value, double max, const char* help) {
+    return {"capacity", help, value, 1, max, true};
+}
+inline Parameter tailParameter(double* value) {
+    return {"tail", "1: blend what overflows approximately (one weighted-average layer behind the kept ones); 0: drop it",
+            value, 0, 1, true};
+}
+
+// Barrier after a store pass that wrote images, buffers and counters.
+void storeBarrier();
+
+}  // namespace strata::buffers

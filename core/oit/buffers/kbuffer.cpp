@@ -1,0 +1,112 @@
+// K-buffer: the K nearest fragments per pixel in bounded memory. Without fragment-shader
+// interlock (llvmpipe has none) the read-modify-write of the K-buffer is done with 32-bit
+// atomics instead of a lock: a depth-key insertion pass (a chain of atomicMax, lock-free, cannot
+// hang), then an attribute pass in which each kept fragment claims its slot by atomicCompSwap;
+// see shaders/oit/buffers/kbuffer_store.frag.glsl. Then the shared sort-and-composite resolve.
+#include "oit/buffers/buffer_entries.hpp"
+#include "oit/buffers/buffer_support.hpp"
+
+#include "gl/shader_program.hpp"
+#include "oit/draw_transparent.hpp"
+#include "render/bindings.hpp"
+
+namespace strata {
+namespace {
+
+using namespace buffers;
+
+class KBuffer final : public Technique {
+public:
+    // Per entry: the 4-byte depth key and the 20-byte attributes.
+    static constexpr std::uint64_t kBytesPerSlot = 4 + kEntryBytes;
+
+    explicit KBuffer(TechniqueInfo info) : info_(std::move(info)) {}
+    const TechniqueInfo& info() const override { return info_; }
+
+    std::vector<Parameter> parameters() override {
+        // Bounded like the hardware k-buffer: each fragment walks the K slots in its insertion.
+        return {capacityParameter(&capacity_, 64, "slots per pixel (K): the K nearest fragments are kept"),
+                tailParameter(&tail_)};
+    }
+
+    void render(const FrameContext& frame) override {
+        if (!storeProgram_.program) {
+            storeProgram_ = buildSceneProgram("oit/buffers/kbuffer_store.frag.glsl");
+            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
+                                               {{"LAYOUT_KBUFFER", ""}});
+        }
+        const auto k = std::uint64_t(capacity_);
+        const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
+        const bool tail = tail_ != 0;
+        if (slots_ != pixels * k) {
+            gl::allocateBuffer(keys_, pixels * k * 4, GL_DYNAMIC_COPY, "kbuffer depth keys");
+            gl::allocateBuffer(entries_, pixels * k * kEntryBytes, GL_DYNAMIC_COPY, "kbuffer entries");
+            slots_ = pixels * k;
+        }
+        stats_ = {};
+        GLuint zero = 0, unclaimed = 0xFFFFFFFFu;
+        glClearNamedBufferData(keys_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glClearNamedBufferData(entries_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &unclaimed);
+        counters_.reset();
+        counters_.bind();
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindDepthKeys, keys_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
+        setUniforms(storeProgram_.id(), frame);
+        const GLint passLocation = glGetUniformLocation(storeProgram_.id(), "uPass");
+        for (int p = 0; p < 2; ++p) {
+            gl::ScopedPass pass(frame.timer, p == 0 ? "kbuffer depth keys" : "kbuffer attributes");
+            // The tail is written in the attribute pass only, where a fragment knows it was not kept.
+            tailTargets_.bindForStore(frame, tail && p == 1, true);
+            setTransparentDepthState(frame);
+            glProgramUniform1i(storeProgram_.id(), passLocation, p);
+            stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+            TailTargets::endStore();
+            storeBarrier();
+            ++stats_.passes;
+        }
+        {
+            gl::ScopedPass pass(frame.timer, "kbuffer resolve");
+            glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+            tailTargets_.bindForResolve(frame, tail);
+            setUniforms(resolveProgram_.id(), frame);
+            glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);
+            drawFullscreen(frame, resolveProgram_.id());
+            ++stats_.passes;
+        }
+        auto c = counters_.read();  // [0] inserted, [1] pushed past the K-th slot
+        stats_.fragmentsCaptured = c[0] - c[1];
+        stats_.overflowed = c[1] > 0;
+        (tail ? stats_.fragmentsTail : stats_.fragmentsDropped) = c[1];
+        stats_.bytes = pixels * k * kBytesPerSlot + kCounterBytes + tailTargets_.bytes(tail, frame.size);
+    }
+
+private:
+    void setUniforms(GLuint program, const FrameContext& frame) const {
+        glProgramUniform1ui(program, glGetUniformLocation(program, "uWidth"), GLuint(frame.size.x));
+        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity_));
+    }
+
+    TechniqueInfo info_;
+    SceneProgram storeProgram_;
+    gl::Program resolveProgram_;
+    gl::Buffer keys_, entries_;
+    std::uint64_t slots_ = 0;
+    Counters counters_;
+    TailTargets tailTargets_;
+    double capacity_ = 8;
+    double tail_ = 0;
+};
+
+}  // namespace
+
+TechniqueEntry kbufferEntry() {
+    TechniqueInfo info{"kbuffer", "buffer", false, true, "3 (depth keys, attributes, resolve)",
+                       "w*h*K*(4+20) + 16 (+ w*h*20 with tail=1)",
+                       "k-buffer of the K nearest fragments per pixel, no interlock: lock-free 32-bit atomicMax "
+                       "insertion of depth keys, then slots claimed by atomicCompSwap; what does not fit is dropped "
+                       "(or blended approximately with tail=1); K bounded (max 64), so not robust"};
+    return {info, [info] { return std::make_unique<KBuffer>(info); }};
+}
+
+}  // namespace strata

@@ -1,0 +1,30 @@
+#version 450 core
+// FAB store pass (FreePipe-style fixed-size arrays): each pixel owns K consecutive entries and a
+// per-pixel counter; a fragment takes slot imageAtomicAdd(counter) if it is below K. The counter
+// keeps running past K, so the resolve knows how many overflowed (counter - K). FAB keeps the
+// FIRST K fragments to arrive, not the nearest; what overflows is dropped or goes to the tail.
+#include "surface.glsl"
+#include "entry.glsl"
+#include "tail_store.glsl"
+
+layout(early_fragment_tests) in;
+layout(binding = BIND_PIXEL_COUNTS, r32ui) uniform coherent uimage2D uCounts;
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uStored;
+layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uOverflowed;
+uniform uint uWidth;
+uniform uint uCapacity;
+
+void main() {
+    vec4 c = surfaceColor();
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    uint slot = imageAtomicAdd(uCounts, pixel, 1u);
+    if (slot < uCapacity) {
+        uint index = (uint(pixel.y) * uWidth + uint(pixel.x)) * uCapacity + slot;
+        entries[index] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c);
+        atomicCounterIncrement(uStored);
+        tailNone();
+    } else {
+        atomicCounterIncrement(uOverflowed);
+        tailAdd(c);
+    }
+}

@@ -1,0 +1,27 @@
+#version 450 core
+// Per-pixel linked lists with a FIXED node pool (Yang et al.; the A-buffer's node layout): one
+// global atomic counter hands out nodes, the heads image links them. Unlike abuffer the pool
+// does not grow: fragments past its end are counted (the counter keeps running) and dropped or,
+// with the tail on, blended approximately.
+#include "surface.glsl"
+#include "oit/abuffer_node.glsl"
+#include "buffer_bindings.glsl"
+#include "tail_store.glsl"
+
+layout(early_fragment_tests) in;
+layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
+uniform uint uCapacity;  // nodes in the pool
+
+void main() {
+    vec4 c = surfaceColor();
+    uint index = atomicCounterIncrement(uNodeCount);
+    if (index >= uCapacity) { tailAdd(c); return; }
+    nodes[index].depth = gl_FragCoord.z;
+    nodes[index].objectId = uObjectId;
+    nodes[index].primitiveId = uint(gl_PrimitiveID);
+    nodes[index].colorRG = packHalf2x16(c.rg);
+    nodes[index].colorBA = packHalf2x16(c.ba);
+    nodes[index].next = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
+    tailNone();
+}

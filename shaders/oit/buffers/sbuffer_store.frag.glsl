@@ -1,0 +1,30 @@
+#version 450 core
+// S-buffer (Vasilakis & Fudos 2012), both geometry passes of one program so they rasterize the
+// same fragments:
+//  pass 0 counts each pixel's fragments (atomicAdd on a per-pixel counter);
+//  a compute prefix sum turns the counts, in place, into each pixel's region start;
+//  pass 1 stores each fragment at atomicAdd(offset[pixel], 1): the offset walks through the
+//  pixel's contiguous region, ending at the next region's start, which the resolve reads back.
+// The entries array is sized exactly to the counted total; uCapacity only guards a total larger
+// than the device's storage block (those fragments are counted, never written out of bounds).
+#include "surface.glsl"
+#include "entry.glsl"
+
+layout(early_fragment_tests) in;
+layout(std430, binding = BIND_PIXEL_OFFSETS) coherent buffer PixelOffsets { uint offsets[]; };
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uDropped;
+uniform uint uWidth;
+uniform uint uCapacity;
+uniform int uPass;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    uint index = uint(pixel.y) * uWidth + uint(pixel.x);
+    if (uPass == 0) {
+        atomicAdd(offsets[index], 1u);
+        return;
+    }
+    uint slot = atomicAdd(offsets[index], 1u);
+    if (slot >= uCapacity) { atomicCounterIncrement(uDropped); return; }
+    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), surfaceColor());
+}

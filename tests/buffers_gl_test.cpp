@@ -1,0 +1,235 @@
+// The buffer family (kbuffer, fab, ll, sbuffer) against the exact reference and closed forms:
+// equal to abuffer when the capacity suffices, exactly K per pixel and the K nearest layers
+// when it does not, the tail option, coplanar copies, the memory formulas and the S-buffer's
+// prefix sum on awkward sizes.
+#include "gl_test_support.hpp"
+
+#include "oit/buffers/prefix_sum.hpp"
+#include "scene/builtin_scenes.hpp"
+
+#include <doctest/doctest.h>
+
+#include <numeric>
+#include <random>
+
+using namespace strata;
+
+namespace {
+
+constexpr float kTolerance = 1.0f / 255.0f;
+
+std::unique_ptr<Technique> make(const std::string& id, std::initializer_list<std::string> settings = {}) {
+    auto t = createTechnique(id);
+    for (const auto& s : settings) setParameter(*t, s);
+    return t;
+}
+
+std::string capacity(int k) { return "capacity=" + std::to_string(k); }
+
+struct Layers {
+    GpuScene scene;
+    Camera camera;
+    Layers(int n, float alpha) : scene((test::glContext(), makeLayersScene(n, alpha))) {
+        camera = defaultCamera(scene.scene(), scene.objects());
+    }
+};
+
+}  // namespace
+
+TEST_CASE("buffers with capacity >= N equal abuffer on N layers and capture every fragment") {
+    // fab, ll and sbuffer are also in the generic exact test (robust per Table 1); kbuffer is not
+    // robust (K is bounded), but with K >= N it must be exact too.
+    CHECK(findTechnique("fab")->info.robust);
+    CHECK(findTechnique("ll")->info.robust);
+    CHECK(findTechnique("sbuffer")->info.robust);
+    CHECK_FALSE(findTechnique("kbuffer")->info.robust);
+    for (int n : {1, 2, 7, 16, 33}) {
+        Layers f(n, 0.3f);
+        glm::ivec2 size(20, 12);
+        const std::uint64_t total = std::uint64_t(n) * size.x * size.y;
+        Image reference = test::renderWith(f.scene, f.camera, size, "abuffer").image;
+        for (std::string id : {"kbuffer", "fab", "ll", "sbuffer"}) {
+            CAPTURE(n);
+            CAPTURE(id);
+            auto t = id == "sbuffer" ? make(id) : make(id, {capacity(std::max(n, 1))});
+            auto r = test::renderWith(f.scene, f.camera, size, *t);
+            CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
+            REQUIRE(r.result.fragmentsTotal.has_value());
+            CHECK(*r.result.fragmentsTotal == total);
+            CHECK(r.result.stats.fragmentsCaptured == total);
+            CHECK(r.result.stats.fragmentsDropped == 0);
+            CHECK_FALSE(r.result.stats.overflowed);
+        }
+    }
+}
+
+TEST_CASE("kbuffer and fab with K < N keep exactly K per pixel: the K nearest layers") {
+    const int n = 7;
+    const float alpha = 0.4f;
+    glm::ivec2 size(16, 12);
+    const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+    Layers f(n, alpha);
+    for (int k : {1, 3, 6}) {
+        // The K nearest of N layers are the same objects (ids, materials, positions) as all the
+        // layers of makeLayersScene(K): its exact image is the expected one.
+        GpuScene nearest(makeLayersScene(k, alpha));
+        Image expected = test::renderWith(nearest, f.camera, size, "abuffer").image;
+        Image all = test::renderWith(f.scene, f.camera, size, "abuffer").image;
+        REQUIRE(compareImages(expected, all).maxAbsError > 0.01);  // dropping layers is visible
+        // builtin:layers submits the nearest layer first, so fab's first K to arrive are the K
+        // nearest; kbuffer keeps the K nearest whatever the order.
+        for (std::string id : {"kbuffer", "fab"}) {
+            CAPTURE(k);
+            CAPTURE(id);
+            auto r = test::renderWith(f.scene, f.camera, size, *make(id, {capacity(k)}));
+            REQUIRE(r.result.fragmentsTotal.has_value());
+            CHECK(*r.result.fragmentsTotal == n * pixels);
+            CHECK(r.result.stats.fragmentsCaptured == k * pixels);
+            CHECK(double(r.result.stats.fragmentsCaptured) / double(*r.result.fragmentsTotal) ==
+                  doctest::Approx(double(k) / n));
+            CHECK(r.result.stats.fragmentsDropped == (n - k) * pixels);
+            CHECK(r.result.stats.fragmentsTail == 0);
+            CHECK(r.result.stats.overflowed);
+            CHECK(compareImages(r.image, expected).maxAbsError <= kTolerance);
+        }
+        // Submitted farthest first: kbuffer still keeps the nearest; fab keeps the first to
+        // arrive, now the farthest K, so its image is not the K-nearest one.
+        FrameOptions reversed;
+        reversed.reverseSubmission = true;
+        auto kb = test::renderWith(f.scene, f.camera, size, *make("kbuffer", {capacity(k)}), reversed);
+        CHECK(compareImages(kb.image, expected).maxAbsError <= kTolerance);
+        auto fab = test::renderWith(f.scene, f.camera, size, *make("fab", {capacity(k)}), reversed);
+        CHECK(fab.result.stats.fragmentsCaptured == k * pixels);
+        CHECK(compareImages(fab.image, expected).maxAbsError > 0.01);
+    }
+}
+
+TEST_CASE("ll with a fixed pool smaller than the fragments counts the overflow and does not grow") {
+    Layers f(7, 0.4f);
+    glm::ivec2 size(16, 12);
+    const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+    auto r = test::renderWith(f.scene, f.camera, size, *make("ll", {capacity(3)}));
+    CHECK(r.result.stats.fragmentsCaptured == 3 * pixels);  // the pool: w*h*3 nodes
+    CHECK(r.result.stats.fragmentsDropped == 4 * pixels);
+    CHECK(r.result.stats.overflowed);
+    CHECK(r.result.stats.regrows == 0);
+    CHECK(r.result.stats.bytes == 3 * pixels * 24 + pixels * 4 + 16);
+}
+
+TEST_CASE("tail=1 blends what overflows: smaller error than dropping it, counted in fragmentsTail") {
+    const int n = 7;
+    Layers f(n, 0.4f);
+    glm::ivec2 size(16, 12);
+    const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+    Image exact = test::renderWith(f.scene, f.camera, size, "abuffer").image;
+    for (std::string id : {"kbuffer", "fab", "ll"}) {
+        for (int k : {3, 6}) {
+            CAPTURE(id);
+            CAPTURE(k);
+            auto dropped = test::renderWith(f.scene, f.camera, size, *make(id, {capacity(k), "tail=0"}));
+            auto tailed = test::renderWith(f.scene, f.camera, size, *make(id, {capacity(k), "tail=1"}));
+            double dropError = compareImages(dropped.image, exact).rmse;
+            double tailError = compareImages(tailed.image, exact).rmse;
+            CHECK(dropError > 0.002);  // one layer of 0.4 behind six: 0.6^6 of it shows
+            CHECK(tailError < dropError);
+            CHECK(tailed.result.stats.overflowed);
+            CHECK(tailed.result.stats.fragmentsTail == (n - k) * pixels);
+            CHECK(tailed.result.stats.fragmentsDropped == 0);
+            CHECK(tailed.result.stats.fragmentsCaptured == k * pixels);
+            if (id != "ll" && k == n - 1) {
+                // One overflowed fragment per pixel, and it is the farthest: the tail is exact.
+                CHECK(compareImages(tailed.image, exact).maxAbsError <= kTolerance);
+            }
+        }
+    }
+}
+
+TEST_CASE("coplanar copies: ll and a large enough kbuffer or fab capture all K in object order") {
+    test::glContext();
+    for (int k : {2, 3, 5}) {
+        GpuScene scene(makeCoplanarScene(k, 0.5f));
+        Camera camera = defaultCamera(scene.scene(), scene.objects());
+        glm::ivec2 size(8, 8);
+        Image reference = test::renderWith(scene, camera, size, "abuffer").image;
+        for (std::string id : {"ll", "kbuffer", "fab", "sbuffer"}) {
+            CAPTURE(k);
+            CAPTURE(id);
+            FrameOptions reversed;
+            reversed.reverseSubmission = true;
+            for (bool reverse : {false, true}) {
+                auto t = id == "sbuffer" ? make(id) : make(id, {capacity(k)});
+                auto r = test::renderWith(scene, camera, size, *t, reverse ? reversed : FrameOptions{});
+                CHECK(r.result.stats.fragmentsCaptured == std::uint64_t(k) * 64);
+                CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
+            }
+        }
+        if (k > 2) {
+            // Fewer kbuffer slots than coincident copies: exactly the slots are filled.
+            auto r = test::renderWith(scene, camera, size, *make("kbuffer", {capacity(2)}));
+            CHECK(r.result.stats.fragmentsCaptured == 2u * 64u);
+            CHECK(r.result.stats.fragmentsDropped == std::uint64_t(k - 2) * 64);
+        }
+    }
+}
+
+TEST_CASE("buffer techniques report bytes by their formulas") {
+    Layers f(7, 0.3f);
+    glm::ivec2 size(20, 12);
+    const std::uint64_t px = 20 * 12;
+    const std::uint64_t tailBytes = px * 20;  // RGBA32F + R32F
+    auto bytes = [&](const std::string& id, std::initializer_list<std::string> settings) {
+        return test::renderWith(f.scene, f.camera, size, *make(id, settings)).result.stats.bytes;
+    };
+    // fab: K entries of 20 B per pixel + a 4-byte counter per pixel + 16 B of stat counters.
+    CHECK(bytes("fab", {capacity(8)}) == px * 8 * 20 + px * 4 + 16);
+    CHECK(bytes("fab", {capacity(3), "tail=1"}) == px * 3 * 20 + px * 4 + 16 + tailBytes);
+    // kbuffer: K slots of a 4-byte depth key and 20 B of attributes.
+    CHECK(bytes("kbuffer", {capacity(8)}) == px * 8 * 24 + 16);
+    CHECK(bytes("kbuffer", {capacity(2), "tail=1"}) == px * 2 * 24 + 16 + tailBytes);
+    // ll: pool of w*h*capacity 24-byte nodes + heads + counter.
+    CHECK(bytes("ll", {capacity(8)}) == px * 8 * 24 + px * 4 + 16);
+    CHECK(bytes("ll", {capacity(4), "tail=1"}) == px * 4 * 24 + px * 4 + 16 + tailBytes);
+    // sbuffer: offsets + exactly one 20-byte entry per fragment + the scan's block totals.
+    CHECK(bytes("sbuffer", {}) == px * 4 + 7 * px * 20 + buffers::PrefixSum::scratchBytes(px) + 16);
+    CHECK(buffers::PrefixSum::scratchBytes(px) == 4);
+    CHECK(buffers::PrefixSum::scratchBytes(513) == 2 * 4 + 4);
+    CHECK(buffers::PrefixSum::scratchBytes(512 * 512 + 1) == 513 * 4 + 2 * 4 + 4);
+}
+
+TEST_CASE("the GPU prefix sum is exact for any count") {
+    test::glContext();
+    buffers::PrefixSum scan;
+    std::mt19937 rng(7);
+    for (std::uint64_t n : {1ull, 2ull, 221ull /*17x13*/, 511ull, 512ull, 513ull, 2100ull /*300x7*/, 1024ull,
+                            262145ull /*three levels*/}) {
+        CAPTURE(n);
+        std::vector<std::uint32_t> values(n);
+        for (auto& v : values) v = rng() % 40;
+        gl::Buffer buffer = gl::Buffer::create();
+        glNamedBufferData(buffer.id(), GLsizeiptr(n * 4), values.data(), GL_DYNAMIC_COPY);
+        std::uint32_t total = scan.scan(buffer.id(), n);
+        std::vector<std::uint32_t> gpu(n);
+        glGetNamedBufferSubData(buffer.id(), 0, GLsizeiptr(n * 4), gpu.data());
+        gl::checkGl("prefix sum");
+        std::vector<std::uint32_t> expected(n);
+        std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
+        CHECK(total == std::accumulate(values.begin(), values.end(), 0u));
+        CHECK(gpu == expected);
+    }
+}
+
+TEST_CASE("sbuffer is exact on awkward viewport sizes (1x1, 17x13, 300x7)") {
+    Layers f(5, 0.35f);
+    for (glm::ivec2 size : {glm::ivec2(1, 1), glm::ivec2(17, 13), glm::ivec2(300, 7)}) {
+        CAPTURE(size.x);
+        CAPTURE(size.y);
+        Image reference = test::renderWith(f.scene, f.camera, size, "abuffer").image;
+        auto r = test::renderWith(f.scene, f.camera, size, "sbuffer");
+        CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
+        // At 300x7 (43:1) the outer layers no longer cover the view: compare with the shared count.
+        REQUIRE(r.result.fragmentsTotal.has_value());
+        CHECK(*r.result.fragmentsTotal > 0);
+        CHECK(r.result.stats.fragmentsCaptured == *r.result.fragmentsTotal);
+        CHECK_FALSE(r.result.stats.overflowed);
+    }
+}
