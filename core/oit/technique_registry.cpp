@@ -17,6 +17,7 @@ const std::vector<TechniqueEntry>& techniqueRegistry() {
             for (auto& e : family) all.push_back(std::move(e));
         };
         add(baselineEntries());
+        add(peelingEntries());
         add({abufferEntry()});
         add(bufferEntries());
         add(approximateEntries());

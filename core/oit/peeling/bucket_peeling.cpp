@@ -1,0 +1,234 @@
+// `bun`: uniform bucket peeling (Liu, Huang, Liu and Wu 2009), approximate. Passes:
+//   1. range: each pixel's depth range, from the transparent objects' bounding boxes (default,
+//      "depth range from the bounds") or from the geometry (range_from_geometry=1), MAX-blended;
+//   2. capture: the range is split into B uniform buckets of eye distance and each bucket keeps
+//      its nearest and farthest depth by MAX blending across up to 8 RGBA32F targets (two
+//      buckets per target, so B <= 2 x GL_MAX_DRAW_BUFFERS);
+//   3. colour: the fragments whose depth matches a captured one store their colour in its slot;
+//   4. composite: buckets near to far over the opaque colour.
+// A bucket holding more than two fragments loses the ones between its extremes; coincident
+// fragments race for one slot. Both are counted: captured is what the composite used,
+// dropped = total (counted in pass 2) - captured.
+#include "oit/peeling/bucket_peeling.hpp"
+
+#include "oit/draw_transparent.hpp"
+#include "oit/peeling/peel_bindings.hpp"
+#include "render/bindings.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+namespace strata::peeling {
+namespace {
+
+constexpr int kMaxTargets = 8;
+
+class BucketPeeling final : public Technique {
+public:
+    explicit BucketPeeling(TechniqueInfo info) : info_(std::move(info)) {}
+    const TechniqueInfo& info() const override { return info_; }
+
+    std::vector<Parameter> parameters() override {
+        return {
+            {"buckets", "uniform depth buckets per pixel (two fragments each)", &buckets_, 1, 2 * kMaxTargets, true},
+            {"range_from_geometry", "0: depth range from the objects' bounding boxes; 1: from the geometry (one more "
+             "geometry pass's worth of work, tighter buckets)", &rangeFromGeometry_, 0, 1, true},
+        };
+    }
+
+    void render(const FrameContext& frame) override {
+        GLint maxDrawBuffers = 0;
+        glGetIntegerv(GL_MAX_DRAW_BUFFERS, &maxDrawBuffers);
+        int buckets = int(buckets_);
+        int targets = (buckets + 1) / 2;
+        if (targets > maxDrawBuffers)
+            throw std::runtime_error("bun: " + std::to_string(buckets) + " buckets need " + std::to_string(targets) +
+                                     " render targets, the device has " + std::to_string(maxDrawBuffers));
+        ensurePrograms();
+        ensureTargets(frame.size, buckets);
+        stats_ = {};
+        const GLuint zeros[2] = {0, 0};
+        glNamedBufferSubData(counters_.id(), 0, sizeof(zeros), zeros);
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counters_.id());
+        glBindTextureUnit(bindings::kOpaqueDepth, frame.targets.depth());
+        setBucketUniforms(frame, captureProgram_.id(), buckets);
+        setBucketUniforms(frame, colorProgram_.id(), buckets);
+
+        range(frame);
+        capture(frame);
+        color(frame);
+        composite(frame, buckets);
+
+        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        GLuint counts[2] = {0, 0};
+        glGetNamedBufferSubData(counters_.id(), 0, sizeof(counts), counts);
+        stats_.fragmentsCaptured = counts[1];
+        stats_.fragmentsDropped = counts[0] > counts[1] ? counts[0] - counts[1] : 0;
+        stats_.overflowed = stats_.fragmentsDropped > 0;
+        std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
+        // Range RG32F (8 B), ceil(B/2) RGBA32F bucket depths (16 B), 2B RGBA16F colours (8 B).
+        stats_.bytes = pixels * (8 + std::uint64_t(targets) * 16 + std::uint64_t(buckets) * 2 * 8) + sizeof(zeros);
+    }
+
+private:
+    void ensurePrograms() {
+        if (captureProgram_.program) return;
+        rangeGeometryProgram_ = buildSceneProgram("oit/peeling/bun_range.frag.glsl");
+        rangeBoxProgram_ = gl::buildProgram({"oit/peeling/bounds.vert.glsl", "oit/peeling/bun_range.frag.glsl"});
+        captureProgram_ = buildSceneProgram("oit/peeling/bun_capture.frag.glsl", {{"MAX_TARGETS", std::to_string(kMaxTargets)}});
+        colorProgram_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl");
+        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_composite.frag.glsl"});
+        counters_ = gl::Buffer::create();
+        glNamedBufferStorage(counters_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+        const std::array<float, 24> corners = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+        const std::array<GLuint, 36> indices = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6, 0, 4, 5, 0, 5, 1,
+                                                3, 2, 6, 3, 6, 7, 0, 3, 7, 0, 7, 4, 1, 5, 6, 1, 6, 2};
+        boxVao_ = gl::VertexArray::create();
+        boxVertices_ = gl::Buffer::create();
+        boxIndices_ = gl::Buffer::create();
+        glNamedBufferStorage(boxVertices_.id(), sizeof(corners), corners.data(), 0);
+        glNamedBufferStorage(boxIndices_.id(), sizeof(indices), indices.data(), 0);
+        glVertexArrayVertexBuffer(boxVao_.id(), 0, boxVertices_.id(), 0, 3 * sizeof(float));
+        glVertexArrayElementBuffer(boxVao_.id(), boxIndices_.id());
+        glEnableVertexArrayAttrib(boxVao_.id(), 0);
+        glVertexArrayAttribFormat(boxVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(boxVao_.id(), 0, 0);
+    }
+
+    void ensureTargets(glm::ivec2 size, int buckets) {
+        if (size == size_ && buckets == allocatedBuckets_) return;
+        size_ = size;
+        allocatedBuckets_ = buckets;
+        int targets = (buckets + 1) / 2;
+        range_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
+        auto array = [&](GLenum format, int layers) {
+            gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(t.id(), 1, format, size.x, size.y, layers);
+            glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            return t;
+        };
+        bucketDepths_ = array(GL_RGBA32F, targets);
+        colors_ = array(GL_RGBA16F, 2 * buckets);
+        rangeFbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(rangeFbo_.id(), GL_COLOR_ATTACHMENT0, range_.id(), 0);
+        captureFbo_ = gl::Framebuffer::create();
+        std::vector<GLenum> drawBuffers;
+        for (int i = 0; i < targets; ++i) {
+            glNamedFramebufferTextureLayer(captureFbo_.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), bucketDepths_.id(), 0, i);
+            drawBuffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+        }
+        glNamedFramebufferDrawBuffers(captureFbo_.id(), GLsizei(drawBuffers.size()), drawBuffers.data());
+    }
+
+    void setBucketUniforms(const FrameContext& frame, GLuint program, int buckets) {
+        glProgramUniform1i(program, glGetUniformLocation(program, "uBuckets"), buckets);
+        glProgramUniform1f(program, glGetUniformLocation(program, "uDepthA"), frame.projection[2][2]);
+        glProgramUniform1f(program, glGetUniformLocation(program, "uDepthB"), frame.projection[3][2]);
+    }
+
+    void range(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "bun range");
+        const float clearRange[4] = {-2, -2, 0, 0};
+        glClearTexImage(range_.id(), 0, GL_RGBA, GL_FLOAT, clearRange);
+        glBindFramebuffer(GL_FRAMEBUFFER, rangeFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_MAX);
+        if (rangeFromGeometry_ != 0) {
+            stats_.objectDraws += drawTransparent(frame, rangeGeometryProgram_, frame.transparentOrder);
+        } else {
+            // Boxes crossing the near plane (the eye inside) rasterize clamped at depth 1.
+            glEnable(GL_DEPTH_CLAMP);
+            GLuint p = rangeBoxProgram_.id();
+            glUseProgram(p);
+            glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "uViewProj"), 1, GL_FALSE,
+                                      glm::value_ptr(frame.viewProjection));
+            glBindVertexArray(boxVao_.id());
+            for (int o : frame.transparentOrder) {
+                const Bounds& b = frame.scene.objects()[o].worldBounds;
+                if (b.empty()) continue;
+                glProgramUniform3fv(p, glGetUniformLocation(p, "uBoxMin"), 1, glm::value_ptr(b.min));
+                glProgramUniform3fv(p, glGetUniformLocation(p, "uBoxMax"), 1, glm::value_ptr(b.max));
+                glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
+            }
+            glDisable(GL_DEPTH_CLAMP);
+        }
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+    }
+
+    void capture(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "bun capture");
+        const float neutral[4] = {-2, -2, -2, -2};
+        glClearTexImage(bucketDepths_.id(), 0, GL_RGBA, GL_FLOAT, neutral);
+        glNamedFramebufferTexture(captureFbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, captureFbo_.id());
+        setTransparentDepthState(frame);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_MAX);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        glBindTextureUnit(peel_bindings::kPrevious, range_.id());
+        stats_.objectDraws += drawTransparent(frame, captureProgram_, frame.transparentOrder);
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+    }
+
+    void color(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "bun colour");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        setTransparentDepthState(frame);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glBindTextureUnit(peel_bindings::kPrevious, range_.id());
+        glBindTextureUnit(peel_bindings::kLayer, bucketDepths_.id());
+        glBindImageTexture(peel_bindings::kBucketColors, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        stats_.objectDraws += drawTransparent(frame, colorProgram_, frame.transparentOrder);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        ++stats_.passes;
+    }
+
+    void composite(const FrameContext& frame, int buckets) {
+        gl::ScopedPass pass(frame.timer, "bun composite");
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        glDisable(GL_BLEND);
+        GLuint p = compositeProgram_.id();
+        glProgramUniform1i(p, glGetUniformLocation(p, "uBuckets"), buckets);
+        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        glBindTextureUnit(peel_bindings::kLayer, bucketDepths_.id());
+        glBindTextureUnit(peel_bindings::kAccum, colors_.id());
+        drawFullscreen(frame, p);
+        ++stats_.passes;
+    }
+
+    TechniqueInfo info_;
+    double buckets_ = 8;
+    double rangeFromGeometry_ = 0;
+    SceneProgram rangeGeometryProgram_, captureProgram_, colorProgram_;
+    gl::Program rangeBoxProgram_, compositeProgram_;
+    gl::Buffer counters_, boxVertices_, boxIndices_;
+    gl::VertexArray boxVao_;
+    glm::ivec2 size_{0, 0};
+    int allocatedBuckets_ = 0;
+    gl::Texture range_, bucketDepths_, colors_;
+    gl::Framebuffer rangeFbo_, captureFbo_;
+};
+
+}  // namespace
+
+TechniqueEntry bunEntry() {
+    TechniqueInfo info{"bun", "peeling", false, false, "4 (range + capture + colour + composite)",
+                       "w*h*(8 + 16*ceil(B/2) + 16*B) B: range, bucket depths, two RGBA16F colours per bucket",
+                       "uniform bucket peeling: B depth buckets keep their nearest and farthest fragment in one pass"};
+    return {info, [info] { return std::make_unique<BucketPeeling>(info); }};
+}
+
+}  // namespace strata::peeling

@@ -1,0 +1,203 @@
+// `dual`: dual depth peeling (Bavoil and Myers 2008), adapted to reversed-Z. An initialisation
+// pass finds each pixel's nearest and farthest depth (MAX blending of (z, -z) into RG32F, with
+// the hardware depth test only against the opaque depth); each peel pass then extracts the
+// front and the back layer at once and finds the next range from the fragments strictly
+// between them, and a full-screen pass blends the front layer under the front accumulation and
+// the back layer over the back accumulation. ceil(D/2) peel passes: the peel pass counts the
+// fragments strictly inside the range, and when there are none the next pass is not issued.
+// Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
+#include "oit/peeling/dual_peeling.hpp"
+
+#include "oit/draw_transparent.hpp"
+#include "oit/peeling/object_skipper.hpp"
+#include "oit/peeling/peel_bindings.hpp"
+#include "render/bindings.hpp"
+
+namespace strata::peeling {
+namespace {
+
+// Counter slots (shaders: offsets 0, 4, 8).
+constexpr int kTotal = 0, kInterior = 1, kCaptured = 2;
+
+class DualPeeling final : public Technique {
+public:
+    explicit DualPeeling(TechniqueInfo info) : info_(std::move(info)) {}
+    const TechniqueInfo& info() const override { return info_; }
+
+    std::vector<Parameter> parameters() override {
+        return {
+            {"max_passes", "most peel passes per frame (two layers each; hitting it counts as overflow)", &maxPasses_,
+             1, 1e6, true},
+            {"skip_peeled", "1: skip objects whose bounds lie wholly outside the range left to peel (section 3.3)",
+             &skipPeeled_, 0, 1, true},
+        };
+    }
+
+    void render(const FrameContext& frame) override {
+        ensurePrograms();
+        ensureTargets(frame.size);
+        stats_ = {};
+        skipper_.beginFrame(frame, skipPeeled_ != 0);
+        const GLuint zeros[3] = {0, 0, 0};
+        glNamedBufferSubData(counters_.id(), 0, sizeof(zeros), zeros);
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counters_.id());
+
+        std::uint64_t total = initialise(frame);
+        if (total > 0) {
+            const float clearAccum[4] = {0, 0, 0, 1};
+            glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+            glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+            for (int pass = 1;; ++pass) {
+                if (pass > int(maxPasses_)) {
+                    stats_.overflowed = true;
+                    break;
+                }
+                int cur = pass % 2;
+                std::uint64_t interior = peel(frame, cur);
+                blend(frame);
+                if (interior == 0) break;
+                skipper_.query(frame, minMax_[cur].id(),
+                               {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
+            }
+            composite(frame);
+            stats_.fragmentsCaptured = readCounter(kCaptured);
+        }
+        skipper_.endFrame(stats_);
+        stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
+        std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
+        // Two RG32F min-max targets (8 B), front and back layers RGBA32F (16 B each), front and
+        // back accumulations RGBA32F (16 B each).
+        stats_.bytes = pixels * (2 * 8 + 2 * 16 + 2 * 16) + sizeof(zeros);
+    }
+
+private:
+    void ensurePrograms() {
+        if (initProgram_.program) return;
+        initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
+        peelProgram_ = buildSceneProgram("oit/peeling/dual_peel.frag.glsl");
+        blendProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_blend.frag.glsl"});
+        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_composite.frag.glsl"});
+        counters_ = gl::Buffer::create();
+        glNamedBufferStorage(counters_.id(), 3 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+    }
+
+    void ensureTargets(glm::ivec2 size) {
+        if (size != size_) {
+            size_ = size;
+            for (auto& t : minMax_) t = gl::createTexture2D(GL_RG32F, size.x, size.y);
+            front_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+            back_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+            frontAccum_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+            backAccum_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+            blendFbo_ = gl::Framebuffer::create();
+            glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT0, frontAccum_.id(), 0);
+            glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT1, backAccum_.id(), 0);
+            const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            glNamedFramebufferDrawBuffers(blendFbo_.id(), 2, two);
+        }
+    }
+
+    // The peel framebuffer is re-attached on every use: it shares the frame's opaque depth,
+    // whose texture the frame targets replace when the size changes.
+    void bindPeelTargets(const FrameContext& frame, int cur, bool withLayers) {
+        if (!peelFbo_) peelFbo_ = gl::Framebuffer::create();
+        GLuint fbo = peelFbo_.id();
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, minMax_[cur].id(), 0);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, withLayers ? front_.id() : 0, 0);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, withLayers ? back_.id() : 0, 0);
+        glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+        const GLenum three[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+        glNamedFramebufferDrawBuffers(fbo, withLayers ? 3 : 1, three);
+        const float clearRange[4] = {-2, -2, 0, 0};
+        glClearTexImage(minMax_[cur].id(), 0, GL_RGBA, GL_FLOAT, clearRange);
+        if (withLayers) {
+            glClearTexImage(front_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+            glClearTexImage(back_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        setTransparentDepthState(frame);  // against the opaque depth, no writes
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_MAX);
+    }
+
+    std::uint64_t readCounter(int slot) {
+        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        GLuint value = 0;
+        glGetNamedBufferSubData(counters_.id(), GLintptr(slot * sizeof(GLuint)), sizeof(GLuint), &value);
+        return value;
+    }
+
+    std::uint64_t initialise(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "dual init");
+        bindPeelTargets(frame, 0, false);
+        skipper_.draw(frame, initProgram_, stats_);
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+        return readCounter(kTotal);
+    }
+
+    // Peels the front and back layers using minMax_[1 - cur]; the next range goes to
+    // minMax_[cur]. Returns the fragments strictly inside the range (left for later passes).
+    std::uint64_t peel(const FrameContext& frame, int cur) {
+        gl::ScopedPass pass(frame.timer, "dual peel");
+        GLuint zero = 0;
+        glNamedBufferSubData(counters_.id(), kInterior * sizeof(GLuint), sizeof(GLuint), &zero);
+        bindPeelTargets(frame, cur, true);
+        glBindTextureUnit(peel_bindings::kPrevious, minMax_[1 - cur].id());
+        skipper_.draw(frame, peelProgram_, stats_);
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+        return readCounter(kInterior);
+    }
+
+    void blend(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "dual blend");
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);           // under
+        glBlendFuncSeparatei(1, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
+        glBindTextureUnit(peel_bindings::kLayer, front_.id());
+        glBindTextureUnit(peel_bindings::kBack, back_.id());
+        drawFullscreen(frame, blendProgram_.id());
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+    }
+
+    void composite(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "dual composite");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        glDisable(GL_BLEND);
+        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        glBindTextureUnit(peel_bindings::kAccum, frontAccum_.id());
+        glBindTextureUnit(peel_bindings::kBackAccum, backAccum_.id());
+        drawFullscreen(frame, compositeProgram_.id());
+        ++stats_.passes;
+    }
+
+    TechniqueInfo info_;
+    double maxPasses_ = 1024;
+    double skipPeeled_ = 1;
+    SceneProgram initProgram_, peelProgram_;
+    gl::Program blendProgram_, compositeProgram_;
+    gl::Buffer counters_;
+    glm::ivec2 size_{0, 0};
+    gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
+    gl::Framebuffer peelFbo_, blendFbo_;
+    ObjectSkipper skipper_;
+};
+
+}  // namespace
+
+TechniqueEntry dualEntry() {
+    TechniqueInfo info{"dual", "peeling", true, false, "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many blends + composite)",
+                       "w*h*80 B: 2 RG32F min-max + 2 RGBA32F layers + 2 RGBA32F accumulations; Table 1: 6 words",
+                       "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
+    return {info, [info] { return std::make_unique<DualPeeling>(info); }};
+}
+
+}  // namespace strata::peeling

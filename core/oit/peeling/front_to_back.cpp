@@ -1,0 +1,226 @@
+// `f2b` and `f2b2`: front-to-back depth peeling (Everitt 2001), one layer per iteration.
+//   f2b:  peel pass (geometry: nearest fragment strictly behind the previous layer, colour into
+//         a layer target) + a full-screen pass blending that layer under the accumulation.
+//   f2b2: depth-only pre-pass (geometry) + shading pass (geometry, GL_EQUAL with early-z)
+//         blending straight under the accumulation.
+// Both end with one full-screen composite over the opaque colour.
+//
+// Stopping: the peel pass counts (atomic counter) every fragment still to be peeled, and the
+// layer pass counts (samples passed) the fragments it captured. When the two are equal nothing
+// lies behind this layer and no further pass is issued, so D layers cost exactly D peels; a
+// pass that finds nothing (only coincident leftovers, which a strict test never peels) stops
+// it too. max_passes bounds the loop; hitting it is reported as an overflow.
+#include "oit/peeling/front_to_back.hpp"
+
+#include "oit/draw_transparent.hpp"
+#include "oit/peeling/object_skipper.hpp"
+#include "oit/peeling/peel_bindings.hpp"
+#include "render/bindings.hpp"
+
+namespace strata::peeling {
+namespace {
+
+class FrontToBack final : public Technique {
+public:
+    FrontToBack(TechniqueInfo info, bool twoPass) : info_(std::move(info)), twoPass_(twoPass) {}
+    const TechniqueInfo& info() const override { return info_; }
+
+    std::vector<Parameter> parameters() override {
+        return {
+            {"max_passes", "most layers peeled per frame (a safety bound; hitting it counts as overflow)", &maxPasses_,
+             1, 1e6, true},
+            {"skip_peeled", "1: skip objects whose bounds lie wholly in front of the last peeled depth (section 3.3)",
+             &skipPeeled_, 0, 1, true},
+        };
+    }
+
+    void render(const FrameContext& frame) override {
+        ensurePrograms();
+        ensureTargets(frame.size);
+        stats_ = {};
+        skipper_.beginFrame(frame, skipPeeled_ != 0);
+        const float clearAccum[4] = {0, 0, 0, 1};
+        glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+
+        std::uint64_t firstRemaining = 0;
+        for (int layer = 0;; ++layer) {
+            if (layer >= int(maxPasses_)) {
+                stats_.overflowed = true;
+                break;
+            }
+            int cur = layer % 2;
+            std::uint64_t remaining = peel(frame, layer, cur);
+            if (layer == 0) firstRemaining = remaining;
+            if (remaining == 0) break;
+            std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
+            stats_.fragmentsCaptured += captured;
+            if (captured == remaining || captured == 0) break;
+            skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
+        }
+        if (stats_.fragmentsCaptured > 0) composite(frame);
+        skipper_.endFrame(stats_);
+        stats_.fragmentsDropped = firstRemaining - stats_.fragmentsCaptured;
+        // Dropped: coincident fragments a strict depth test never peels (not an overflow), and
+        // what max_passes left behind (an overflow).
+        std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
+        // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's RGBA16F layer (8 B), and the
+        // RGBA32F accumulation (16 B).
+        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + 16 : 2 * 4 + 8 + 16) + sizeof(GLuint);
+    }
+
+private:
+    void ensurePrograms() {
+        if (peelProgram_.program) return;
+        gl::Defines defines;
+        if (twoPass_) defines["DEPTH_ONLY"] = "";
+        peelProgram_ = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
+        firstLayerLocation_ = glGetUniformLocation(peelProgram_.id(), "uFirstLayer");
+        if (twoPass_)
+            shadeProgram_ = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl");
+        else
+            blendProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/f2b_layer_blend.frag.glsl"});
+        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"});
+        counter_ = gl::Buffer::create();
+        glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+    }
+
+    void ensureTargets(glm::ivec2 size) {
+        if (size == size_) return;
+        size_ = size;
+        accum_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+        if (!twoPass_) {
+            layerColor_ = gl::createTexture2D(GL_RGBA16F, size.x, size.y);
+            accumFbo_ = gl::Framebuffer::create();
+            glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
+        }
+        for (int i = 0; i < 2; ++i) {
+            depth_[i] = gl::createTexture2D(twoPass_ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F, size.x, size.y);
+            fbo_[i] = gl::Framebuffer::create();
+            // f2b peels into the layer target; f2b2's passes write the accumulation directly.
+            glNamedFramebufferTexture(fbo_[i].id(), GL_COLOR_ATTACHMENT0, twoPass_ ? accum_.id() : layerColor_.id(), 0);
+            glNamedFramebufferTexture(fbo_[i].id(), twoPass_ ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                      depth_[i].id(), 0);
+        }
+    }
+
+    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur]; returns how many
+    // fragments were still to be peeled.
+    std::uint64_t peel(const FrameContext& frame, int layer, int cur) {
+        gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 depth" : "f2b peel");
+        GLuint zero = 0;
+        glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur].id());
+        // Framebuffer clears obey the write masks, which the previous pass left off.
+        glDepthMask(GL_TRUE);
+        glStencilMask(0xFF);
+        if (twoPass_)
+            glClearNamedFramebufferfi(fbo_[cur].id(), GL_DEPTH_STENCIL, 0, 0.0f, 0);
+        else {
+            const float zeroDepth = 0.0f;
+            glClearNamedFramebufferfv(fbo_[cur].id(), GL_DEPTH, 0, &zeroDepth);
+        }
+        setTransparentDepthState(frame);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+        glDisable(GL_STENCIL_TEST);
+        if (twoPass_) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glBindTextureUnit(bindings::kOpaqueDepth, frame.targets.depth());
+        glBindTextureUnit(peel_bindings::kPrevious, depth_[1 - cur].id());
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+        glProgramUniform1i(peelProgram_.id(), firstLayerLocation_, layer == 0 ? 1 : 0);
+        skipper_.draw(frame, peelProgram_, stats_);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_FALSE);
+        ++stats_.passes;
+        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        GLuint remaining = 0;
+        glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &remaining);
+        return remaining;
+    }
+
+    static void underBlending() {
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+    }
+
+    std::uint64_t blendLayer(const FrameContext& frame, int cur) {
+        gl::ScopedPass pass(frame.timer, "f2b blend");
+        glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
+        underBlending();
+        glBindTextureUnit(peel_bindings::kPrevious, depth_[cur].id());
+        glBindTextureUnit(peel_bindings::kLayer, layerColor_.id());
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        drawFullscreen(frame, blendProgram_.id());
+        glEndQuery(GL_SAMPLES_PASSED);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+        GLuint64 captured = 0;
+        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &captured);
+        return captured;
+    }
+
+    std::uint64_t shade(const FrameContext& frame, int cur) {
+        gl::ScopedPass pass(frame.timer, "f2b2 shade");
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur].id());
+        setTransparentDepthState(frame);
+        glDepthFunc(GL_EQUAL);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_EQUAL, 0, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+        underBlending();
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        skipper_.draw(frame, shadeProgram_, stats_);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glDisable(GL_BLEND);
+        glDisable(GL_STENCIL_TEST);
+        ++stats_.passes;
+        GLuint64 captured = 0;
+        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &captured);
+        return captured;
+    }
+
+    void composite(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 composite" : "f2b composite");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        glDisable(GL_BLEND);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        glBindTextureUnit(peel_bindings::kAccum, accum_.id());
+        drawFullscreen(frame, compositeProgram_.id());
+        ++stats_.passes;
+    }
+
+    TechniqueInfo info_;
+    bool twoPass_;
+    double maxPasses_ = 1024;
+    double skipPeeled_ = 1;
+    SceneProgram peelProgram_, shadeProgram_;
+    gl::Program blendProgram_, compositeProgram_;
+    GLint firstLayerLocation_ = -1;
+    gl::Buffer counter_;
+    gl::Query samples_;
+    glm::ivec2 size_{0, 0};
+    gl::Texture accum_, layerColor_, depth_[2];
+    gl::Framebuffer accumFbo_, fbo_[2];
+    ObjectSkipper skipper_;
+};
+
+}  // namespace
+
+TechniqueEntry f2bEntry() {
+    TechniqueInfo info{"f2b", "peeling", true, false, "2D+1 (D peels + D layer blends + composite)",
+                       "w*h*32 B: 2 depth (4) + layer RGBA16F (8) + accumulation RGBA32F (16); Table 1: 3 words",
+                       "front-to-back depth peeling, one layer per pass, strict depth test; skips peeled objects"};
+    return {info, [info] { return std::make_unique<FrontToBack>(info, false); }};
+}
+
+TechniqueEntry f2b2Entry() {
+    TechniqueInfo info{"f2b2", "peeling", true, false, "2D+1 (D depth pre-passes + D EQUAL shading passes + composite)",
+                       "w*h*32 B: 2 depth-stencil (8) + accumulation RGBA32F (16)",
+                       "front-to-back peeling with a depth-only pre-pass and early-z GL_EQUAL shading per layer"};
+    return {info, [info] { return std::make_unique<FrontToBack>(info, true); }};
+}
+
+}  // namespace strata::peeling

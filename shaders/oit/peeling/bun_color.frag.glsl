@@ -1,0 +1,25 @@
+#version 450 core
+// Bucket colour pass: a fragment whose depth is its bucket's nearest (farthest) captured depth
+// stores its colour in the bucket's first (second) slot. Coincident fragments race for a slot.
+#include "surface.glsl"
+#include "bun_bucket.glsl"
+
+layout(early_fragment_tests) in;
+layout(binding = BIND_PEEL_LAYER) uniform sampler2DArray uBucketDepths;
+layout(binding = BIND_BUCKET_COLORS, rgba16f) uniform writeonly image2DArray uColors;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float z = gl_FragCoord.z;
+    int bucket = bucketOf(pixel, z);
+    vec4 pair = texelFetch(uBucketDepths, ivec3(pixel, bucket / 2), 0);
+    vec2 nearFar = (bucket % 2 == 0) ? pair.xy : pair.zw;
+    int slot;
+    if (z == nearFar.x)
+        slot = 2 * bucket;
+    else if (z == -nearFar.y)
+        slot = 2 * bucket + 1;
+    else
+        return;
+    imageStore(uColors, ivec3(pixel, slot), surfaceColor());
+}

@@ -1,0 +1,38 @@
+#version 450 core
+// Dual depth peeling pass (Bavoil and Myers 2008), reversed-Z. The previous pass left the
+// nearest (r) and minus the farthest (g) depth of what remains. A fragment outside that range
+// was peeled already; one strictly inside feeds the next range; one at the nearest depth is the
+// front layer, one at the farthest the back layer. When only one fragment is left the two
+// depths are equal and it goes to the front only, so it is counted once. All three targets use
+// MAX blending: -2 and 0 are neutral, and colours carry alpha + 1 so that presence is visible.
+#include "surface.glsl"
+#include "peel_bindings.glsl"
+
+layout(early_fragment_tests) in;
+layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;
+layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uInterior;
+
+layout(location = 0) out vec2 outMinMax;
+layout(location = 1) out vec4 outFront;
+layout(location = 2) out vec4 outBack;
+
+void main() {
+    vec2 range = texelFetch(uMinMax, ivec2(gl_FragCoord.xy), 0).rg;
+    float nearest = range.r;
+    float farthest = -range.g;
+    float z = gl_FragCoord.z;
+    if (z > nearest || z < farthest) discard;
+    outMinMax = vec2(-2.0);
+    outFront = vec4(0.0);
+    outBack = vec4(0.0);
+    if (z < nearest && z > farthest) {
+        atomicCounterIncrement(uInterior);
+        outMinMax = vec2(z, -z);
+        return;
+    }
+    vec4 c = surfaceColor();
+    if (z == nearest)
+        outFront = vec4(c.rgb, c.a + 1.0);
+    else
+        outBack = vec4(c.rgb, c.a + 1.0);
+}

@@ -1,0 +1,29 @@
+#version 450 core
+// Front-to-back peel pass: among the fragments strictly behind the previous layer (reversed-Z:
+// depth strictly less than the last peeled depth) and in front of the opaque depth, the regular
+// depth test (GL_GREATER against a per-pass buffer cleared to 0) keeps the nearest. Every
+// fragment still to be peeled bumps a counter, so the host knows when this layer was the last.
+// DEPTH_ONLY (f2b2's pre-pass): no colour output, the shading pass follows with GL_EQUAL.
+// No early_fragment_tests: the discards below must happen before the depth write.
+#include "surface.glsl"
+#include "peel_bindings.glsl"
+
+layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
+layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uPreviousDepth;
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uRemaining;
+uniform bool uFirstLayer;
+
+#ifndef DEPTH_ONLY
+layout(location = 0) out vec4 outColor;
+#endif
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float z = gl_FragCoord.z;
+    if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
+    if (!uFirstLayer && z >= texelFetch(uPreviousDepth, pixel, 0).r) discard;
+    atomicCounterIncrement(uRemaining);
+#ifndef DEPTH_ONLY
+    outColor = surfaceColor();
+#endif
+}

@@ -1,0 +1,209 @@
+// The peeling family (f2b, f2b2, dual, bun) against the exact reference, with the pass counts,
+// capture counts and object skipping they promise.
+#include "gl_test_support.hpp"
+
+#include "scene/builtin_scenes.hpp"
+#include "scene/mesh_builders.hpp"
+
+#include <doctest/doctest.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+using namespace strata;
+
+namespace {
+
+constexpr float kTolerance = 1.0f / 255.0f;
+
+struct Fixture {
+    std::unique_ptr<GpuScene> gpu;
+    Camera camera;
+    explicit Fixture(Scene s) {
+        test::glContext();
+        gpu = std::make_unique<GpuScene>(std::move(s));
+        camera = defaultCamera(gpu->scene(), gpu->objects());
+    }
+};
+
+std::unique_ptr<Technique> make(const std::string& id, std::initializer_list<std::string> settings = {}) {
+    auto t = createTechnique(id);
+    for (const auto& s : settings) setParameter(*t, s);
+    return t;
+}
+
+// Three full-view quads one behind another at distances 1, 2 and 3: separate objects whose
+// bounds are separable in depth.
+Scene threeQuadsScene() {
+    Scene s;
+    s.materials.push_back(Material{});
+    s.lightDirection = {0, 0, 1};
+    for (int i = 0; i < 3; ++i) {
+        float d = 1.0f + float(i);
+        Material m;
+        m.baseColor = paletteColor(i);
+        m.alpha = 0.4f;
+        m.alphaMode = AlphaMode::Blend;
+        int mat = s.addMaterial(m);
+        int mesh = s.addMesh(makeQuad(4.0f * d, 4.0f * d));
+        Node node;
+        node.local = glm::translate(glm::mat4(1.0f), {0, 0, -d});
+        node.meshes = {mesh};
+        node.materialOverride = mat;
+        s.addNode(node);
+    }
+    s.camera = CameraPose{};
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("f2b and f2b2 peel N layers in exactly N iterations, dual in ceil(N/2), all equal abuffer") {
+    for (int n : {1, 2, 7, 16, 33}) {
+        CAPTURE(n);
+        Fixture f(makeLayersScene(n, 0.3f));
+        glm::ivec2 size(20, 12);
+        const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+        Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
+        // f2b: n peel passes + n layer blends + 1 composite (the peel counts what is left, so no
+        // empty pass is needed to find the end). f2b2: n depth passes + n shading passes + 1.
+        // dual: 1 init + ceil(n/2) peels + as many blends + 1 composite.
+        const int half = (n + 1) / 2;
+        for (auto [id, passes] : {std::pair<std::string, int>{"f2b", 2 * n + 1}, {"f2b2", 2 * n + 1},
+                                  {"dual", 2 * half + 2}}) {
+            CAPTURE(id);
+            auto r = test::renderWith(*f.gpu, f.camera, size, id);
+            CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
+            CHECK(r.result.stats.passes == passes);
+            CHECK(r.result.stats.fragmentsCaptured == std::uint64_t(n) * pixels);
+            CHECK(r.result.stats.fragmentsDropped == 0);
+            CHECK_FALSE(r.result.stats.overflowed);
+        }
+    }
+}
+
+TEST_CASE("bytes follow the formulas: f2b and f2b2 32 B per pixel, dual 80 B per pixel") {
+    Fixture f(makeLayersScene(3, 0.5f));
+    glm::ivec2 size(24, 10);
+    const std::uint64_t pixels = 240;
+    CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b").result.stats.bytes == pixels * 32 + 4);
+    CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b2").result.stats.bytes == pixels * 32 + 4);
+    CHECK(test::renderWith(*f.gpu, f.camera, size, "dual").result.stats.bytes == pixels * 80 + 12);
+}
+
+TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {
+    for (int k : {2, 3, 5}) {
+        CAPTURE(k);
+        Fixture f(makeCoplanarScene(k, 0.5f));
+        glm::ivec2 size(8, 8);
+        for (const char* id : {"f2b", "f2b2", "dual"}) {
+            CAPTURE(id);
+            auto r = test::renderWith(*f.gpu, f.camera, size, id);
+            REQUIRE(r.result.fragmentsTotal.has_value());
+            CHECK(*r.result.fragmentsTotal == std::uint64_t(k) * 64);
+            CHECK(r.result.stats.fragmentsCaptured == 64);  // robustness ratio 1/K
+            CHECK(r.result.stats.fragmentsDropped == std::uint64_t(k - 1) * 64);
+            CHECK_FALSE(r.result.stats.overflowed);
+        }
+        // The strict test keeps the first fragment submitted at a depth: copy 0 in id order.
+        glm::vec3 expected = 0.5f * paletteColor(0) + 0.5f * f.gpu->scene().background;
+        for (const char* id : {"f2b", "f2b2"}) {
+            CAPTURE(id);
+            glm::vec4 p = test::renderWith(*f.gpu, f.camera, size, id).image.at(4, 4);
+            CHECK(std::abs(p.r - expected.r) <= kTolerance);
+            CHECK(std::abs(p.g - expected.g) <= kTolerance);
+            CHECK(std::abs(p.b - expected.b) <= kTolerance);
+        }
+        // f2b: one peel and blend, one peel that finds only the coincident leftovers, composite.
+        CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b").result.stats.passes == 4);
+    }
+}
+
+TEST_CASE("max_passes bounds peeling and reports the overflow") {
+    Fixture f(makeLayersScene(7, 0.3f));
+    glm::ivec2 size(10, 10);
+    auto f2b = test::renderWith(*f.gpu, f.camera, size, *make("f2b", {"max_passes=3"}));
+    CHECK(f2b.result.stats.overflowed);
+    CHECK(f2b.result.stats.fragmentsCaptured == 300);
+    CHECK(f2b.result.stats.fragmentsDropped == 400);
+    CHECK(f2b.result.stats.passes == 2 * 3 + 1);
+    auto dual = test::renderWith(*f.gpu, f.camera, size, *make("dual", {"max_passes=2"}));
+    CHECK(dual.result.stats.overflowed);
+    CHECK(dual.result.stats.fragmentsCaptured == 400);
+    CHECK(dual.result.stats.fragmentsDropped == 300);
+}
+
+TEST_CASE("three objects one behind another: peeled objects are skipped, the image is unchanged") {
+    Fixture f(threeQuadsScene());
+    glm::ivec2 size(16, 16);
+    Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
+    struct Expect {
+        std::string id;
+        std::uint64_t drawsWithout, drawsWith;
+    };
+    // f2b: 3 peels x 3 objects without skipping. With it, the boxes are queried after each
+    // peel; the nearest quad's box lies on the first layer, so it is found peeled after the
+    // second layer and the third peel skips it (8 draws). f2b2 draws twice per layer (16 of 18).
+    // dual: init + 2 peels; after the first peel only the middle quad is left (7 of 9).
+    for (const Expect& e : {Expect{"f2b", 9, 8}, Expect{"f2b2", 18, 16}, Expect{"dual", 9, 7}}) {
+        CAPTURE(e.id);
+        auto without = test::renderWith(*f.gpu, f.camera, size, *make(e.id, {"skip_peeled=0"}));
+        auto with = test::renderWith(*f.gpu, f.camera, size, *make(e.id, {"skip_peeled=1"}));
+        CHECK(without.result.stats.objectDraws == e.drawsWithout);
+        CHECK(without.result.stats.objectDrawsSkipped == 0);
+        CHECK(with.result.stats.objectDraws == e.drawsWith);
+        CHECK(with.result.stats.objectDrawsSkipped == e.drawsWithout - e.drawsWith);
+        CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
+        CHECK(compareImages(with.image, reference).maxAbsError <= kTolerance);
+        CHECK(with.result.stats.fragmentsCaptured == 3u * 256u);
+    }
+}
+
+TEST_CASE("skipping is conservative: skip on and off agree on intersecting and coplanar scenes") {
+    for (const char* spec : {"cubes:separated", "volumes", "cubes", "default"}) {
+        CAPTURE(spec);
+        Fixture f(makeBuiltinScene(spec));
+        glm::ivec2 size(40, 30);
+        for (const char* id : {"f2b", "f2b2", "dual"}) {
+            CAPTURE(id);
+            auto without = test::renderWith(*f.gpu, f.camera, size, *make(id, {"skip_peeled=0"}));
+            auto with = test::renderWith(*f.gpu, f.camera, size, *make(id, {"skip_peeled=1"}));
+            CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
+            CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
+            CHECK(with.result.stats.passes == without.result.stats.passes);
+        }
+    }
+}
+
+TEST_CASE("bun: exact while every bucket holds at most two fragments, loses the rest honestly") {
+    Fixture f(makeLayersScene(16, 0.3f));
+    glm::ivec2 size(20, 12);
+    const std::uint64_t pixels = 240;
+    Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
+    // 16 evenly spaced layers over the range, 16 uniform buckets: one layer per bucket.
+    auto exact = test::renderWith(*f.gpu, f.camera, size, *make("bun", {"buckets=16", "range_from_geometry=1"}));
+    CHECK(compareImages(exact.image, reference).maxAbsError <= kTolerance);
+    CHECK(exact.result.stats.fragmentsCaptured == 16 * pixels);
+    CHECK_FALSE(exact.result.stats.overflowed);
+    CHECK(exact.result.stats.passes == 4);
+    CHECK(exact.result.stats.bytes == pixels * (8 + 8 * 16 + 16 * 16) + 8);
+    // 4 buckets of 4 layers each keep their nearest and farthest: half the fragments.
+    auto lossy = test::renderWith(*f.gpu, f.camera, size, *make("bun", {"buckets=4", "range_from_geometry=1"}));
+    CHECK(lossy.result.stats.fragmentsCaptured == 8 * pixels);
+    CHECK(lossy.result.stats.fragmentsDropped == 8 * pixels);
+    CHECK(lossy.result.stats.overflowed);
+    CHECK(compareImages(lossy.image, reference).maxAbsError > 0.02);
+}
+
+TEST_CASE("bun with the depth range from the bounds: 8 layers in 4 buckets are two per bucket") {
+    Fixture f(makeLayersScene(8, 0.4f));
+    glm::ivec2 size(16, 16);
+    Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
+    auto r = test::renderWith(*f.gpu, f.camera, size, *make("bun", {"buckets=4"}));
+    CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
+    CHECK(r.result.stats.fragmentsCaptured == 8u * 256u);
+    CHECK_FALSE(r.result.stats.overflowed);
+    // Coincident copies collide in one bucket and one slot: one fragment of K per pixel.
+    Fixture c(makeCoplanarScene(3, 0.5f));
+    auto coplanar = test::renderWith(*c.gpu, c.camera, {8, 8}, "bun");
+    CHECK(coplanar.result.stats.fragmentsCaptured == 64);
+    CHECK(coplanar.result.stats.fragmentsDropped == 128);
+}
