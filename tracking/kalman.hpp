@@ -39,8 +39,8 @@ struct KalmanOptions {
     double positionSigma = 0.2e-3;                          // m
     double orientationSigma = 0.02 * 0.017453292519943295;  // rad
     // Process noise spectral densities of the highest modelled derivative. Tuned on 60 s of the
-    // synthetic head motion (seed 1) at 120 Hz for 50 ms latency by a sweep over decades (see
-    // the note in docs/); the error is flat within ~10 % over a factor 3 either way. Units:
+    // synthetic head motion (seed 1, 120 Hz, 50 ms latency; strata track --synthetic 60) by a
+    // sweep over half-decades; the mean error is flat within ~10 % over a factor 3. Units:
     // CV: acceleration noise (m^2/s^3, rad^2/s^3); CA: jerk noise (m^2/s^5, rad^2/s^5).
     double positionProcessCV = 0.1;
     double positionProcessCA = 10.0;
@@ -93,7 +93,7 @@ public:
     void propagate(const Mat& F, double dt, double spectralDensity, bool propagateState);
     // Measurement of the first block with residual r and variance sigma^2 per axis; returns dx.
     Vec correct(const Eigen::Vector3d& residual, double sigma);
-    // P <- G P G^T (error-state reset).
+    // P <- G P G^T (error-state reset); G must be the identity outside its top-left 3x3 block.
     void transform(const Mat& G);
     // Symmetrises, and when Cholesky fails clamps the eigenvalues to a positive floor. The
     // steps above only symmetrise; the (costlier) check runs once per update.

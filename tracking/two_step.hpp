@@ -43,8 +43,9 @@ struct ErrorStats {
 
 ErrorStats summarize(const std::vector<FramePoses>& frames, Deflect deflect, const Intrinsics& k);
 
-// Mean wall time of one update() in nanoseconds: the measured trace is fed repeatedly (reset
-// between passes) until at least minSeconds have passed on steady_clock.
+// Wall time of one update() in nanoseconds on steady_clock: the measured trace is fed in passes
+// (reset between them) for at least minSeconds and three passes; the fastest pass's mean per
+// update is reported, because on a shared machine slower passes measure preemption, not code.
 double measureUpdateNs(const Predictor& prototype, const Trace& measured, double minSeconds = 0.05);
 
 }  // namespace strata::tracking
