@@ -32,6 +32,10 @@ if [[ -z $strata ]]; then
     [[ -x $strata ]] || bash "$root/scripts/build.sh" "$root/build"
 fi
 [[ -x $strata ]] || { echo "bench_scaling.sh: no strata executable at $strata" >&2; exit 1; }
+strata=$(realpath "$strata")
+mkdir -p "$out"
+out=$(realpath "$out")
+cd "$root"  # scene names in the reports stay relative to the repository
 command -v gnuplot >/dev/null || { echo "bench_scaling.sh: gnuplot not found (apt-get install gnuplot-nox)" >&2; exit 1; }
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 mkdir -p "$out/runs"
@@ -62,7 +66,7 @@ layers=(2 4 8 16 32)
 resolutions=(128 256 512)
 for n in "${layers[@]}"; do bench "layers-$n" "builtin:layers:$n" 256x256; done
 for r in "${resolutions[@]}"; do bench "resolution-$r" "builtin:layers:8" "${r}x${r}"; done
-bench fandisk-glass "$root/scenes/fandisk-glass.json" 256x256
+bench fandisk-glass scenes/fandisk-glass.json 256x256
 merge layers "$out/layers.csv" "${layers[@]}"
 merge resolution "$out/resolution.csv" "${resolutions[@]}"
 cp "$out/runs/layers-16.csv" "$out/layers-16.csv"
