@@ -1,14 +1,32 @@
 #include "gl/gpu_timer.hpp"
 
 #include <cassert>
+#include <string>
 
 namespace strata::gl {
+namespace {
+
+// On a software rasterizer the "GPU" is the CPU and timestamps are taken when a command is
+// queued, not when its rasterization finishes, so a pass's work spills into the next pass. There
+// we drain the pipeline at each pass boundary; on a real GPU the timestamps are pipelined
+// correctly and draining would only add stalls.
+bool softwareRenderer() {
+    static const bool software = [] {
+        const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        std::string renderer = r ? r : "";
+        return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+    }();
+    return software;
+}
+
+}  // namespace
 
 void GpuTimer::begin(std::string pass) {
     assert(!open_ && "timer queries cannot nest");
     // A pair of GL_TIMESTAMP queries per pass rather than GL_TIME_ELAPSED: llvmpipe reports the
     // first TIME_ELAPSED query on a new framebuffer as seconds of uptime; timestamps are exact
     // on every driver and give the same difference.
+    if (softwareRenderer()) glFinish();
     std::size_t index = pending_.size() * 2;
     while (pool_.size() < index + 2) pool_.push_back(createQuery(GL_TIMESTAMP));
     glQueryCounter(pool_[index].id(), GL_TIMESTAMP);
@@ -19,6 +37,7 @@ void GpuTimer::begin(std::string pass) {
 void GpuTimer::end() {
     assert(open_);
     auto& p = pending_.back();
+    if (softwareRenderer()) glFinish();
     glQueryCounter(pool_[p.query + 1].id(), GL_TIMESTAMP);
     p.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.cpuStart).count();
     open_ = false;
