@@ -1,0 +1,20 @@
+#version 450 core
+// Present: the frame's linear RGB output to the window, sRGB-encoded (the default framebuffer is
+// written without GL_FRAMEBUFFER_SRGB, so the encoding happens here, exactly once).
+layout(binding = 0) uniform sampler2D uLinearColor;
+out vec4 fragColor;
+
+vec3 linearToSrgb(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+void main() {
+    ivec2 size = textureSize(uLinearColor, 0);
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size))) {
+        fragColor = vec4(0.0, 0.0, 0.0, 1.0);
+        return;
+    }
+    fragColor = vec4(linearToSrgb(texelFetch(uLinearColor, p, 0).rgb), 1.0);
+}

@@ -1,0 +1,238 @@
+#include "panel.hpp"
+
+#include "gl/debug.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace strata {
+
+void FrameHistory::push(float gpuMs) {
+    values_[std::size_t(next_)] = gpuMs;
+    next_ = (next_ + 1) % kFrames;
+    count_ = std::min(count_ + 1, kFrames);
+}
+
+float FrameHistory::max() const {
+    float m = 0.0f;
+    for (int i = 0; i < count_; ++i) m = std::max(m, values_[std::size_t(i)]);
+    return m;
+}
+
+float FrameHistory::mean() const {
+    if (count_ == 0) return 0.0f;
+    double s = 0.0;
+    for (int i = 0; i < count_; ++i) s += values_[std::size_t(i)];
+    return float(s / count_);
+}
+
+namespace {
+
+std::string formatBytes(std::uint64_t bytes) {
+    char text[64];
+    if (bytes >= (1ull << 30)) std::snprintf(text, sizeof text, "%.2f GiB", double(bytes) / double(1ull << 30));
+    else if (bytes >= (1ull << 20)) std::snprintf(text, sizeof text, "%.2f MiB", double(bytes) / double(1ull << 20));
+    else if (bytes >= (1ull << 10)) std::snprintf(text, sizeof text, "%.1f KiB", double(bytes) / double(1ull << 10));
+    else std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
+    return text;
+}
+
+std::string techniqueLabel(const TechniqueInfo& info) {
+    std::string label = info.id + "  [" + info.family;
+    if (info.robust) label += ", robust";
+    if (info.handlesCoplanarity) label += ", coplanarity";
+    return label + "]";
+}
+
+void helpTooltip(const std::string& text) {
+    if (!text.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
+void drawTechnique(const PanelState& state, PanelRequests& requests) {
+    const TechniqueEntry* current = findTechnique(state.techniqueId);
+    std::string preview = current ? techniqueLabel(current->info) : state.techniqueId;
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##technique", preview.c_str())) {
+        for (const auto& entry : techniqueRegistry()) {
+            bool selected = entry.info.id == state.techniqueId;
+            if (ImGui::Selectable(techniqueLabel(entry.info).c_str(), selected) && !selected)
+                requests.technique = entry.info.id;
+            helpTooltip(entry.info.description);
+            if (selected) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+    }
+    if (current) {
+        const TechniqueInfo& info = current->info;
+        ImGui::TextWrapped("%s", info.description.c_str());
+        ImGui::TextWrapped("passes %s   memory %s", info.passes.c_str(), info.memoryModel.c_str());
+        ImGui::Text("robust: %s   coplanarity-aware: %s", info.robust ? "yes" : "no",
+                    info.handlesCoplanarity ? "yes" : "no");
+    }
+    if (!state.technique) return;
+    auto parameters = state.technique->parameters();
+    if (parameters.empty()) {
+        ImGui::TextDisabled("no parameters");
+        return;
+    }
+    for (auto& p : parameters) {
+        ImGui::PushID(p.name.c_str());
+        if (p.integer) {
+            // A 64-bit field: capacities can exceed an int.
+            double lo = std::max(p.min, -9.0e18), hi = std::min(p.max, 9.0e18);
+            std::int64_t v = std::int64_t(std::llround(*p.value));
+            const std::int64_t step = 1, stepFast = 16;
+            if (ImGui::InputScalar(p.name.c_str(), ImGuiDataType_S64, &v, &step, &stepFast))
+                *p.value = std::clamp(double(v), lo, hi);
+        } else {
+            double v = *p.value;
+            double range = p.max - p.min;
+            float speed = std::isfinite(range) && range > 0.0 && range < 1e9 ? float(range / 500.0)
+                                                                              : float(std::max(std::abs(v), 1.0) * 0.01);
+            if (ImGui::DragScalar(p.name.c_str(), ImGuiDataType_Double, &v, speed, &p.min, &p.max, "%.4g",
+                                  ImGuiSliderFlags_AlwaysClamp))
+                *p.value = std::clamp(v, p.min, p.max);
+        }
+        helpTooltip(p.help + " [" + std::to_string(p.min) + ", " + std::to_string(p.max) + "]");
+        ImGui::PopID();
+    }
+}
+
+void drawTiming(const PanelState& state) {
+    const FrameResult& frame = *state.frame;
+    ImGui::Text("%dx%d   GPU %.3f ms   CPU %.3f ms   %.0f fps", state.size.x, state.size.y, frame.gpuMs, frame.cpuMs,
+                ImGui::GetIO().Framerate);
+    if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableSetupColumn("CPU ms");
+        ImGui::TableHeadersRow();
+        for (const auto& p : frame.passTimes) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(p.name.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", p.gpuMs);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", p.cpuMs);
+        }
+        ImGui::EndTable();
+    }
+    if (!frame.transparencyPass) ImGui::TextDisabled("no transparency pass (nothing transparent)");
+    const FrameHistory& h = *state.history;
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "GPU ms, last %d: mean %.3f max %.3f", h.count(), h.mean(), h.max());
+    ImGui::PlotLines("##gpu", h.data(), h.count(), h.offset(), overlay, 0.0f, std::max(h.max() * 1.15f, 0.01f),
+                     ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));  // 1.86 takes no -1 here
+}
+
+void drawFragments(const PanelState& state, PanelSettings& settings) {
+    ImGui::Checkbox("count every frame", &settings.countEveryFrame);
+    if (!settings.countEveryFrame) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(90.0f);
+        ImGui::InputInt("every N frames", &settings.countInterval);
+        settings.countInterval = std::clamp(settings.countInterval, 0, 100000);
+    }
+    const TechniqueStats& live = state.frame->stats;
+    ImGui::Text("memory %s   passes %d   object draws %llu", formatBytes(live.bytes).c_str(), live.passes,
+                static_cast<unsigned long long>(live.objectDraws));
+    if (!state.count) {
+        ImGui::TextDisabled("fragments not counted yet");
+        return;
+    }
+    const FragmentCount& c = *state.count;
+    double ratio = c.total ? double(c.stats.fragmentsCaptured) / double(c.total) : 1.0;
+    ImGui::Text("counted at frame %llu (%llu frames ago)", static_cast<unsigned long long>(c.frame),
+                static_cast<unsigned long long>(state.frameIndex - c.frame));
+    ImGui::Text("total %llu   captured %llu   dropped %llu", static_cast<unsigned long long>(c.total),
+                static_cast<unsigned long long>(c.stats.fragmentsCaptured),
+                static_cast<unsigned long long>(c.stats.fragmentsDropped));
+    ImVec4 ratioColour = ratio >= 1.0 ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f);
+    ImGui::TextColored(ratioColour, "robustness ratio %.4f", ratio);
+    ImGui::SameLine();
+    if (c.stats.overflowed) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "OVERFLOWED");
+    else ImGui::TextUnformatted("no overflow");
+    ImGui::Text("regrows %d   tiles %d", c.stats.regrows, c.stats.tiles);
+}
+
+void drawScene(const PanelState& state) {
+    const GpuScene& scene = *state.scene;
+    const Bounds& b = scene.bounds();
+    ImGui::Text("%s", scene.scene().name.empty() ? "(unnamed scene)" : scene.scene().name.c_str());
+    ImGui::Text("objects %zu (opaque %zu, transparent %zu)", scene.objects().size(), scene.opaqueObjects().size(),
+                scene.transparentObjects().size());
+    ImGui::Text("triangles %zu", scene.triangleCount());
+    if (!b.empty()) {
+        glm::vec3 e = b.max - b.min;
+        ImGui::Text("bounds %.3g x %.3g x %.3g", e.x, e.y, e.z);
+    }
+    if (state.device) ImGui::TextWrapped("%s", state.device->renderer.c_str());
+}
+
+void drawCamera(const PanelState& state, PanelRequests& requests) {
+    ImGui::Text("navigation: %s", state.navigation);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("switch (Tab)")) requests.toggleNavigation = true;
+    ImGui::Text("eye %.3g %.3g %.3g   near %.3g far %.3g", state.cameraPosition.x, state.cameraPosition.y,
+                state.cameraPosition.z, state.nearPlane, state.farPlane);
+    if (state.hasPath) {
+        ImGui::Text("path %s  %.2f / %.2f s", state.playing ? "playing" : "paused", state.pathTime,
+                    state.pathDuration);
+        ImGui::SameLine();
+        if (ImGui::SmallButton(state.playing ? "pause (Space)" : "play (Space)")) requests.togglePlayback = true;
+    }
+    if (state.recording) {
+        ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "REC %zu samples -> %s", state.recordedSamples,
+                           state.recordPath.c_str());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("stop (R)")) requests.toggleRecording = true;
+    } else if (ImGui::SmallButton("record path (R)")) {
+        requests.toggleRecording = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("screenshot (P)")) requests.screenshot = true;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("reload (F5)")) requests.reload = true;
+    if (ImGui::TreeNode("keys")) {
+        ImGui::TextUnformatted("orbit: left-drag turn, wheel zoom\n"
+                               "walk: WASD move, Q/E down/up, right-drag look,\n"
+                               "      shift faster, wheel walking speed\n"
+                               "Tab orbit/walk   F12/P screenshot   R record\n"
+                               "Space play/pause path   F5 reload shaders");
+        ImGui::TreePop();
+    }
+}
+
+}  // namespace
+
+glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelRequests& requests) {
+    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    float height = std::max(ImGui::GetIO().DisplaySize.y - 16.0f, 200.0f);
+    ImGui::SetNextWindowSize(ImVec2(380.0f, height), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Strata");
+    if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) drawTechnique(state, requests);
+    if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) drawTiming(state);
+    if (ImGui::CollapsingHeader("Fragments and memory", ImGuiTreeNodeFlags_DefaultOpen)) drawFragments(state, settings);
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(state);
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(state, requests);
+    if (ImGui::Checkbox("vsync", &settings.vsync)) requests.vsyncChanged = true;
+    ImGui::SameLine();
+    std::size_t errors = gl::errorCount();
+    if (errors) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "GL errors: %zu", errors);
+    else ImGui::Text("GL errors: 0");
+    if (!state.lastGlError.empty()) ImGui::TextWrapped("last GL error: %s", state.lastGlError.c_str());
+    if (!state.lastError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", state.lastError.c_str());
+    if (!state.lastSaved.empty()) ImGui::TextWrapped("%s", state.lastSaved.c_str());
+    ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    ImGui::End();
+    return {pos.x, pos.y, size.x, size.y};
+}
+
+}  // namespace strata
