@@ -37,19 +37,29 @@ void main() {
     uint head = imageLoad(uHeads, pixel).r;
     if (head == 0u) { outColor = vec4(opaque, 1.0); return; }
 
+    // Depths stay in registers beside the node indices: a comparison reads memory only on a
+    // depth tie (coplanar surfaces), where object and primitive ids decide.
     uint local[LOCAL_CAPACITY];
+    float localDepth[LOCAL_CAPACITY];
     uint count = 0u;
     bool tooLong = false;
     for (uint n = head; n != 0u; n = nodes[n - 1u].next) {
         if (count == LOCAL_CAPACITY) { tooLong = true; break; }
         uint node = n - 1u;
+        float depth = nodes[node].depth;
         uint j = count;
+        // Written as "if (!...) break" on purpose: llvmpipe (Mesa 22.3) miscompiled the
+        // equivalent "while (j > 0u && before(...))" and produced wrongly ordered lists.
         while (j > 0u) {
-            if (!before(node, local[j - 1u])) break;
+            float d = localDepth[j - 1u];
+            bool first = depth != d ? depth > d : before(node, local[j - 1u]);
+            if (!first) break;
             local[j] = local[j - 1u];
+            localDepth[j] = d;
             j--;
         }
         local[j] = node;
+        localDepth[j] = depth;
         count++;
     }
 
