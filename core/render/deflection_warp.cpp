@@ -1,0 +1,96 @@
+#include "render/deflection_warp.hpp"
+
+#include "gl/shader_program.hpp"
+#include "render/bindings.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace strata {
+
+std::string_view deflectFilterName(DeflectFilter f) {
+    return f == DeflectFilter::Nearest ? "nearest" : "bilinear";
+}
+
+DeflectFilter parseDeflectFilter(std::string_view name) {
+    if (name == "nearest") return DeflectFilter::Nearest;
+    if (name == "bilinear") return DeflectFilter::Bilinear;
+    throw std::invalid_argument("unknown deflection filter `" + std::string(name) + "` (known: nearest, bilinear)");
+}
+
+glm::mat3 deflectionInverseMap(const DeflectionParams& params) {
+    if (params.mode == DeflectMode::Homography) return params.homography;
+    glm::mat3 m(1.0f);  // glm is column-major: column 2 holds the translation
+    m[2] = glm::vec3(-params.shift, 1.0f);
+    return m;
+}
+
+glm::mat3 homographyFromYDownForward(const glm::dmat3& forwardYDown, int height) {
+    glm::dmat3 flip(1.0);
+    flip[1][1] = -1.0;
+    flip[2][1] = double(height);  // column 2, row 1: y' = h - y
+    return glm::mat3(flip * glm::inverse(forwardYDown) * flip);
+}
+
+void DeflectionWarp::resize(glm::ivec2 size) {
+    if (size.x <= 0 || size.y <= 0) throw std::invalid_argument("deflection size must be positive");
+    if (size == size_) return;
+    size_ = size;
+    color_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+    fbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+    if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("deflection framebuffer incomplete");
+}
+
+void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const DeflectionParams& params) {
+    resize(size);
+    if (!program_) {
+        program_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/deflect.frag.glsl"});
+        emptyVertexArray_ = gl::VertexArray::create();
+        counter_ = gl::Buffer::create();
+        glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    const GLuint p = program_.id();
+    const glm::mat3 map = deflectionInverseMap(params);
+    glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uMap"), 1, GL_FALSE, &map[0][0]);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uBilinear"), params.filter == DeflectFilter::Bilinear ? 1 : 0);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uCount"), params.countOutside ? 1 : 0);
+    glProgramUniform4fv(p, glGetUniformLocation(p, "uBorder"), 1, &params.border[0]);
+    counted_ = params.countOutside;
+    if (counted_) {
+        const GLuint zero = 0;
+        glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+    }
+
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glViewport(0, 0, size.x, size.y);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDepthMask(GL_FALSE);
+    glBindTextureUnit(0, sourceTexture);
+    glUseProgram(p);
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::uint64_t DeflectionWarp::outsidePixels() const {
+    if (!counted_) return 0;
+    glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint count = 0;
+    glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
+    return count;
+}
+
+Image DeflectionWarp::readOutput() const {
+    Image image(size_.x, size_.y);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
+                      image.rgba.data());
+    return image;
+}
+
+}  // namespace strata
