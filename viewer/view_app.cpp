@@ -4,6 +4,7 @@
 #include "view_app.hpp"
 
 #include "camera_controls.hpp"
+#include "immersive.hpp"
 #include "panel.hpp"
 #include "window_capture.hpp"
 #include "window_session.hpp"
@@ -393,15 +394,13 @@ private:
 }  // namespace
 
 int runViewer(const ViewOptions& options) {
-    if (options.immersive)
-        throw std::runtime_error("immersive mode: head-tracked rendering (pose prediction and image deflection) "
-                                 "is not available yet in the viewer");
-    if (options.trace) throw std::runtime_error("view: --trace is only used with --immersive");
+    if (options.trace && !options.immersive) throw std::runtime_error("view: --trace is only used with --immersive");
     if (options.width <= 0 || options.height <= 0)
         throw std::runtime_error("view: window size " + std::to_string(options.width) + "x" +
                                  std::to_string(options.height) + " is not positive");
     if (!findTechnique(options.mode)) createTechnique(options.mode);  // throws, listing the known ids
     Scene scene = openScene(options.scene);                          // bad input fails before a window opens
+    if (options.immersive) return runImmersive(options, std::move(scene));  // viewer/immersive.cpp
 
     GlfwLibrary glfw;
     WindowPtr window = openWindow(options.width, options.height, "Strata - " + options.scene);

@@ -16,6 +16,12 @@ struct ViewOptions {
     std::optional<std::filesystem::path> recordPath;     // --record: record the camera to a path file
     bool immersive = false;
     std::optional<std::filesystem::path> trace;          // --trace (immersive)
+    // Immersive mode's starting choices (viewer/immersive.hpp); the panel changes them live.
+    std::string predictor = "kalman";
+    std::string deflect = "homography";
+    bool stereo = false;
+    double ipdMm = 64.0;
+    double extraLatencyMs = 0.0;                         // added to the measured frame time
     // Smoke testing: exit after this many frames (0 = run until closed), saving a screenshot.
     int exitAfterFrames = 0;
     std::optional<std::filesystem::path> screenshot;
