@@ -2,8 +2,8 @@
 // Image deflection (Mazuryk & Gervautz, "Two-step prediction and image deflection", 1995):
 // after rendering with the pose predicted at frame start, the tracker is read again and the
 // finished image is moved to fit the newer prediction. This file holds the CPU math only; the
-// GL warp that applies it to a frame (a full-screen pass sampling the rendered image at
-// H^-1 x, or an offset blit for `shift`) belongs to the viewer and is not written yet.
+// GL warp that applies it to a frame is core/render/deflection_warp.hpp (tracking has no GL);
+// it converts from this file's y-down forward map to GL's y-up inverse map.
 //
 // Pixel convention: x right, y down, origin at the top-left pixel corner; pinhole intrinsics
 // K = [fx 0 cx; 0 fy cy; 0 0 1] act on the camera frame C = diag(1, -1, -1) * (GL camera
