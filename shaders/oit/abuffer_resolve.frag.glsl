@@ -2,9 +2,14 @@
 // A-buffer resolve: sorts each pixel's list front to back by (depth, object id, primitive id)
 // and composites it over the opaque colour. Short lists are insertion-sorted in registers;
 // a list longer than LOCAL_CAPACITY is walked by repeated selection of the next key, O(n^2)
-// but exact for any depth complexity.
+// but exact for any depth complexity. `ll` uses this resolve too, with LIST_TAIL defined: its
+// overflowed fragments, blended into a tail layer, composite behind the sorted ones.
 #include "bindings.glsl"
 #include "abuffer_node.glsl"
+#ifdef LIST_TAIL
+#include "buffers/buffer_bindings.glsl"
+#include "buffers/tail_resolve.glsl"
+#endif
 
 #ifndef LOCAL_CAPACITY
 #define LOCAL_CAPACITY 64
@@ -35,7 +40,8 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 opaque = texelFetch(uOpaqueColor, pixel, 0).rgb;
     uint head = imageLoad(uHeads, pixel).r;
-    if (head == 0u) { outColor = vec4(opaque, 1.0); return; }
+    vec3 color = vec3(0.0);
+    float transmittance = 1.0;
 
     // Depths stay in registers beside the node indices: a comparison reads memory only on a
     // depth tie (coplanar surfaces), where object and primitive ids decide.
@@ -63,8 +69,6 @@ void main() {
         count++;
     }
 
-    vec3 color = vec3(0.0);
-    float transmittance = 1.0;
     if (!tooLong) {
         for (uint i = 0u; i < count; ++i) composite(local[i], color, transmittance);
     } else {
@@ -82,5 +86,8 @@ void main() {
             previous = best;
         }
     }
+#ifdef LIST_TAIL
+    compositeTail(pixel, color, transmittance);
+#endif
     outColor = vec4(color + transmittance * opaque, 1.0);
 }

@@ -26,7 +26,8 @@ public:
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
             storeProgram_ = buildSceneProgram("oit/buffers/ll_store.frag.glsl");
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/ll_resolve.frag.glsl"});
+            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"},
+                                              {{"LIST_TAIL", ""}});
         }
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
         const std::uint64_t pool = pixels * std::uint64_t(capacity_);
