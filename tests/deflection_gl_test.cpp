@@ -37,26 +37,12 @@ constexpr float kTolerance = 2.0f / 255.0f;
 
 // --- bridges between tracking (Eigen, double) and core (glm) --------------------------------
 
-Eigen::Quaterniond toEigen(const glm::quat& q) { return Eigen::Quaterniond(q.w, q.x, q.y, q.z); }
+using tracking::toEigen;
+using tracking::toGlm;
 
-glm::dmat3 toGlm(const Eigen::Matrix3d& m) {
-    glm::dmat3 g;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) g[c][r] = m(r, c);
-    return g;
-}
-
-// tracking's intrinsics for core's camera: fovY and square pixels (glm-style aspect = w / h),
-// principal point at the image centre; tracking's pixels are y-down from the top-left corner.
+// tracking's pinhole for core's camera: fovY, square pixels, principal point at the centre.
 tracking::Intrinsics intrinsicsFor(const Camera& camera, glm::ivec2 size) {
-    tracking::Intrinsics k;
-    k.width = size.x;
-    k.height = size.y;
-    k.fy = 0.5 * size.y / std::tan(0.5 * tracking::degToRad(camera.fovYDegrees));
-    k.fx = k.fy;
-    k.cx = 0.5 * size.x;
-    k.cy = 0.5 * size.y;
-    return k;
+    return tracking::Intrinsics::fromFovY(size.x, size.y, camera.fovYDegrees);
 }
 
 DeflectionParams homographyParams(const tracking::Intrinsics& k, const glm::quat& rendered, const glm::quat& latest,

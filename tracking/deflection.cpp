@@ -24,6 +24,11 @@ Intrinsics Intrinsics::fromFov(int width, int height, double horizontalFovDeg) {
     return k;
 }
 
+Intrinsics Intrinsics::fromFovY(int width, int height, double verticalFovDeg) {
+    double horizontal = 2.0 * std::atan(std::tan(0.5 * degToRad(verticalFovDeg)) * double(width) / double(height));
+    return fromFov(width, height, horizontal * 180.0 / 3.14159265358979323846);
+}
+
 Eigen::Matrix3d Intrinsics::K() const {
     Eigen::Matrix3d m;
     m << fx, 0.0, cx, 0.0, fy, cy, 0.0, 0.0, 1.0;

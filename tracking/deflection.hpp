@@ -30,6 +30,8 @@ struct Intrinsics {
     int width = 1, height = 1;
     // Square pixels, principal point at the centre, horizontal field of view in degrees.
     static Intrinsics fromFov(int width, int height, double horizontalFovDeg);
+    // The same from the vertical field of view, as strata's Camera states it.
+    static Intrinsics fromFovY(int width, int height, double verticalFovDeg);
     Eigen::Matrix3d K() const;
 };
 

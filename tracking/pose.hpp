@@ -55,5 +55,13 @@ inline glm::quat toGlm(const Eigen::Quaterniond& q) {
     return glm::quat(float(q.w()), float(q.x()), float(q.y()), float(q.z()));
 }
 inline glm::vec3 toGlm(const Eigen::Vector3d& v) { return glm::vec3(float(v.x()), float(v.y()), float(v.z())); }
+inline Eigen::Quaterniond toEigen(const glm::quat& q) { return Eigen::Quaterniond(q.w, q.x, q.y, q.z); }
+// Column-major glm from Eigen, in double (homographies are inverted before going to float).
+inline glm::dmat3 toGlm(const Eigen::Matrix3d& m) {
+    glm::dmat3 g;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) g[c][r] = m(r, c);
+    return g;
+}
 
 }  // namespace strata::tracking

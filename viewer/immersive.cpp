@@ -102,25 +102,12 @@ void helpTip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }
 
-Eigen::Quaterniond toEigen(const glm::quat& q) { return Eigen::Quaterniond(q.w, q.x, q.y, q.z); }
+using tracking::toEigen;
+using tracking::toGlm;
 
-glm::dmat3 toGlm(const Eigen::Matrix3d& m) {
-    glm::dmat3 g;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) g[c][r] = m(r, c);
-    return g;
-}
-
-// tracking's pinhole for core's camera on an eye viewport: fovY, square pixels, centred.
+// tracking's pinhole for core's camera: fovY, square pixels, principal point at the centre.
 tracking::Intrinsics intrinsicsFor(const Camera& camera, glm::ivec2 size) {
-    tracking::Intrinsics k;
-    k.width = size.x;
-    k.height = size.y;
-    k.fy = 0.5 * size.y / std::tan(0.5 * tracking::degToRad(camera.fovYDegrees));
-    k.fx = k.fy;
-    k.cx = 0.5 * size.x;
-    k.cy = 0.5 * size.y;
-    return k;
+    return tracking::Intrinsics::fromFovY(size.x, size.y, camera.fovYDegrees);
 }
 
 struct Eye {
