@@ -3,9 +3,12 @@
 // not depend on the order objects are submitted in.
 #include "gl_test_support.hpp"
 
+#include "reference/raycast.hpp"
 #include "scene/builtin_scenes.hpp"
 
 #include <doctest/doctest.h>
+
+#include <algorithm>
 
 using namespace strata;
 
@@ -13,7 +16,7 @@ namespace {
 
 constexpr float kTolerance = 1.0f / 255.0f;
 
-// A robust technique with a bounded capacity gets enough of it for `layers` fragments per pixel.
+// A technique with a bounded capacity gets enough of it for `layers` fragments per pixel.
 std::unique_ptr<Technique> exactTechnique(const std::string& id, int layers) {
     auto t = createTechnique(id);
     for (const auto& p : t->parameters())
@@ -21,10 +24,15 @@ std::unique_ptr<Technique> exactTechnique(const std::string& id, int layers) {
     return t;
 }
 
+// The techniques that are exact given enough memory: the robust ones, and the bounded ones
+// (a `capacity` parameter) given a capacity that holds every fragment.
 std::vector<std::string> robustIds() {
     std::vector<std::string> ids;
-    for (const auto& e : techniqueRegistry())
-        if (e.info.robust) ids.push_back(e.info.id);
+    for (const auto& e : techniqueRegistry()) {
+        auto params = e.create()->parameters();
+        bool bounded = std::any_of(params.begin(), params.end(), [](const Parameter& p) { return p.name == "capacity"; });
+        if (e.info.robust || bounded) ids.push_back(e.info.id);
+    }
     return ids;
 }
 
@@ -56,8 +64,11 @@ TEST_CASE("reversing the submission order leaves exact techniques unchanged and 
     test::glContext();
     // Without coincident surfaces every robust technique is order-independent; with them, only
     // those that break depth ties by (object id, primitive id) are.
-    for (const char* spec : {"layers:5", "cubes:separated", "volumes", "cubes", "default"}) {
-        bool coplanar = std::string(spec) == "cubes" || std::string(spec) == "default";
+    for (const char* spec : {"layers:5", "cubes:separated", "volumes", "cubes", "default", "coplanar:3", "shells:3",
+                             "shells:3:roundoff"}) {
+        const std::string name(spec);
+        bool coplanar = name == "cubes" || name == "default" || name.rfind("coplanar", 0) == 0 ||
+                        name.rfind("shells", 0) == 0;
         CAPTURE(spec);
         GpuScene scene(makeBuiltinScene(spec));
         Camera camera = defaultCamera(scene.scene(), scene.objects());
@@ -75,6 +86,64 @@ TEST_CASE("reversing the submission order leaves exact techniques unchanged and 
             Image forward = test::renderWith(scene, camera, size, "blend-unsorted").image;
             Image backward = test::renderWith(scene, camera, size, "blend-unsorted", reversed).image;
             CHECK(compareImages(forward, backward).maxAbsError > 0.05);
+        }
+    }
+}
+
+TEST_CASE("coincident surfaces and the same surfaces off by round-off render alike (the tie rule)") {
+    test::glContext();
+    // builtin:shells:3:roundoff places copies 1 and 2 through other transforms and scales them
+    // by one and two ulps: the depths differ by round-off at most pixels. Under the tie rule
+    // both scenes are three layers of coincident fragments in object order, so every exact
+    // technique that handles coplanarity gives the exact scene's image.
+    GpuScene exact(makeBuiltinScene("shells:3"));
+    GpuScene roundoff(makeBuiltinScene("shells:3:roundoff"));
+    Camera camera = defaultCamera(exact.scene(), exact.objects());
+    glm::ivec2 size(40, 30);
+    for (const auto& id : robustIds()) {
+        if (!findTechnique(id)->info.handlesCoplanarity) continue;
+        CAPTURE(id);
+        auto a = test::renderWith(exact, camera, size, *exactTechnique(id, 8));
+        auto b = test::renderWith(roundoff, camera, size, *exactTechnique(id, 8));
+        CHECK(compareImages(a.image, b.image).maxAbsError <= kTolerance);
+        CHECK(a.result.stats.fragmentsCaptured == *a.result.fragmentsTotal);
+    }
+    // The CPU ray cast follows the same rule.
+    Image cpuExact = raycastReference(exact.scene(), exact.objects(), camera, size.x, size.y);
+    Image cpuRoundoff = raycastReference(roundoff.scene(), roundoff.objects(), camera, size.x, size.y);
+    CHECK(compareImages(cpuExact, cpuRoundoff).maxAbsError <= kTolerance);
+
+    // Without the tolerance (ties only on bit-equal depths) round-off decides the order, and
+    // the images differ: the test above can fail.
+    Scene strictScene = makeBuiltinScene("shells:3:roundoff");
+    strictScene.depthTieUlps = 0.0;
+    GpuScene strict(std::move(strictScene));
+    Image exactImage = test::renderWith(exact, camera, size, "abuffer").image;
+    Image strictImage = test::renderWith(strict, camera, size, "abuffer").image;
+    CHECK(compareImages(exactImage, strictImage).maxAbsError > 0.02);
+}
+
+TEST_CASE("surfaces farther apart than the tie tolerance composite by depth, on the GPU as on the CPU") {
+    test::glContext();
+    // Two full-view quads; object 0 is behind object 1 by a relative gap of 1e-4 (about 840
+    // ulps: two surfaces) or 2.4e-7 (2 ulps: one layer, object 0 first).
+    for (double gap : {1e-4, 2.4e-7}) {
+        CAPTURE(gap);
+        Scene s = makeCoplanarScene(2, 0.5f);
+        s.nodes[std::size_t(s.roots[0])].local[3].z = float(-2.0 * (1.0 + gap));
+        GpuScene scene(std::move(s));
+        Camera camera = defaultCamera(scene.scene(), scene.objects());
+        auto gpu = test::renderWith(scene, camera, {8, 8}, "abuffer").image.at(4, 4);
+        auto cpu = raycastReference(scene.scene(), scene.objects(), camera, 8, 8).at(4, 4);
+        // The nearer colour dominates with weight 0.5 against 0.25.
+        glm::vec3 bg = scene.scene().background;
+        glm::vec3 c0 = paletteColor(0), c1 = paletteColor(1);
+        glm::vec3 front = gap > 1e-5 ? c1 : c0, back = gap > 1e-5 ? c0 : c1;
+        // Both quads face the light ({0, 0, 1}): shaded colour = base colour.
+        glm::vec3 expected = 0.5f * front + 0.25f * back + 0.25f * bg;
+        for (int ch = 0; ch < 3; ++ch) {
+            CHECK(std::abs(gpu[ch] - expected[ch]) <= kTolerance);
+            CHECK(std::abs(cpu[ch] - expected[ch]) <= kTolerance);
         }
     }
 }

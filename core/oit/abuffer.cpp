@@ -149,6 +149,7 @@ private:
         glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
         glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        setDepthOrderUniforms(frame, resolveProgram_.id());
         drawFullscreen(frame, resolveProgram_.id());
         ++stats_.passes;
     }

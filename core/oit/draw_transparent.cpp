@@ -1,5 +1,7 @@
 #include "oit/draw_transparent.hpp"
 
+#include "render/depth_order.hpp"
+
 #include <algorithm>
 
 namespace strata {
@@ -25,6 +27,13 @@ void drawFullscreen(const FrameContext& frame, GLuint program) {
     glUseProgram(program);
     glBindVertexArray(frame.targets.emptyVertexArray());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void setDepthOrderUniforms(const FrameContext& frame, GLuint program) {
+    const double n = frame.camera.nearPlane, f = frame.camera.farPlane;
+    glProgramUniform1f(program, glGetUniformLocation(program, "uDepthOffset"), float(n / (f - n)));
+    glProgramUniform1f(program, glGetUniformLocation(program, "uTieTolerance"),
+                       float(tieToleranceFromUlps(frame.scene.scene().depthTieUlps)));
 }
 
 std::vector<int> sortedBackToFront(const FrameContext& frame) {

@@ -18,6 +18,11 @@ void setTransparentDepthState(const FrameContext& frame);
 // Draws one full-screen triangle with `program` (depth test off).
 void drawFullscreen(const FrameContext& frame, GLuint program);
 
+// Sets the uniforms of shaders/oit/ordered_composite.glsl (the tie rule of
+// render/depth_order.hpp) on a resolve program: the camera's n / (f - n) and the scene's
+// relative tie tolerance.
+void setDepthOrderUniforms(const FrameContext& frame, GLuint program);
+
 // Transparent objects sorted back to front by the distance of their bounds' centres.
 std::vector<int> sortedBackToFront(const FrameContext& frame);
 

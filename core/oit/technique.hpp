@@ -21,7 +21,10 @@ namespace strata {
 struct TechniqueInfo {
     std::string id;
     std::string family;         // baseline, peeling, buffer, coplanarity, volumetric, approximate, reference
-    bool robust = false;        // captures every fragment (given enough memory)
+    // Captures every fragment at its default settings, whatever the depth complexity (memory
+    // grown to the fragments present). Bounded techniques (a per-pixel or per-pool capacity:
+    // kbuffer, fab, ll) are not robust even though they are exact when the capacity suffices.
+    bool robust = false;
     bool handlesCoplanarity = false;
     std::string passes;         // e.g. "1", "N", "ceil(N/2)+1", "2 (+regrow)"
     std::string memoryModel;    // e.g. "none", "w*h*K*8", "pool sized to fragments"

@@ -1,5 +1,6 @@
 #include "reference/raycast.hpp"
 
+#include "render/depth_order.hpp"
 #include "render/shading.hpp"
 
 #include <glm/gtc/quaternion.hpp>
@@ -374,10 +375,9 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
             },
             [&] { return limit; });
     }
-    // compositeFrontToBack sorts with nearerFirst, so the fragments come back in order.
-    out.color = compositeFrontToBack(out.fragments, out.opaqueColor);
-    for (std::size_t i = 1; i < out.fragments.size(); ++i)
-        if (out.fragments[i].depth == out.fragments[i - 1].depth) ++out.depthTies;
+    // The fragments come back in compositing order, ties resolved by the scene's tie rule.
+    out.depthTies = orderFragments(out.fragments, tieToleranceFromUlps(scene.depthTieUlps));
+    out.color = compositeOrdered(out.fragments, out.opaqueColor);
     return out;
 }
 

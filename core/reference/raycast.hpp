@@ -10,8 +10,8 @@
 // of the rasterizer's top-left rule. Hits are clipped to [nearPlane, farPlane] in eye depth,
 // as GL clips. The nearest opaque hit (ties broken by object id, then primitive id, as the
 // GPU's first-drawn-wins GL_GREATER test does) gives the colour behind; every transparent
-// hit strictly nearer than it becomes a SurfaceFragment, composited with
-// compositeFrontToBack. Output alpha is 1.
+// hit strictly nearer than it becomes a SurfaceFragment, ordered by the scene's depth tie rule
+// (render/depth_order.hpp) and composited front to back. Output alpha is 1.
 #include "camera/camera.hpp"
 #include "image/image.hpp"
 #include "render/composite.hpp"
@@ -37,7 +37,8 @@ struct RaycastOptions {
 
 // Everything one pixel's ray meets, for tests and statistics.
 struct PixelSample {
-    // Transparent hits strictly nearer than the opaque hit, sorted with nearerFirst.
+    // Transparent hits strictly nearer than the opaque hit, in compositing order
+    // (orderFragments in render/depth_order.hpp: depth, with near-equal depths in object order).
     std::vector<SurfaceFragment> fragments;
     bool hasOpaque = false;
     float opaqueDepth = std::numeric_limits<float>::infinity();  // eye depth
@@ -45,7 +46,7 @@ struct PixelSample {
     int opaquePrimitive = -1;
     glm::vec3 opaqueColor{0.0f};  // shaded nearest opaque hit, or the scene background
     glm::vec3 color{0.0f};        // the fragments composited over opaqueColor
-    // Fragments whose depth is bit-identical to the preceding fragment's (coplanar ties: K
+    // Fragments in the same depth layer as the preceding one under the tie rule (coplanar ties: K
     // coincident surfaces give K - 1).
     int depthTies = 0;
     // Hits (opaque or transparent, before the opaque cut) decided by the edge tie rule because

@@ -1,11 +1,9 @@
 #pragma once
-// The compositing model shared by the exact reference (GPU abuffer, CPU ray cast) and the
-// analytic tests: fragments sorted front to back by (depth, object id, primitive id),
-// composited with "under" (front to back), then over the opaque colour.
+// A transparent surface fragment as the exact reference (CPU ray cast, analytic tests) sees it,
+// and the total order by (depth, object id, primitive id). The compositing order built on it,
+// with the tie rule for coincident surfaces, is in render/depth_order.hpp.
 #include <glm/glm.hpp>
 
-#include <algorithm>
-#include <vector>
 
 namespace strata {
 
@@ -22,18 +20,6 @@ inline bool nearerFirst(const SurfaceFragment& a, const SurfaceFragment& b) {
     if (a.depth != b.depth) return a.depth < b.depth;
     if (a.object != b.object) return a.object < b.object;
     return a.primitive < b.primitive;
-}
-
-// Front-to-back: C += T * a * c; T *= (1 - a); result = C + T * background.
-inline glm::vec3 compositeFrontToBack(std::vector<SurfaceFragment>& fragments, const glm::vec3& background) {
-    std::sort(fragments.begin(), fragments.end(), nearerFirst);
-    glm::vec3 color(0.0f);
-    float transmittance = 1.0f;
-    for (const auto& f : fragments) {
-        color += transmittance * f.alpha * f.color;
-        transmittance *= 1.0f - f.alpha;
-    }
-    return color + transmittance * background;
 }
 
 }  // namespace strata

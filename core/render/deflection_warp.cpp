@@ -61,8 +61,11 @@ void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const Deflecti
     if (counted_) {
         const GLuint zero = 0;
         glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
-        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
     }
+    // Bound even when not counting: the shader declares the counter, and a draw whose program
+    // uses an atomic counter binding with no buffer behind it is undefined (Mesa ignores it,
+    // other drivers need not), whether or not the increment runs.
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
 
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size.x, size.y);

@@ -80,6 +80,8 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
     static const std::vector<BuiltinSceneInfo> list = {
         {"layers", "N (1..4096, default 8)", "N full-view parallel quads, depth complexity exactly N"},
         {"coplanar", "K (1..1024, default 4)", "K coincident full-view quads: one depth, K fragments"},
+        {"shells", "K[:roundoff] (1..1024, default 2)",
+         "K coincident transparent spheres; roundoff: the copies differ by float round-off only"},
         {"cubes", "separated (optional)", "three overlapping transparent cubes sharing face planes"},
         {"volumes", "", "intersecting transparent spheres with attenuation and albedo"},
         {"default", "", "the demo room: opaque and transparent, intersecting, coplanar, a field of models"},
@@ -109,6 +111,28 @@ Scene makeCoplanarScene(int copies, float alpha) {
     }
     s.camera = CameraPose{};
     s.lightDirection = {0, 0, 1};
+    return s;
+}
+
+Scene makeShellsScene(int copies, bool roundoff) {
+    Scene s = emptyScene("shells:" + std::to_string(copies) + (roundoff ? ":roundoff" : ""));
+    int mesh = s.addMesh(makeSphere(1.0f, 40, 20));
+    const glm::vec3 centre(0.3f, -0.2f, -4.0f);
+    for (int i = 0; i < copies; ++i) {
+        int material = s.addMaterial(transparent("shell" + std::to_string(i), paletteColor(i), 0.45f));
+        glm::mat4 world = glm::translate(glm::mat4(1.0f), centre);
+        // Copy i scaled by 1 + i * 1.2e-7 (one float ulp of 1 per copy) and placed through an
+        // offset there and back: the same surface up to round-off, as when one model is placed
+        // twice by different transforms.
+        if (roundoff && i > 0) {
+            const glm::vec3 offset(0.37f * float(i), -0.11f, 0.23f);
+            world = glm::translate(glm::translate(world, offset), -offset) *
+                    glm::scale(glm::mat4(1.0f), glm::vec3(1.0f + 1.2e-7f * float(i)));
+        }
+        placeMesh(s, mesh, material, world, "shell" + std::to_string(i));
+    }
+    s.camera = lookingAt({0.0f, 0.0f, 0.0f}, centre + glm::vec3(0.2f, 0.1f, 0.0f), 40.0f);
+    s.lightDirection = glm::normalize(glm::vec3(0.4f, 0.7f, 0.6f));
     return s;
 }
 
@@ -206,6 +230,13 @@ Scene makeBuiltinScene(const std::string& spec) {
     std::string arg = colon == std::string::npos ? "" : spec.substr(colon + 1);
     if (name == "layers") return makeLayersScene(parseCount(spec, arg, 8, 1, 4096));
     if (name == "coplanar") return makeCoplanarScene(parseCount(spec, arg, 4, 1, 1024));
+    if (name == "shells") {
+        auto second = arg.find(':');
+        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
+        if (!option.empty() && option != "roundoff")
+            throw std::invalid_argument("builtin:" + spec + ": the only option of shells is 'roundoff'");
+        return makeShellsScene(parseCount(spec, arg.substr(0, second), 2, 1, 1024), option == "roundoff");
+    }
     if (name == "cubes") {
         if (!arg.empty() && arg != "separated")
             throw std::invalid_argument("builtin:" + spec + ": the only argument of cubes is 'separated'");

@@ -3,6 +3,9 @@
 //   builtin:layers:N     N parallel quads covering the view (depth complexity exactly N), nearest
 //                        first in submission order
 //   builtin:coplanar:K   K coincident full-view quads with different colours (one depth, K fragments)
+//   builtin:shells:K[:roundoff]  K coincident transparent spheres (two fragments each per pixel);
+//                        with roundoff, copy i is scaled by 1 + i ulps and placed through another
+//                        transform: coincident up to round-off, so it must render like the exact one
 //   builtin:cubes        three partially overlapping transparent cubes sharing face planes
 //   builtin:cubes:separated  the same cubes nudged apart so no faces are coplanar
 //   builtin:volumes      intersecting transparent spheres with attenuation tau and albedo
@@ -29,6 +32,7 @@ Scene makeBuiltinScene(const std::string& spec);
 
 Scene makeLayersScene(int layers, float alpha = 0.5f);
 Scene makeCoplanarScene(int copies, float alpha = 0.5f);
+Scene makeShellsScene(int copies, bool roundoff);
 Scene makeCubesScene(bool separated);
 Scene makeVolumesScene();
 Scene makeDefaultScene();

@@ -83,6 +83,9 @@ struct Scene {
     std::optional<CameraPose> camera;
     glm::vec3 lightDirection = glm::normalize(glm::vec3(0.35f, 0.8f, 0.5f));  // towards the light, world
     glm::vec3 background{0.08f, 0.08f, 0.1f};                               // linear RGB
+    // Transparent surfaces whose eye depths differ by at most this many float ulps (relative)
+    // are one layer, composited in object order: the tie rule of render/depth_order.hpp.
+    double depthTieUlps = 64.0;
 
     int addMaterial(Material m) { materials.push_back(std::move(m)); return int(materials.size()) - 1; }
     int addMesh(Mesh m) { meshes.push_back(std::move(m)); return int(meshes.size()) - 1; }

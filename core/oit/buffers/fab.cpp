@@ -65,6 +65,7 @@ public:
             tailTargets_.bindForResolve(frame, tail);
             setUniforms(resolveProgram_.id(), frame);
             glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);
+            setDepthOrderUniforms(frame, resolveProgram_.id());
             drawFullscreen(frame, resolveProgram_.id());
             ++stats_.passes;
         }
@@ -98,7 +99,7 @@ private:
 }  // namespace
 
 TechniqueEntry fabEntry() {
-    TechniqueInfo info{"fab", "buffer", true, true, "2",
+    TechniqueInfo info{"fab", "buffer", false, true, "2",
                        "w*h*K*20 entries + w*h*4 counters + 16 (+ w*h*20 with tail=1)",
                        "fixed-size per-pixel arrays of K entries with an atomic per-pixel counter (r32ui image); keeps "
                        "the first K fragments to arrive, counts the rest (dropped, or blended approximately with tail=1); "

@@ -71,6 +71,7 @@ public:
             tailTargets_.bindForResolve(frame, tail);
             setUniforms(resolveProgram_.id(), frame);
             glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);
+            setDepthOrderUniforms(frame, resolveProgram_.id());
             drawFullscreen(frame, resolveProgram_.id());
             ++stats_.passes;
         }

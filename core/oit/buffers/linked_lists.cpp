@@ -66,6 +66,7 @@ public:
             glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
             tailTargets_.bindForResolve(frame, tail);
             glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);
+            setDepthOrderUniforms(frame, resolveProgram_.id());
             drawFullscreen(frame, resolveProgram_.id());
             ++stats_.passes;
         }
@@ -95,7 +96,7 @@ private:
 }  // namespace
 
 TechniqueEntry llEntry() {
-    TechniqueInfo info{"ll", "buffer", true, true, "2",
+    TechniqueInfo info{"ll", "buffer", false, true, "2",
                        "w*h*capacity*24 node pool + w*h*4 heads + 16 (+ w*h*20 with tail=1)",
                        "per-pixel linked lists: head-pointer image, one global atomic counter, a fixed node pool "
                        "(capacity nodes per pixel on average, never grown); overflow counted and dropped or blended "

@@ -89,6 +89,7 @@ public:
             const GLuint resolve = resolveProgram_.id();
             glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uWidth"), GLuint(frame.size.x));
             glProgramUniform1i(resolve, glGetUniformLocation(resolve, "uTail"), 0);
+            setDepthOrderUniforms(frame, resolve);
             drawFullscreen(frame, resolve);
             ++stats_.passes;
         }
