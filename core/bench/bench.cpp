@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 namespace strata {
@@ -89,18 +90,38 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         report.coplanarityProbability = stats.coplanarityProbability();
     }
 
+    // Every frame is compared as soon as it is read back, against the reference frame for the same
+    // camera, so no more than two frames are held whatever the frame count. The reference renders
+    // first; its technique object is kept to render the reference frames the other techniques need.
+    // Without a camera path every frame has the same camera and one reference frame serves them all.
     FrameRenderer renderer;
-    std::vector<Image> referenceImages;
+    std::unique_ptr<Technique> reference;
+    Image referenceImage;
+    int referenceKey = -1;  // the frame the reference image shows (0 for every frame of a fixed camera)
+    auto keyOf = [&](int f) { return options.cameraPath ? f : 0; };
+    auto referenceFor = [&](int f) -> const Image& {
+        if (referenceKey != keyOf(f)) {
+            FrameOptions untimed;
+            untimed.timePasses = false;
+            renderer.render(scene, cameras[f], options.size, reference.get(), untimed);
+            gl::checkGl("bench reference frame");
+            referenceImage = renderer.readOutput();
+            referenceKey = keyOf(f);
+        }
+        return referenceImage;
+    };
     for (std::size_t m = 0; m < modes.size(); ++m) {
         const std::string& id = modes[m];
         if (options.progress)
             options.progress("bench: [" + std::to_string(m + 1) + "/" + std::to_string(modes.size()) + "] " + id);
-        auto technique = createTechnique(id);
-        applyParameters(*technique, options.parameters);
+        std::unique_ptr<Technique> owned = createTechnique(id);
+        applyParameters(*owned, options.parameters);
+        Technique* technique = owned.get();
+        if (m == 0) reference = std::move(owned);
 
         FrameOptions frameOptions;
         frameOptions.countFragments = true;
-        for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique.get(), frameOptions);
+        for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique, frameOptions);
         gl::checkGl(("bench warm-up of " + id).c_str());
 
         BenchMode mode;
@@ -111,10 +132,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         std::vector<double> gpu, cpu, opaque;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
-        double sumSquares = 0.0;
-        std::size_t channels = 0;
+        ErrorAccumulator error;
         for (int f = 0; f < options.frames; ++f) {
-            FrameResult r = renderer.render(scene, cameras[f], options.size, technique.get(), frameOptions);
+            // The reference frame first (when it is not in hand), so the technique's frame is the
+            // last one rendered when its output is read.
+            if (m > 0) referenceFor(f);
+            FrameResult r = renderer.render(scene, cameras[f], options.size, technique, frameOptions);
             gl::checkGl(("bench frame of " + id).c_str());
             double techniqueMs = 0.0, opaqueMs = 0.0;
             std::map<std::string, double> frameByPass;
@@ -139,20 +162,27 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.fragmentsTail += r.stats.fragmentsTail;
 
             Image image = renderer.readOutput();
-            if (m == 0) referenceImages.push_back(image);
-            ImageDifference d = compareImages(image, referenceImages[f]);
-            sumSquares += d.rmse * d.rmse * double(image.width) * image.height * 3;
-            channels += std::size_t(image.width) * image.height * 3;
-            mode.maxAbsError = std::max(mode.maxAbsError, d.maxAbsError);
-            if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), image);
+            if (m == 0) {
+                // The reference against itself: zero by definition. Its frame is the one in hand.
+                error.add(image, image);
+                referenceImage = std::move(image);
+                referenceKey = keyOf(f);
+                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), referenceImage);
+            } else {
+                error.add(image, referenceImage);
+                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), image);
+            }
         }
+        // A fixed camera needs no more reference renders: free the reference's buffers now.
+        if (m == 0 && !options.cameraPath) reference.reset();
         mode.msMedian = percentile(gpu, 0.5);
         mode.msP95 = percentile(gpu, 0.95);
         mode.cpuMsMedian = percentile(cpu, 0.5);
         mode.opaqueMsMedian = percentile(opaque, 0.5);
         for (const auto& name : passOrder) mode.passMsMedian.emplace_back(name, percentile(perPass[name], 0.5));
-        mode.rmse = channels ? std::sqrt(sumSquares / double(channels)) : 0.0;
-        mode.psnr = mode.rmse > 0.0 ? std::min(100.0, 20.0 * std::log10(1.0 / mode.rmse)) : 100.0;
+        mode.rmse = error.rmse();
+        mode.psnr = error.psnr();
+        mode.maxAbsError = error.maxAbsError();
         mode.robustnessRatio = mode.fragmentsTotal ? double(mode.fragmentsCaptured) / double(mode.fragmentsTotal) : 1.0;
         if (m > 0 || referenceRequested) report.modes.push_back(std::move(mode));
     }

@@ -3,6 +3,9 @@
 // frames (a camera path or a fixed view), and reports cost (GPU ms from timer queries, CPU wall
 // ms, passes, bytes) and loss (fragments captured against the shared count, RMSE/PSNR/max error
 // against the reference in linear RGB). Warm-up frames are rendered and not recorded.
+// Each frame is compared as soon as it is read back and only running sums are kept, so memory
+// does not grow with the frame count. With a camera path, each technique frame is preceded by the
+// reference frame for the same camera (untimed); with a fixed camera the reference renders once.
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"

@@ -54,6 +54,28 @@ ImageDifference compareImages(const Image& a, const Image& b, float threshold) {
     return d;
 }
 
+ImageDifference ErrorAccumulator::add(const Image& image, const Image& reference) {
+    ImageDifference d = compareImages(image, reference);
+    add(d, std::size_t(image.width) * std::size_t(image.height) * 3);
+    return d;
+}
+
+void ErrorAccumulator::add(const ImageDifference& difference, std::size_t channels) {
+    // compareImages's rmse is sqrt(sum of squares / channels): undo the mean to sum over frames.
+    sumSquares_ += difference.rmse * difference.rmse * double(channels);
+    channels_ += channels;
+    maxAbsError_ = std::max(maxAbsError_, difference.maxAbsError);
+}
+
+double ErrorAccumulator::rmse() const {
+    return channels_ ? std::sqrt(sumSquares_ / double(channels_)) : 0.0;
+}
+
+double ErrorAccumulator::psnr() const {
+    double e = rmse();
+    return e > 0.0 ? std::min(100.0, 20.0 * std::log10(1.0 / e)) : 100.0;
+}
+
 void writeImage(const fs::path& path, const Image& image) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);

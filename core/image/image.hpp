@@ -36,6 +36,27 @@ struct ImageDifference {
 // Compares RGB (alpha ignored) through OpenImageIO. Throws if the sizes differ.
 ImageDifference compareImages(const Image& a, const Image& b, float threshold = 1.0f / 255.0f);
 
+// Error over a run of frames, fed one frame at a time and holding no image: the RMSE over every
+// frame's RGB channels together (as if the frames were one image) and the largest difference of
+// any channel in any frame. Frames may differ in size.
+class ErrorAccumulator {
+public:
+    // Compares one frame (through compareImages) and adds it; returns that frame's difference.
+    ImageDifference add(const Image& image, const Image& reference);
+    // Adds a difference computed elsewhere over `channels` RGB values.
+    void add(const ImageDifference& difference, std::size_t channels);
+
+    double rmse() const;
+    double psnr() const;          // dB, peak 1.0; 100 when nothing differs (as compareImages)
+    double maxAbsError() const { return maxAbsError_; }
+    std::size_t channels() const { return channels_; }
+
+private:
+    double sumSquares_ = 0.0;
+    std::size_t channels_ = 0;
+    double maxAbsError_ = 0.0;
+};
+
 // Writes .png (sRGB 8-bit) or .exr (linear half). Writes to a temporary name and renames,
 // so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
 void writeImage(const std::filesystem::path& path, const Image& image);

@@ -1,0 +1,254 @@
+#!/usr/bin/env bash
+# Strata on whatever GPU EGL finds: the GL tests, then a fixed bench set, into one report folder.
+#   builtin:layers:N for N in 4 8 16 32 64 at 1280x720, 1920x1080 and 3840x2160 (every technique),
+#   and the shipped scenes/*.json at 1920x1080 when their models (../shared/scenes-data) are present.
+# Each bench keeps its JSON, CSV, table and stderr under runs/; README.md holds the device, the test
+# result and summary tables, and is rewritten after every step, so a run cut short still reports
+# what it did. A failing or timed-out bench is recorded and the run goes on; the exit status is 1
+# if anything failed.
+#
+# usage: scripts/gpu_check.sh [--quick] [--strata PATH] [--tests PATH] [--frames N] [--warmup N]
+#                             [--sizes WxH,..] [--layers N,..] [--timeout S] [--skip-tests]
+#                             [--scenes-data DIR] [OUT_DIR]
+#   OUT_DIR        report folder (default gpu-check-report); an old report there is replaced
+#   --quick        a tiny subset to try the script anywhere (llvmpipe): 256x256, layers 4 and 8 and
+#                  the scenes, 2 frames, 1 warm-up
+#   --strata PATH  the strata executable ($STRATA, default build/viewer/strata)
+#   --tests PATH   the GL test executable ($STRATA_GL_TESTS, default build/tests/strata_gl_tests)
+#   --frames N --warmup N   recorded and warm-up frames per technique (default 10 and 2)
+#   --sizes, --layers       replace the default sizes or layer counts (to split a run in parts)
+#   --timeout S    limit per bench and for the tests, seconds (default 900)
+#   --scenes-data DIR       the scene models (default ../shared/scenes-data beside the repository,
+#                  else scenes-data beside the strata executable); without them the scenes are skipped
+# From a GPU bundle (../shared/tools/README.md; add the models: cp -r ../shared/scenes-data .gpu/),
+# in the folder that holds .gpu/:
+#   LD_LIBRARY_PATH=$PWD/.gpu/lib STRATA_SHADER_DIR=$PWD/.gpu/shaders \
+#     scripts/gpu_check.sh --strata .gpu/strata --tests .gpu/strata_gl_tests
+# The whole set takes minutes on a GPU; --sizes and --layers split it into parts. Through a tool
+# that returns only a few files, pack the folder: tar czf report.tgz gpu-check-report
+set -uo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+strata=${STRATA:-$root/build/viewer/strata}
+tests=${STRATA_GL_TESTS:-$root/build/tests/strata_gl_tests}
+out=gpu-check-report
+quick=0
+frames=""
+warmup=""
+limit=900
+skip_tests=0
+scenes_data=""
+sizes_arg=""
+layers_arg=""
+while [[ $# -gt 0 ]]; do
+    case $1 in
+        --quick) quick=1; shift ;;
+        --strata) strata=$2; shift 2 ;;
+        --tests) tests=$2; shift 2 ;;
+        --frames) frames=$2; shift 2 ;;
+        --warmup) warmup=$2; shift 2 ;;
+        --timeout) limit=$2; shift 2 ;;
+        --sizes) sizes_arg=$2; shift 2 ;;
+        --layers) layers_arg=$2; shift 2 ;;
+        --skip-tests) skip_tests=1; shift ;;
+        --scenes-data) scenes_data=$2; shift 2 ;;
+        -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
+        -*) echo "gpu_check.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+        *) out=$1; shift ;;
+    esac
+done
+if ((quick)); then
+    sizes=(256x256); layers=(4 8); scene_size=256x256; frames=${frames:-2}; warmup=${warmup:-1}
+else
+    sizes=(1280x720 1920x1080 3840x2160); layers=(4 8 16 32 64); scene_size=1920x1080
+    frames=${frames:-10}; warmup=${warmup:-2}
+fi
+for v in "$frames" "$warmup" "$limit"; do
+    [[ $v =~ ^[0-9]+$ ]] || { echo "gpu_check.sh: '$v' is not a whole number" >&2; exit 2; }
+done
+[[ -n $sizes_arg ]] && IFS=, read -r -a sizes <<<"$sizes_arg"
+[[ -n $layers_arg ]] && IFS=, read -r -a layers <<<"$layers_arg"
+[[ -x $strata ]] || { echo "gpu_check.sh: no strata executable at $strata (build it, or give --strata)" >&2; exit 1; }
+strata=$(realpath "$strata")
+[[ -x $tests ]] && tests=$(realpath "$tests")
+if [[ -z $scenes_data ]]; then
+    scenes_data=$root/../shared/scenes-data
+    [[ -d $scenes_data ]] || scenes_data=$(dirname "$strata")/scenes-data
+fi
+[[ -d $scenes_data ]] && scenes_data=$(realpath "$scenes_data")
+
+# The report folder: made fresh; an old report (it has our marker) is replaced, anything else kept.
+if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) && ! -e $out/.strata-gpu-check ]]; then
+    echo "gpu_check.sh: $out exists and is not a gpu_check report; give another folder" >&2
+    exit 1
+fi
+rm -rf "$out"
+mkdir -p "$out/runs" || exit 1
+out=$(realpath "$out")
+touch "$out/.strata-gpu-check"
+cd "$root" || exit 1  # scene names in the reports stay relative to the repository
+# Mesa needs surfaceless without a display; strata asks NVIDIA's EGL for its device platform itself.
+export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
+
+started=$(date -u +%Y-%m-%dT%H:%M:%SZ)
+tests_status="not run"
+tests_summary=""
+device="unknown (no bench finished)"
+scenes_note=""
+benches=()   # name|scene|size|status|seconds, in run order
+failures=0
+
+note() { echo "gpu_check: $*"; }
+
+# The device from a bench's JSON: the three strings of its "device" object.
+device_of() {
+    awk '/"device": *\{/ {on=1; next} on && /\}/ {exit} on {
+           sub(/^ *"/, ""); key=$0; sub(/".*/, "", key); val=$0; sub(/^[^:]*: *"/, "", val); sub(/",? *$/, "", val); d[key]=val }
+         END { if (d["renderer"] != "") printf "%s (%s; %s)", d["renderer"], d["vendor"], d["version"] }' "$1"
+}
+
+# One markdown table from every finished bench's CSV: a row per bench, a column per technique.
+wide_table() {  # column-name printf-format
+    local files=() b name
+    for b in "${benches[@]}"; do
+        IFS='|' read -r name _ _ status _ <<<"$b"
+        [[ $status == ok ]] && files+=("runs/$name.csv")
+    done
+    ((${#files[@]})) || { echo "(no bench finished)"; return; }
+    (cd "$out" && awk -F, -v want="$1" -v fmt="$2" '
+        FNR == 1 { name = FILENAME; sub(/^runs\//, "", name); sub(/\.csv$/, "", name); rows[++nrows] = name
+                   for (i = 1; i <= NF; ++i) col[$i] = i; next }
+        { m = $col["mode"]; if (!(m in seen)) { seen[m] = 1; modes[++nmodes] = m }
+          v[name, m] = sprintf(fmt, $col[want]) ($col["overflowed"] == 1 ? " ovf" : "") }
+        END { printf "| bench |"; for (j = 1; j <= nmodes; ++j) printf " %s |", modes[j]; printf "\n|---|"
+              for (j = 1; j <= nmodes; ++j) printf "---:|"; printf "\n"
+              for (r = 1; r <= nrows; ++r) { printf "| %s |", rows[r]
+                  for (j = 1; j <= nmodes; ++j) printf " %s |", ((rows[r], modes[j]) in v) ? v[rows[r], modes[j]] : "-"
+                  printf "\n" } }' "${files[@]}")
+}
+
+write_readme() {
+    local b name scene size status secs ok=0
+    for b in "${benches[@]}"; do [[ $b == *"|ok|"* ]] && ok=$((ok + 1)); done
+    {
+        echo "# Strata GPU check"
+        echo
+        echo "- device: $device"
+        echo "- started $started, this summary written $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(uname -n)"
+        echo "- strata: \`$strata\`$( ((quick)) && echo " (--quick)")"
+        echo "- frames $frames, warm-up $warmup per technique; limit ${limit} s per bench"
+        echo "- GL tests: $tests_status (output in \`gl-tests.txt\`)"
+        [[ -n $tests_summary ]] && echo "  - $tests_summary"
+        echo "- benches: $ok of ${#benches[@]} finished${scenes_note:+; $scenes_note}"
+        echo
+        echo "Each bench's JSON, CSV, table and stderr are in \`runs/\`; \`all.csv\` has every row with"
+        echo "its bench's name in front. Times are GPU ms from timer queries (median over the frames);"
+        echo "\`ovf\` marks a technique that overflowed its buffers; errors are against \`abuffer\`."
+        echo
+        echo "## Benches"
+        echo
+        echo "| bench | scene | size | status | seconds |"
+        echo "|---|---|---|---|---:|"
+        for b in "${benches[@]}"; do
+            IFS='|' read -r name scene size status secs <<<"$b"
+            echo "| $name | \`$scene\` | $size | $status | $secs |"
+        done
+        echo
+        echo "## GPU ms (median) per technique"
+        echo
+        wide_table ms_median %.4g
+        echo
+        echo "## RMSE against the reference per technique"
+        echo
+        wide_table rmse %.2e
+    } >"$out/README.md.partial" && mv "$out/README.md.partial" "$out/README.md"
+}
+
+# bench NAME SCENE SIZE: one `strata bench` of every technique, recorded whatever happens.
+bench() {
+    local name=$1 scene=$2 size=$3 n=$4 total=$5 rc t0 secs status
+    note "[$n/$total] $name: $scene at $size ..."
+    t0=$(date +%s.%N)
+    timeout --kill-after=30 "$limit" "$strata" bench "$scene" --modes all --size "$size" \
+        --frames "$frames" --warmup "$warmup" --json "$out/runs/$name.json" --csv "$out/runs/$name.csv" \
+        >"$out/runs/$name.txt" 2>"$out/runs/$name.err"
+    rc=$?
+    secs=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+    if ((rc == 0)) && [[ -s $out/runs/$name.json && -s $out/runs/$name.csv ]]; then
+        status=ok
+        [[ $device == unknown* ]] && device=$(device_of "$out/runs/$name.json")
+        [[ -e $out/all.csv ]] || sed -n '1s/^/bench,/p' "$out/runs/$name.csv" >"$out/all.csv"
+        awk -v b="$name" 'NR > 1 { print b "," $0 }' "$out/runs/$name.csv" >>"$out/all.csv"
+    else
+        failures=$((failures + 1))
+        if ((rc == 124 || rc == 137)); then status="FAILED: timed out after ${limit} s"
+        else status="FAILED (exit $rc): $(tail -n 1 "$out/runs/$name.err" | tr '|' '/' | cut -c1-160)"; fi
+    fi
+    benches+=("$name|$scene|$size|$status|$secs")
+    note "[$n/$total] $name: $status (${secs} s)"
+    write_readme
+}
+
+note "report in $out"
+{
+    echo "strata: $strata"
+    echo "tests: $tests"
+    echo "uname: $(uname -a)"
+    for v in EGL_PLATFORM LD_LIBRARY_PATH STRATA_SHADER_DIR __EGL_VENDOR_LIBRARY_FILENAMES; do echo "$v=${!v-}"; done
+    if command -v nvidia-smi >/dev/null; then
+        nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv 2>&1
+    fi
+} >"$out/environment.txt"
+write_readme
+
+# The GL tests first: a driver that fails them makes the numbers below suspect.
+if ((skip_tests)); then
+    tests_status="skipped (--skip-tests)"
+elif [[ ! -x $tests ]]; then
+    tests_status="FAILED: no test executable at $tests"
+    echo "$tests_status" >"$out/gl-tests.txt"
+    failures=$((failures + 1))
+else
+    note "GL tests: $tests ..."
+    timeout --kill-after=30 "$limit" "$tests" >"$out/gl-tests.txt" 2>&1
+    rc=$?
+    tests_summary=$(grep -E '^\[doctest\] (test cases|assertions):' "$out/gl-tests.txt" | sed 's/^\[doctest\] //; s/  */ /g' | sed 's/ *|* *$//' | paste -sd ';' - | sed 's/;/; /')
+    if ((rc == 0)); then tests_status="passed"
+    elif ((rc == 124 || rc == 137)); then tests_status="FAILED: timed out after ${limit} s"; failures=$((failures + 1))
+    else tests_status="FAILED (exit $rc)"; failures=$((failures + 1)); fi
+    note "GL tests: $tests_status${tests_summary:+ ($tests_summary)}"
+fi
+write_readme
+
+# The bench set.
+todo=()
+for size in "${sizes[@]}"; do
+    for n in "${layers[@]}"; do todo+=("layers-$n-$size|builtin:layers:$n|$size"); done
+done
+scene_files=("$root"/scenes/*.json)
+if [[ -d $scenes_data ]]; then
+    for f in "${scene_files[@]}"; do
+        [[ -e $f ]] || continue
+        s=scenes/$(basename "$f")
+        # The shipped descriptions name their models relative to themselves (../../shared/scenes-data);
+        # models elsewhere get a copy of the description that names them by absolute path.
+        if [[ $scenes_data != $(realpath -m "$root/../shared/scenes-data") ]]; then
+            mkdir -p "$out/scenes"
+            sed "s#\\.\\./\\.\\./shared/scenes-data/#$scenes_data/#g" "$f" >"$out/scenes/$(basename "$f")"
+            s=$out/scenes/$(basename "$f")
+        fi
+        todo+=("$(basename "$f" .json)-$scene_size|$s|$scene_size")
+    done
+else
+    scenes_note="scenes/*.json skipped: no models at $scenes_data"
+    note "$scenes_note"
+fi
+i=0
+for t in "${todo[@]}"; do
+    i=$((i + 1))
+    IFS='|' read -r name scene size <<<"$t"
+    bench "$name" "$scene" "$size" "$i" "${#todo[@]}"
+done
+
+write_readme
+note "done: $failures failure(s); summary in $out/README.md"
+((failures == 0))
