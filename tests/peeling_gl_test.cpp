@@ -173,6 +173,30 @@ TEST_CASE("skipping is conservative: skip on and off agree on intersecting and c
     }
 }
 
+TEST_CASE("skipping is conservative with the eye inside an object's bounds and beside them") {
+    // The box queries draw only the far faces (f2b) or near faces (dual's second side) of a box
+    // the eye is outside of, and both faces when it is inside. Eye at the spheres' centre
+    // (inside both boxes), then just outside the boxes, looking at them.
+    Fixture f(makeBuiltinScene("shells:2"));
+    for (glm::vec3 eye : {glm::vec3(0.3f, -0.2f, -4.0f), glm::vec3(0.3f, -0.2f, -2.9f)}) {
+        CAPTURE(eye);
+        Camera camera = f.camera;
+        camera.position = eye;
+        camera.orientation = glm::angleAxis(glm::radians(15.0f), glm::vec3(0, 1, 0));
+        camera.nearPlane = 0.01f;
+        camera.farPlane = 20.0f;
+        glm::ivec2 size(32, 24);
+        for (const char* id : {"f2b", "f2b2", "dual"}) {
+            CAPTURE(id);
+            auto without = test::renderWith(*f.gpu, camera, size, *make(id, {"skip_peeled=0"}));
+            auto with = test::renderWith(*f.gpu, camera, size, *make(id, {"skip_peeled=1"}));
+            CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
+            CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
+            CHECK(with.result.stats.passes == without.result.stats.passes);
+        }
+    }
+}
+
 TEST_CASE("bun: exact while every bucket holds at most two fragments, loses the rest honestly") {
     Fixture f(makeLayersScene(16, 0.3f));
     glm::ivec2 size(20, 12);

@@ -63,6 +63,8 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     // Parts of a box in front of the near plane (the eye inside it) or past the far plane still
     // rasterize, clamped, so the test stays conservative.
     glEnable(GL_DEPTH_CLAMP);
+    // The unit cube's triangles (ensureBox) wind clockwise seen from outside.
+    glFrontFace(GL_CW);
     glUseProgram(boxProgram_.id());
     glProgramUniformMatrix4fv(boxProgram_.id(), boxViewProj_, 1, GL_FALSE, glm::value_ptr(frame.viewProjection));
     glBindTextureUnit(peel_bindings::kPrevious, remaining);
@@ -79,10 +81,23 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
         glm::vec3 lo = b.min - pad, hi = b.max + pad;
         glProgramUniform3fv(boxProgram_.id(), boxMin_, 1, glm::value_ptr(lo));
         glProgramUniform3fv(boxProgram_.id(), boxMax_, 1, glm::value_ptr(hi));
+        // Seen from outside, each pixel the box covers has one near and one far face, and the
+        // witness for each side is on one of them: the far face holds the box's farthest point
+        // (side 0: is anything not nearer than r?), the near face its nearest (side 1). So only
+        // that face is drawn, half the fragments. With the eye inside the box there are no near
+        // faces in front of it: then both are drawn, as the depth clamp makes them count.
+        const glm::vec3 eye = frame.camera.position;
+        const bool eyeInside = glm::all(glm::greaterThanEqual(eye, lo)) && glm::all(glm::lessThanEqual(eye, hi));
         auto& pending = pending_[o].queries;
         pending.clear();
         for (RemainingSide side : sides) {
             GLuint q = nextQuery();
+            if (eyeInside) {
+                glDisable(GL_CULL_FACE);
+            } else {
+                glEnable(GL_CULL_FACE);
+                glCullFace(side == RemainingSide::NotNearerThanR ? GL_FRONT : GL_BACK);
+            }
             glProgramUniform1i(boxProgram_.id(), boxSide_, side == RemainingSide::NotNearerThanR ? 0 : 1);
             glBeginQuery(GL_ANY_SAMPLES_PASSED, q);
             glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
@@ -92,6 +107,8 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
         }
     }
     glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
