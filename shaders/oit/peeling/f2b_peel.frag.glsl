@@ -1,8 +1,9 @@
 #version 450 core
 // Front-to-back peel pass: among the fragments strictly behind the previous layer (reversed-Z:
 // depth strictly less than the last peeled depth) and in front of the opaque depth, the regular
-// depth test (GL_GREATER against a per-pass buffer cleared to 0) keeps the nearest. Every
-// fragment still to be peeled bumps a counter, so the host knows when this layer was the last.
+// depth test (GL_GREATER against a per-pass buffer cleared to 0) keeps the nearest. On the
+// first layer every fragment bumps a counter: the total the host peels down to (later passes
+// need no atomics: what remains is the total less what was captured, see front_to_back.cpp).
 // DEPTH_ONLY (f2b2's pre-pass): no colour output, the shading pass follows with GL_EQUAL.
 // No early_fragment_tests: the discards below must happen before the depth write.
 #include "surface.glsl"
@@ -22,7 +23,7 @@ void main() {
     float z = gl_FragCoord.z;
     if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
     if (!uFirstLayer && z >= texelFetch(uPreviousDepth, pixel, 0).r) discard;
-    atomicCounterIncrement(uRemaining);
+    if (uFirstLayer) atomicCounterIncrement(uRemaining);
 #ifndef DEPTH_ONLY
     outColor = surfaceColor();
 #endif
