@@ -49,17 +49,17 @@ public:
                 break;
             }
             int cur = layer % 2;
-            peel(frame, layer, cur);
+            bool anyLeft = peel(frame, layer, cur);
             if (layer == 0) firstRemaining = remaining = readCounter();
-            if (remaining == 0) break;
+            if (remaining == 0 || !anyLeft) break;
             std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
             stats_.fragmentsCaptured += captured;
             if (captured >= remaining || captured == 0) break;
             // What lies strictly behind this layer: what lay behind the previous one less the one
             // fragment per pixel just captured. Counting it on the GPU would cost an atomic per
             // fragment per pass (a third of a peel pass on llvmpipe). Coincident fragments, which
-            // f2b drops, make this an overestimate: the loop then ends on a pass that captures
-            // nothing, one pass later than an exact count would.
+            // f2b drops, make this an overestimate: the loop then ends on the peel that finds
+            // nothing left (its ANY_SAMPLES_PASSED query), as an exact count would.
             remaining -= captured;
             skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
         }
@@ -89,6 +89,7 @@ private:
         counter_ = gl::Buffer::create();
         glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+        anyLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
 
     void ensureTargets(glm::ivec2 size) {
@@ -110,9 +111,11 @@ private:
         }
     }
 
-    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur]. The first layer
-    // also counts every fragment in front of the opaque depth (readCounter).
-    void peel(const FrameContext& frame, int layer, int cur) {
+    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur]; returns whether any
+    // fragment was left to peel (exact whatever the order: the first fragment left at a pixel
+    // always passes the depth test against the cleared buffer). The first layer also counts
+    // every fragment in front of the opaque depth (readCounter).
+    bool peel(const FrameContext& frame, int layer, int cur) {
         gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 depth" : "f2b peel");
         if (layer == 0) {
             GLuint zero = 0;
@@ -137,11 +140,16 @@ private:
         glBindTextureUnit(peel_bindings::kPrevious, depth_[1 - cur].id());
         glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
         glProgramUniform1i(peelProgram_.id(), firstLayerLocation_, layer == 0 ? 1 : 0);
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, anyLeft_.id());
         skipper_.draw(frame, peelProgram_, stats_);
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_FALSE);
         ++stats_.passes;
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        GLuint any = 0;
+        glGetQueryObjectuiv(anyLeft_.id(), GL_QUERY_RESULT, &any);
+        return any != 0;
     }
 
     std::uint64_t readCounter() {
@@ -212,7 +220,7 @@ private:
     gl::Program blendProgram_, compositeProgram_;
     GLint firstLayerLocation_ = -1;
     gl::Buffer counter_;
-    gl::Query samples_;
+    gl::Query samples_, anyLeft_;
     glm::ivec2 size_{0, 0};
     gl::Texture accum_, layerColor_, depth_[2];
     gl::Framebuffer accumFbo_, fbo_[2];
