@@ -1,6 +1,6 @@
 // The approximate family (wboit, stochastic) and the bench's floor row: errors reported and
 // finite, stochastic noise falling with the sample count, exact limits where the estimators
-// are exact, and the floor's closed form (opaque + sum of alpha * colour).
+// are exact, and the floor (every fragment counted, the opaque image left as it was).
 #include "gl_test_support.hpp"
 
 #include "bench/bench.hpp"
@@ -71,7 +71,7 @@ TEST_CASE("wboit and stochastic: bench errors reported, finite and non-zero on 4
             CHECK(std::isfinite(m[k].get<double>()));
         }
         CHECK(m["rmse"].get<double>() > 1e-3);  // 4 distinct colours: none of them is exact
-        if (id != "floor") CHECK(m["rmse"].get<double>() < 0.5);  // the floor's sum is not meant to be close
+        if (id != "floor") CHECK(m["rmse"].get<double>() < 0.5);  // the floor's image is the opaque one
         // Every fragment is blended once in their final pass: the shared count exactly.
         CHECK(m["fragments_captured"] == m["fragments_total"]);
         CHECK(m["fragments_total"] == 4 * 32 * 24 * 2);
@@ -79,8 +79,9 @@ TEST_CASE("wboit and stochastic: bench errors reported, finite and non-zero on 4
     CHECK(row(report, "wboit").passes == 2);
     CHECK(row(report, "stochastic").passes == 3);
     CHECK(row(report, "floor").passes == 1);
-    CHECK(row(report, "wboit").bytes == 32u * 24u * 18u);
-    CHECK(row(report, "stochastic").bytes == 32u * 24u * (8u * 4u + 20u));
+    // Default precision 16: RGBA16F accumulation + R16F revealage/transmittance, 10 B per pixel.
+    CHECK(row(report, "wboit").bytes == 32u * 24u * 10u);
+    CHECK(row(report, "stochastic").bytes == 32u * 24u * (8u * 4u + 10u));
 }
 
 TEST_CASE("stochastic RMSE falls as the sample count grows") {
@@ -90,7 +91,7 @@ TEST_CASE("stochastic RMSE falls as the sample count grows") {
     for (int s : {1, 4, 16, 64}) {
         BenchReport r = benchLayers(8, 0.3f, {"stochastic"}, {64, 64}, {"stochastic.samples=" + std::to_string(s)});
         rmse.push_back(row(r, "stochastic").rmse);
-        CHECK(row(r, "stochastic").bytes == 64u * 64u * (std::uint64_t(s) * 4u + 20u));
+        CHECK(row(r, "stochastic").bytes == 64u * 64u * (std::uint64_t(s) * 4u + 10u));
     }
     MESSAGE("stochastic rmse at S = 1, 4, 16, 64: " << rmse[0] << " " << rmse[1] << " " << rmse[2] << " " << rmse[3]);
     CHECK(rmse[1] < rmse[0]);
@@ -143,9 +144,10 @@ TEST_CASE("wboit's depth weight equations 7 to 10 all run and stay finite") {
     CHECK_THROWS_AS(setParameter(*technique, "weight=6"), std::invalid_argument);
 }
 
-TEST_CASE("floor adds every fragment: opaque + sum of alpha * colour, and counts them all") {
-    // Layer quads face the light (0, 0, 1): shading factor exactly 1, so each layer adds
-    // alpha * paletteColor(i). alpha 1 shows that nothing occludes (no depth writes, no "over").
+TEST_CASE("floor counts every fragment once and leaves the opaque image") {
+    // It shades every fragment into a scratch target nobody reads; the output stays the opaque
+    // image (here the background), whatever alpha does. Exact fragment counts on more layers and
+    // sizes: precision_gl_test.cpp.
     for (float alpha : {0.5f, 1.0f}) {
         for (int n : {2, 3}) {
             CAPTURE(alpha);
@@ -154,14 +156,13 @@ TEST_CASE("floor adds every fragment: opaque + sum of alpha * colour, and counts
             glm::ivec2 size(16, 12);
             auto r = test::renderWith(*f.gpu, f.camera, size, "floor");
             glm::vec3 expected = f.gpu->scene().background;
-            for (int i = 0; i < n; ++i) expected += alpha * paletteColor(i);
             float worst = 0.0f;
             for (int y = 0; y < size.y; ++y)
                 for (int x = 0; x < size.x; ++x) {
                     glm::vec4 p = r.image.at(x, y);
                     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(p[c] - expected[c]));
                 }
-            CHECK(worst <= 1e-5f);
+            CHECK(worst == 0.0f);
             REQUIRE(r.result.fragmentsTotal.has_value());
             CHECK(r.result.stats.fragmentsCaptured == *r.result.fragmentsTotal);
             CHECK(r.result.stats.fragmentsCaptured == std::uint64_t(n) * size.x * size.y);

@@ -86,9 +86,11 @@ void drawTechnique(const PanelState& state, PanelRequests& requests) {
             // A 64-bit field: capacities can exceed an int.
             double lo = std::max(p.min, -9.0e18), hi = std::min(p.max, 9.0e18);
             std::int64_t v = std::int64_t(std::llround(*p.value));
-            const std::int64_t step = 1, stepFast = 16;
-            if (ImGui::InputScalar(p.name.c_str(), ImGuiDataType_S64, &v, &step, &stepFast))
-                *p.value = std::clamp(double(v), lo, hi);
+            const std::int64_t step = p.step > 0 ? std::int64_t(p.step) : 1, stepFast = 16 * step;
+            if (ImGui::InputScalar(p.name.c_str(), ImGuiDataType_S64, &v, &step, &stepFast)) {
+                double snapped = p.step > 0 ? p.min + std::round((double(v) - p.min) / p.step) * p.step : double(v);
+                *p.value = std::clamp(snapped, lo, hi);
+            }
         } else {
             double v = *p.value;
             double range = p.max - p.min;

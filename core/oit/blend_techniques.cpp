@@ -1,8 +1,16 @@
 // The blending baselines: one geometry pass with fixed-function "over" blending, in submission
 // order (blend-unsorted) or with objects sorted back to front (blend-sorted). Both are exact only
 // when no two objects overlap out of order; neither resolves intersecting or coplanar surfaces.
+//
+// precision=32 blends straight into the RGBA32F output. precision=16 blends into an RGBA16F
+// scratch target sharing the opaque depth: the opaque colour is blitted in, the pass blends,
+// and the result is blitted back (two full-screen copies against one float32 blend per
+// fragment).
 #include "oit/draw_transparent.hpp"
+#include "oit/precision.hpp"
 #include "oit/technique_families.hpp"
+
+#include <stdexcept>
 
 namespace strata {
 namespace {
@@ -12,42 +20,77 @@ public:
     BlendTechnique(TechniqueInfo info, bool sorted) : info_(std::move(info)), sorted_(sorted) {}
     const TechniqueInfo& info() const override { return info_; }
 
+    std::vector<Parameter> parameters() override { return {precisionParameter(&precision_, "blend target")}; }
+
     void render(const FrameContext& frame) override {
         if (!program_.program) program_ = buildSceneProgram("oit/blend.frag.glsl");
         std::vector<int> order = sorted_ ? sortedBackToFront(frame) : frame.transparentOrder;
+        const bool half = isHalf(precision_);
+        stats_ = {};
+        stats_.passes = 1;
         gl::ScopedPass pass(frame.timer, "blend");
-        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        GLuint target = frame.targets.outputFramebuffer();
+        if (half) {
+            target = scratchFramebuffer(frame);
+            copyColor(frame, frame.targets.outputFramebuffer(), target);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
         setTransparentDepthState(frame);
         glEnable(GL_BLEND);
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-        stats_ = {};
-        stats_.passes = 1;
         // Every fragment that passes the depth test is blended: an occlusion query counts them.
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         stats_.objectDraws = drawTransparent(frame, program_, order);
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
+        if (half) copyColor(frame, target, frame.targets.outputFramebuffer());
         GLuint64 blended = 0;
         glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
         stats_.fragmentsCaptured = blended;
+        stats_.bytes = half ? std::uint64_t(frame.size.x) * frame.size.y * floatTexelBytes(precision_, 4) : 0;
     }
 
 private:
+    GLuint scratchFramebuffer(const FrameContext& frame) {
+        if (frame.size != scratchSize_ || !scratchFbo_) {
+            scratch_ = gl::createTexture2D(GL_RGBA16F, frame.size.x, frame.size.y);
+            scratchFbo_ = gl::Framebuffer::create();
+            glNamedFramebufferTexture(scratchFbo_.id(), GL_COLOR_ATTACHMENT0, scratch_.id(), 0);
+            scratchSize_ = frame.size;
+        }
+        // The frame targets may have been reallocated since the last frame: attach every time.
+        glNamedFramebufferTexture(scratchFbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+        if (glCheckNamedFramebufferStatus(scratchFbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw std::runtime_error("blend: RGBA16F scratch framebuffer incomplete");
+        return scratchFbo_.id();
+    }
+
+    static void copyColor(const FrameContext& frame, GLuint from, GLuint to) {
+        glBlitNamedFramebuffer(from, to, 0, 0, frame.size.x, frame.size.y, 0, 0, frame.size.x, frame.size.y,
+                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+
     TechniqueInfo info_;
     bool sorted_;
+    double precision_ = 32;
     SceneProgram program_;
     gl::Query samples_;
+    gl::Texture scratch_;
+    gl::Framebuffer scratchFbo_;
+    glm::ivec2 scratchSize_{0, 0};
 };
 
 TechniqueEntry blendUnsortedEntry() {
-    TechniqueInfo info{"blend-unsorted", "baseline", false, false, "1", "none",
+    TechniqueInfo info{"blend-unsorted", "baseline", false, false, "1",
+                       "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending in submission order (wrong wherever objects arrive front to back)"};
     return {info, [info] { return std::make_unique<BlendTechnique>(info, false); }};
 }
 
 TechniqueEntry blendSortedEntry() {
-    TechniqueInfo info{"blend-sorted", "baseline", false, false, "1", "none",
+    TechniqueInfo info{"blend-sorted", "baseline", false, false, "1",
+                       "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending with objects sorted back to front by bounds centre"};
     return {info, [info] { return std::make_unique<BlendTechnique>(info, true); }};
 }

@@ -45,6 +45,7 @@ struct TechniqueStats {
 };
 
 // An integer or real knob with its range, driving the panel, --set key=value and JSON alike.
+// With step > 0 only min + k * step is accepted (e.g. precision 16 or 32).
 struct Parameter {
     std::string name;
     std::string help;
@@ -52,6 +53,7 @@ struct Parameter {
     double min;
     double max;
     bool integer;
+    double step = 0;
 };
 
 struct FrameContext {

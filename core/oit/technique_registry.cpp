@@ -55,6 +55,9 @@ void setParameter(Technique& technique, const std::string& assignment) {
         if (value < p.min || value > p.max || (p.integer && value != std::floor(value)))
             throw std::invalid_argument("parameter " + name + " = " + text + " outside [" + std::to_string(p.min) +
                                         ", " + std::to_string(p.max) + "]" + (p.integer ? " or not an integer" : ""));
+        if (p.step > 0 && std::fmod(value - p.min, p.step) != 0.0)
+            throw std::invalid_argument("parameter " + name + " = " + text + " is not " + std::to_string(p.min) +
+                                        " plus a multiple of " + std::to_string(p.step));
         *p.value = value;
         return;
     }

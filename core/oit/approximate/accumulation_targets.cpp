@@ -2,21 +2,23 @@
 
 #include "oit/approximate/approximate_bindings.hpp"
 #include "oit/draw_transparent.hpp"
+#include "oit/precision.hpp"
 
 #include <stdexcept>
 
 namespace strata::approximate {
 
-void AccumulationTargets::beginAccumulation(const FrameContext& frame) {
-    if (frame.size != size_ || !fbo_) {
-        accum_ = gl::createTexture2D(GL_RGBA32F, frame.size.x, frame.size.y);
-        transmittance_ = gl::createTexture2D(transmittanceFormat_, frame.size.x, frame.size.y);
+void AccumulationTargets::beginAccumulation(const FrameContext& frame, double precisionBits) {
+    if (frame.size != size_ || precisionBits != bits_ || !fbo_) {
+        accum_ = gl::createTexture2D(rgbaFloatFormat(precisionBits), frame.size.x, frame.size.y);
+        transmittance_ = gl::createTexture2D(redFloatFormat(precisionBits), frame.size.x, frame.size.y);
         fbo_ = gl::Framebuffer::create();
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
         glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, transmittance_.id(), 0);
         const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
         glNamedFramebufferDrawBuffers(fbo_.id(), 2, buffers);
         size_ = frame.size;
+        bits_ = precisionBits;
     }
     // The frame targets may have been reallocated since the last frame: attach every time.
     glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
@@ -41,12 +43,8 @@ void AccumulationTargets::endAccumulation() const {
     glBindTextureUnit(approximate_bindings::kTransmittance, transmittance_.id());
 }
 
-std::uint64_t AccumulationTargets::bytesPerPixel() const {
-    switch (transmittanceFormat_) {
-        case GL_R8: return 16 + 1;
-        case GL_R16F: return 16 + 2;
-        default: return 16 + 4;
-    }
+std::uint64_t AccumulationTargets::bytesPerPixel(double precisionBits) {
+    return floatTexelBytes(precisionBits, 4) + floatTexelBytes(precisionBits, 1);
 }
 
 }  // namespace strata::approximate

@@ -15,6 +15,7 @@
 #include "oit/approximate/approximate_bindings.hpp"
 #include "oit/approximate/approximate_entries.hpp"
 #include "oit/draw_transparent.hpp"
+#include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::approximate {
@@ -26,7 +27,8 @@ public:
     const TechniqueInfo& info() const override { return info_; }
 
     std::vector<Parameter> parameters() override {
-        return {{"samples", "S, stochastic samples per pixel (noise falls as 1/sqrt(S))", &samples_, 1, 64, true}};
+        return {{"samples", "S, stochastic samples per pixel (noise falls as 1/sqrt(S))", &samples_, 1, 64, true},
+                precisionParameter(&precision_, "accumulation and transmittance")};
     }
 
     void render(const FrameContext& frame) override {
@@ -60,7 +62,7 @@ public:
         }
         {
             gl::ScopedPass pass(frame.timer, "stochastic accumulate");
-            targets_.beginAccumulation(frame);
+            targets_.beginAccumulation(frame, precision_);
             glBindImageTexture(approximate_bindings::kSampleDepths, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
             // Every fragment in front of the opaque depth adds its (possibly zero) share.
             glBeginQuery(GL_SAMPLES_PASSED, query_.id());
@@ -75,7 +77,7 @@ public:
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 3;
-        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * (std::uint64_t(samples) * 4 + targets_.bytesPerPixel());
+        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * (std::uint64_t(samples) * 4 + AccumulationTargets::bytesPerPixel(precision_));
         GLuint64 blended = 0;
         glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &blended);
         stats_.fragmentsCaptured = blended;
@@ -89,8 +91,9 @@ private:
     gl::Texture sampleDepths_;
     glm::ivec2 depthsSize_{0, 0};
     int depthsLayers_ = 0;
-    AccumulationTargets targets_{GL_R32F};
+    AccumulationTargets targets_;
     double samples_ = 8;
+    double precision_ = 16;
 };
 
 }  // namespace

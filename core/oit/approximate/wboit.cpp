@@ -5,13 +5,25 @@
 // weight only favours nearer fragments, so the result is exact only for one layer or equal
 // colours. Default weight: the paper's equation (7), on eye distance reconstructed from the
 // reversed-Z window depth and the camera's near/far planes.
+//
+// Precision. A fragment adds up to alpha^2 * 3e3 (the weight clamp) to the accumulation's
+// alpha, and half float ends at 65504: 22 opaque-ish fragments at the clamp (eye distance below
+// ~0.3 scene units with equation 7) overflow RGBA16F (to infinity on GPUs; llvmpipe saturates,
+// which skews the colour). The claim holds (precision_gl_test: 64 such fragments, 24% off). At
+// precision=16 the weights are therefore scaled by 2^-4 (and the composite's clamp with them),
+// which cancels in the weighted average: ~350 such fragments fit, and the smallest weight
+// (alpha^2 * 1e-2 / 16) stays a normal half float down to alpha ~0.3 (a subnormal with steps of
+// 1.5e-3 of it at 0.25).
 #include "oit/approximate/accumulation_targets.hpp"
 #include "oit/approximate/approximate_entries.hpp"
 #include "oit/draw_transparent.hpp"
+#include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::approximate {
 namespace {
+
+constexpr float kHalfWeightScale = 1.0f / 16.0f;  // a power of two: the scaling itself is exact
 
 class Wboit final : public Technique {
 public:
@@ -20,7 +32,8 @@ public:
 
     std::vector<Parameter> parameters() override {
         return {{"weight", "the paper's depth weight: equation 7, 8, 9 (eye distance) or 10 (window depth)",
-                 &weightEquation_, 7, 10, true}};
+                 &weightEquation_, 7, 10, true},
+                precisionParameter(&precision_, "accumulation and revealage")};
     }
 
     void render(const FrameContext& frame) override {
@@ -34,9 +47,13 @@ public:
         glProgramUniform1f(program, glGetUniformLocation(program, "uNear"), frame.camera.nearPlane);
         glProgramUniform1f(program, glGetUniformLocation(program, "uFar"), frame.camera.farPlane);
         glProgramUniform1i(program, glGetUniformLocation(program, "uWeightEquation"), int(weightEquation_));
+        const float weightScale = isHalf(precision_) ? kHalfWeightScale : 1.0f;
+        glProgramUniform1f(program, glGetUniformLocation(program, "uWeightScale"), weightScale);
+        GLuint composite = compositeProgram_.id();
+        glProgramUniform1f(composite, glGetUniformLocation(composite, "uWeightScale"), weightScale);
         {
             gl::ScopedPass pass(frame.timer, "wboit accumulate");
-            targets_.beginAccumulation(frame);
+            targets_.beginAccumulation(frame, precision_);
             // Every fragment in front of the opaque depth is blended: an occlusion query counts them.
             glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
             stats_.objectDraws = drawTransparent(frame, accumulateProgram_, frame.transparentOrder);
@@ -50,7 +67,7 @@ public:
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 2;
-        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * targets_.bytesPerPixel();
+        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * AccumulationTargets::bytesPerPixel(precision_);
         GLuint64 blended = 0;
         glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
         stats_.fragmentsCaptured = blended;
@@ -61,16 +78,15 @@ private:
     SceneProgram accumulateProgram_;
     gl::Program compositeProgram_;
     gl::Query samples_;
-    // RGBA32F accumulation (the paper's RGBA16F overflows past ~20 layers at weight 3e3) and
-    // R16F revealage (finer than the paper's R8 at small alpha).
-    AccumulationTargets targets_{GL_R16F};
+    AccumulationTargets targets_;
     double weightEquation_ = 7;
+    double precision_ = 16;
 };
 
 }  // namespace
 
 TechniqueEntry wboitEntry() {
-    TechniqueInfo info{"wboit", "approximate", false, false, "2", "w*h*18 (RGBA32F accumulation + R16F revealage)",
+    TechniqueInfo info{"wboit", "approximate", false, false, "2", "w*h*10 at precision=16 (RGBA16F accumulation + R16F revealage); w*h*20 at 32 (RGBA32F + R32F)",
                        "weighted blended OIT (McGuire-Bavoil 2013): depth-weighted average colour, exact coverage"};
     return {info, [info] { return std::make_unique<Wboit>(info); }};
 }

@@ -1,5 +1,6 @@
 #include "oit/buffers/buffer_support.hpp"
 
+#include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::buffers {
@@ -21,10 +22,13 @@ std::array<std::uint32_t, 4> Counters::read() const {
     return values;
 }
 
+std::uint64_t TailTargets::bytesPerPixel() const { return floatTexelBytes(bits_, 4) + floatTexelBytes(bits_, 1); }
+
 void TailTargets::ensure(const FrameContext& frame) {
-    if (frame.size == size_ && depth_ == frame.targets.depth() && fbo_) return;
-    accum_ = gl::createTexture2D(GL_RGBA32F, frame.size.x, frame.size.y);
-    reveal_ = gl::createTexture2D(GL_R32F, frame.size.x, frame.size.y);
+    if (frame.size == size_ && depth_ == frame.targets.depth() && bits_ == allocatedBits_ && fbo_) return;
+    accum_ = gl::createTexture2D(rgbaFloatFormat(bits_), frame.size.x, frame.size.y);
+    reveal_ = gl::createTexture2D(redFloatFormat(bits_), frame.size.x, frame.size.y);
+    allocatedBits_ = bits_;
     fbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
     glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT1, reveal_.id(), 0);

@@ -33,11 +33,14 @@ private:
     gl::Buffer buffer_;
 };
 
-// Accumulation targets of the tail: RGBA32F sum(a*c, a) and R32F prod(1-a), sharing the opaque
-// depth so the store pass depth-tests as usual. 20 bytes per pixel.
+// Accumulation targets of the tail: sum(a*c, a) in RGBA and prod(1-a) in R, float at the
+// tail's precision (32: RGBA32F + R32F, 20 bytes per pixel; 16: RGBA16F + R16F, 10), sharing
+// the opaque depth so the store pass depth-tests as usual.
 class TailTargets {
 public:
-    static constexpr std::uint64_t kBytesPerPixel = 20;
+    // 16 or 32 (tailPrecisionParameter); takes effect at the next bind.
+    void setPrecision(double bits) { bits_ = bits; }
+    std::uint64_t bytesPerPixel() const;
     // Binds a framebuffer for a store pass: the tail targets (cleared on `clear`) when `enabled`,
     // else the output framebuffer with colour writes masked. Sets blending for the tail.
     void bindForStore(const FrameContext& frame, bool enabled, bool clear);
@@ -46,7 +49,7 @@ public:
     // Binds the tail textures for the resolve (also when disabled: the shader skips them).
     void bindForResolve(const FrameContext& frame, bool enabled);
     std::uint64_t bytes(bool enabled, glm::ivec2 size) const {
-        return enabled ? kBytesPerPixel * std::uint64_t(size.x) * size.y : 0;
+        return enabled ? bytesPerPixel() * std::uint64_t(size.x) * size.y : 0;
     }
 
 private:
@@ -55,6 +58,7 @@ private:
     gl::Framebuffer fbo_;
     glm::ivec2 size_{0, 0};
     GLuint depth_ = 0;
+    double bits_ = 32, allocatedBits_ = 0;
 };
 
 // The knobs every bounded buffer offers.
@@ -64,6 +68,11 @@ inline Parameter capacityParameter(double* value, double max, const char* help) 
 inline Parameter tailParameter(double* value) {
     return {"tail", "1: blend what overflows approximately (one weighted-average layer behind the kept ones); 0: drop it",
             value, 0, 1, true};
+}
+
+inline Parameter tailPrecisionParameter(double* value) {
+    return {"precision", "bits per channel of the tail's accumulation targets (with tail=1): 16 (half float) or 32",
+            value, 16, 32, true, 16};
 }
 
 // Barrier after a store pass that wrote images, buffers and counters.

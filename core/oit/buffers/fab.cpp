@@ -19,7 +19,7 @@ public:
 
     std::vector<Parameter> parameters() override {
         return {capacityParameter(&capacity_, 1024, "entries per pixel (K); fragments past the first K to arrive overflow"),
-                tailParameter(&tail_)};
+                tailParameter(&tail_), tailPrecisionParameter(&tailPrecision_)};
     }
 
     void render(const FrameContext& frame) override {
@@ -31,6 +31,7 @@ public:
         const auto k = std::uint64_t(capacity_);
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
         const bool tail = tail_ != 0;
+        tailTargets_.setPrecision(tailPrecision_);
         if (frame.size != countsSize_) {
             counts_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
             countsSize_ = frame.size;
@@ -94,13 +95,14 @@ private:
     TailTargets tailTargets_;
     double capacity_ = 8;
     double tail_ = 0;
+    double tailPrecision_ = 32;
 };
 
 }  // namespace
 
 TechniqueEntry fabEntry() {
     TechniqueInfo info{"fab", "buffer", false, true, "2",
-                       "w*h*K*20 entries + w*h*4 counters + 16 (+ w*h*20 with tail=1)",
+                       "w*h*K*20 entries + w*h*4 counters + 16 (+ w*h*20 with tail=1, w*h*10 with tail=1 precision=16)",
                        "fixed-size per-pixel arrays of K entries with an atomic per-pixel counter (r32ui image); keeps "
                        "the first K fragments to arrive, counts the rest (dropped, or blended approximately with tail=1); "
                        "resolve sorts by (depth, object, primitive)"};

@@ -26,7 +26,7 @@ public:
     std::vector<Parameter> parameters() override {
         // Bounded like the hardware k-buffer: each fragment walks the K slots in its insertion.
         return {capacityParameter(&capacity_, 64, "slots per pixel (K): the K nearest fragments are kept"),
-                tailParameter(&tail_)};
+                tailParameter(&tail_), tailPrecisionParameter(&tailPrecision_)};
     }
 
     void render(const FrameContext& frame) override {
@@ -38,6 +38,7 @@ public:
         const auto k = std::uint64_t(capacity_);
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
         const bool tail = tail_ != 0;
+        tailTargets_.setPrecision(tailPrecision_);
         if (slots_ != pixels * k) {
             gl::allocateBuffer(keys_, pixels * k * 4, GL_DYNAMIC_COPY, "kbuffer depth keys");
             gl::allocateBuffer(entries_, pixels * k * kEntryBytes, GL_DYNAMIC_COPY, "kbuffer entries");
@@ -97,13 +98,14 @@ private:
     TailTargets tailTargets_;
     double capacity_ = 8;
     double tail_ = 0;
+    double tailPrecision_ = 32;
 };
 
 }  // namespace
 
 TechniqueEntry kbufferEntry() {
     TechniqueInfo info{"kbuffer", "buffer", false, true, "3 (depth keys, attributes, resolve)",
-                       "w*h*K*(4+20) + 16 (+ w*h*20 with tail=1)",
+                       "w*h*K*(4+20) + 16 (+ w*h*20 with tail=1, w*h*10 with tail=1 precision=16)",
                        "k-buffer of the K nearest fragments per pixel, no interlock: lock-free 32-bit atomicMax "
                        "insertion of depth keys, then slots claimed by atomicCompSwap; what does not fit is dropped "
                        "(or blended approximately with tail=1); K bounded (max 64), so not robust"};

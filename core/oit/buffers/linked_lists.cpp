@@ -20,7 +20,7 @@ public:
 
     std::vector<Parameter> parameters() override {
         return {capacityParameter(&capacity_, 1024, "node pool size as nodes per pixel on average (pool = w*h*capacity)"),
-                tailParameter(&tail_)};
+                tailParameter(&tail_), tailPrecisionParameter(&tailPrecision_)};
     }
 
     void render(const FrameContext& frame) override {
@@ -32,6 +32,7 @@ public:
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
         const std::uint64_t pool = pixels * std::uint64_t(capacity_);
         const bool tail = tail_ != 0;
+        tailTargets_.setPrecision(tailPrecision_);
         if (pool > 0xFFFFFFFEull) throw std::runtime_error("ll: node pool of " + std::to_string(pool) + " nodes exceeds 32-bit indices");
         if (frame.size != headsSize_) {
             heads_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
@@ -91,13 +92,14 @@ private:
     TailTargets tailTargets_;
     double capacity_ = 8;
     double tail_ = 0;
+    double tailPrecision_ = 32;
 };
 
 }  // namespace
 
 TechniqueEntry llEntry() {
     TechniqueInfo info{"ll", "buffer", false, true, "2",
-                       "w*h*capacity*24 node pool + w*h*4 heads + 16 (+ w*h*20 with tail=1)",
+                       "w*h*capacity*24 node pool + w*h*4 heads + 16 (+ w*h*20 with tail=1, w*h*10 with tail=1 precision=16)",
                        "per-pixel linked lists: head-pointer image, one global atomic counter, a fixed node pool "
                        "(capacity nodes per pixel on average, never grown); overflow counted and dropped or blended "
                        "approximately (tail=1); resolve sorts by (depth, object, primitive)"};

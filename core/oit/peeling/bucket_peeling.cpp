@@ -13,6 +13,7 @@
 
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/peel_bindings.hpp"
+#include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -36,6 +37,7 @@ public:
             {"buckets", "uniform depth buckets per pixel (two fragments each)", &buckets_, 1, 2 * kMaxTargets, true},
             {"range_from_geometry", "0: depth range from the objects' bounding boxes; 1: from the geometry (one more "
              "geometry pass's worth of work, tighter buckets)", &rangeFromGeometry_, 0, 1, true},
+            precisionParameter(&precision_, "bucket colours (depths stay 32-bit)"),
         };
     }
 
@@ -55,7 +57,7 @@ public:
         glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counters_.id());
         glBindTextureUnit(bindings::kOpaqueDepth, frame.targets.depth());
         setBucketUniforms(frame, captureProgram_.id(), buckets);
-        setBucketUniforms(frame, colorProgram_.id(), buckets);
+        setBucketUniforms(frame, colorProgram().id(), buckets);
 
         range(frame);
         capture(frame);
@@ -69,8 +71,11 @@ public:
         stats_.fragmentsDropped = counts[0] > counts[1] ? counts[0] - counts[1] : 0;
         stats_.overflowed = stats_.fragmentsDropped > 0;
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        // Range RG32F (8 B), ceil(B/2) RGBA32F bucket depths (16 B), 2B RGBA16F colours (8 B).
-        stats_.bytes = pixels * (8 + std::uint64_t(targets) * 16 + std::uint64_t(buckets) * 2 * 8) + sizeof(zeros);
+        // Range RG32F (8 B), ceil(B/2) RGBA32F bucket depths (16 B), 2B colours (RGBA16F, 8 B, or
+        // RGBA32F, 16 B).
+        stats_.bytes = pixels * (8 + std::uint64_t(targets) * 16 +
+                                 std::uint64_t(buckets) * 2 * floatTexelBytes(precision_, 4)) +
+                       sizeof(zeros);
     }
 
 private:
@@ -79,7 +84,8 @@ private:
         rangeGeometryProgram_ = buildSceneProgram("oit/peeling/bun_range.frag.glsl");
         rangeBoxProgram_ = gl::buildProgram({"oit/peeling/bounds.vert.glsl", "oit/peeling/bun_range.frag.glsl"});
         captureProgram_ = buildSceneProgram("oit/peeling/bun_capture.frag.glsl", {{"MAX_TARGETS", std::to_string(kMaxTargets)}});
-        colorProgram_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl");
+        colorProgram_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl", {{"COLOR_FORMAT", "rgba16f"}});
+        colorProgram32_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl", {{"COLOR_FORMAT", "rgba32f"}});
         compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_composite.frag.glsl"});
         counters_ = gl::Buffer::create();
         glNamedBufferStorage(counters_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
@@ -99,9 +105,10 @@ private:
     }
 
     void ensureTargets(glm::ivec2 size, int buckets) {
-        if (size == size_ && buckets == allocatedBuckets_) return;
+        if (size == size_ && buckets == allocatedBuckets_ && precision_ == allocatedPrecision_) return;
         size_ = size;
         allocatedBuckets_ = buckets;
+        allocatedPrecision_ = precision_;
         int targets = (buckets + 1) / 2;
         range_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
         auto array = [&](GLenum format, int layers) {
@@ -112,7 +119,7 @@ private:
             return t;
         };
         bucketDepths_ = array(GL_RGBA32F, targets);
-        colors_ = array(GL_RGBA16F, 2 * buckets);
+        colors_ = array(rgbaFloatFormat(precision_), 2 * buckets);
         rangeFbo_ = gl::Framebuffer::create();
         glNamedFramebufferTexture(rangeFbo_.id(), GL_COLOR_ATTACHMENT0, range_.id(), 0);
         captureFbo_ = gl::Framebuffer::create();
@@ -189,8 +196,9 @@ private:
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glBindTextureUnit(peel_bindings::kPrevious, range_.id());
         glBindTextureUnit(peel_bindings::kLayer, bucketDepths_.id());
-        glBindImageTexture(peel_bindings::kBucketColors, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        stats_.objectDraws += drawTransparent(frame, colorProgram_, frame.transparentOrder);
+        glBindImageTexture(peel_bindings::kBucketColors, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           rgbaFloatFormat(precision_));
+        stats_.objectDraws += drawTransparent(frame, colorProgram(), frame.transparentOrder);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         ++stats_.passes;
     }
@@ -209,10 +217,14 @@ private:
         ++stats_.passes;
     }
 
+    const SceneProgram& colorProgram() const { return isHalf(precision_) ? colorProgram_ : colorProgram32_; }
+
     TechniqueInfo info_;
     double buckets_ = 8;
     double rangeFromGeometry_ = 0;
-    SceneProgram rangeGeometryProgram_, captureProgram_, colorProgram_;
+    double precision_ = 16;
+    double allocatedPrecision_ = 0;
+    SceneProgram rangeGeometryProgram_, captureProgram_, colorProgram_, colorProgram32_;
     gl::Program rangeBoxProgram_, compositeProgram_;
     gl::Buffer counters_, boxVertices_, boxIndices_;
     gl::VertexArray boxVao_;
@@ -226,7 +238,8 @@ private:
 
 TechniqueEntry bunEntry() {
     TechniqueInfo info{"bun", "peeling", false, false, "4 (range + capture + colour + composite)",
-                       "w*h*(8 + 16*ceil(B/2) + 16*B) B: range, bucket depths, two RGBA16F colours per bucket",
+                       "w*h*(8 + 16*ceil(B/2) + 16*B) B at precision=16: range, bucket depths, two RGBA16F colours "
+                       "per bucket; w*h*(8 + 16*ceil(B/2) + 32*B) B at 32 (RGBA32F colours)",
                        "uniform bucket peeling: B depth buckets keep their nearest and farthest fragment in one pass"};
     return {info, [info] { return std::make_unique<BucketPeeling>(info); }};
 }

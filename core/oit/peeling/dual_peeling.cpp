@@ -11,6 +11,7 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.hpp"
+#include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::peeling {
@@ -30,6 +31,7 @@ public:
              1, 1e6, true},
             {"skip_peeled", "1: skip objects whose bounds lie wholly outside the range left to peel (section 3.3)",
              &skipPeeled_, 0, 1, true},
+            precisionParameter(&precision_, "front and back layers and accumulations"),
         };
     }
 
@@ -65,9 +67,9 @@ public:
         skipper_.endFrame(stats_);
         stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        // Two RG32F min-max targets (8 B), front and back layers RGBA32F (16 B each), front and
-        // back accumulations RGBA32F (16 B each).
-        stats_.bytes = pixels * (2 * 8 + 2 * 16 + 2 * 16) + sizeof(zeros);
+        // Two RG32F min-max targets (8 B), front and back layers and front and back
+        // accumulations (RGBA16F, 8 B, or RGBA32F, 16 B, each).
+        stats_.bytes = pixels * (2 * 8 + 4 * floatTexelBytes(precision_, 4)) + sizeof(zeros);
     }
 
 private:
@@ -82,13 +84,17 @@ private:
     }
 
     void ensureTargets(glm::ivec2 size) {
-        if (size != size_) {
+        if (size != size_ || precision_ != allocatedPrecision_) {
             size_ = size;
+            allocatedPrecision_ = precision_;
+            // Depths stay 32-bit; colours (alpha + 1 in the layers: 1 to 2, steps of 2^-10 in
+            // half float) follow the precision.
+            const GLenum rgba = rgbaFloatFormat(precision_);
             for (auto& t : minMax_) t = gl::createTexture2D(GL_RG32F, size.x, size.y);
-            front_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
-            back_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
-            frontAccum_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
-            backAccum_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+            front_ = gl::createTexture2D(rgba, size.x, size.y);
+            back_ = gl::createTexture2D(rgba, size.x, size.y);
+            frontAccum_ = gl::createTexture2D(rgba, size.x, size.y);
+            backAccum_ = gl::createTexture2D(rgba, size.x, size.y);
             blendFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT0, frontAccum_.id(), 0);
             glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT1, backAccum_.id(), 0);
@@ -182,6 +188,8 @@ private:
     TechniqueInfo info_;
     double maxPasses_ = 1024;
     double skipPeeled_ = 1;
+    double precision_ = 32;
+    double allocatedPrecision_ = 0;
     SceneProgram initProgram_, peelProgram_;
     gl::Program blendProgram_, compositeProgram_;
     gl::Buffer counters_;
@@ -195,7 +203,8 @@ private:
 
 TechniqueEntry dualEntry() {
     TechniqueInfo info{"dual", "peeling", true, false, "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many blends + composite)",
-                       "w*h*80 B: 2 RG32F min-max + 2 RGBA32F layers + 2 RGBA32F accumulations; Table 1: 6 words",
+                       "w*h*48 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
+                       "(8 each); w*h*80 B at 32 (RGBA32F, 16 each); Table 1: 6 words",
                        "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
     return {info, [info] { return std::make_unique<DualPeeling>(info); }};
 }

@@ -15,6 +15,7 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.hpp"
+#include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::peeling {
@@ -31,6 +32,7 @@ public:
              1, 1e6, true},
             {"skip_peeled", "1: skip objects whose bounds lie wholly in front of the last peeled depth (section 3.3)",
              &skipPeeled_, 0, 1, true},
+            precisionParameter(&precision_, twoPass_ ? "accumulation" : "layer and accumulation targets"),
         };
     }
 
@@ -69,9 +71,10 @@ public:
         // Dropped: coincident fragments a strict depth test never peels (not an overflow), and
         // what max_passes left behind (an overflow).
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's RGBA16F layer (8 B), and the
-        // RGBA32F accumulation (16 B).
-        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + 16 : 2 * 4 + 8 + 16) + sizeof(GLuint);
+        // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's layer colour and the
+        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each).
+        const std::uint64_t rgba = floatTexelBytes(precision_, 4);
+        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + rgba : 2 * 4 + 2 * rgba) + sizeof(GLuint);
     }
 
 private:
@@ -93,11 +96,12 @@ private:
     }
 
     void ensureTargets(glm::ivec2 size) {
-        if (size == size_) return;
+        if (size == size_ && precision_ == allocatedPrecision_) return;
         size_ = size;
-        accum_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+        allocatedPrecision_ = precision_;
+        accum_ = gl::createTexture2D(rgbaFloatFormat(precision_), size.x, size.y);
         if (!twoPass_) {
-            layerColor_ = gl::createTexture2D(GL_RGBA16F, size.x, size.y);
+            layerColor_ = gl::createTexture2D(rgbaFloatFormat(precision_), size.x, size.y);
             accumFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
         }
@@ -216,6 +220,8 @@ private:
     bool twoPass_;
     double maxPasses_ = 1024;
     double skipPeeled_ = 1;
+    double precision_ = 32;
+    double allocatedPrecision_ = 0;
     SceneProgram peelProgram_, shadeProgram_;
     gl::Program blendProgram_, compositeProgram_;
     GLint firstLayerLocation_ = -1;
@@ -231,14 +237,16 @@ private:
 
 TechniqueEntry f2bEntry() {
     TechniqueInfo info{"f2b", "peeling", true, false, "2D+1 (D peels + D layer blends + composite)",
-                       "w*h*32 B: 2 depth (4) + layer RGBA16F (8) + accumulation RGBA32F (16); Table 1: 3 words",
+                       "w*h*24 B at precision=16: 2 depth (4) + layer and accumulation RGBA16F (8 each); "
+                       "w*h*40 B at 32 (RGBA32F, 16 each); Table 1: 3 words",
                        "front-to-back depth peeling, one layer per pass, strict depth test; skips peeled objects"};
     return {info, [info] { return std::make_unique<FrontToBack>(info, false); }};
 }
 
 TechniqueEntry f2b2Entry() {
     TechniqueInfo info{"f2b2", "peeling", true, false, "2D+1 (D depth pre-passes + D EQUAL shading passes + composite)",
-                       "w*h*32 B: 2 depth-stencil (8) + accumulation RGBA32F (16)",
+                       "w*h*24 B at precision=16: 2 depth-stencil (8) + accumulation RGBA16F (8); w*h*32 B at 32 "
+                       "(RGBA32F accumulation, 16)",
                        "front-to-back peeling with a depth-only pre-pass and early-z GL_EQUAL shading per layer"};
     return {info, [info] { return std::make_unique<FrontToBack>(info, true); }};
 }

@@ -11,6 +11,7 @@ layout(location = 1) out vec4 outRevealage;
 uniform float uNear;
 uniform float uFar;
 uniform int uWeightEquation;  // 7, 8, 9 (view depth) or 10 (window depth) of the paper
+uniform float uWeightScale = 1.0;  // 1/16 in half float: keeps sums of weights up to 3e3 finite
 
 // Eye distance from reversed-Z window depth: z_w = n (f - d) / (d (f - n))  =>  d = n f / (z_w (f - n) + n).
 float viewDepth(float windowDepth) {
@@ -34,7 +35,7 @@ float depthWeight(float alpha) {
 
 void main() {
     vec4 c = surfaceColor();
-    float w = depthWeight(c.a);
+    float w = depthWeight(c.a) * uWeightScale;
     outAccum = vec4(c.rgb * c.a, c.a) * w;
     outRevealage = vec4(c.a);
 }

@@ -6,7 +6,11 @@
 
 layout(early_fragment_tests) in;
 layout(binding = BIND_PEEL_LAYER) uniform sampler2DArray uBucketDepths;
-layout(binding = BIND_BUCKET_COLORS, rgba16f) uniform writeonly image2DArray uColors;
+// COLOR_FORMAT: rgba16f or rgba32f, the precision parameter's (the host defines it).
+#ifndef COLOR_FORMAT
+#define COLOR_FORMAT rgba16f
+#endif
+layout(binding = BIND_BUCKET_COLORS, COLOR_FORMAT) uniform writeonly image2DArray uColors;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
