@@ -18,7 +18,6 @@ namespace strata::peeling {
 namespace {
 
 // Counter slots (shaders: offsets 0, 4, 8).
-constexpr int kTotal = 0, kInterior = 1, kCaptured = 2;
 
 class DualPeeling final : public Technique {
 public:
@@ -40,10 +39,6 @@ public:
         ensureTargets(frame.size);
         stats_ = {};
         skipper_.beginFrame(frame, skipPeeled_ != 0);
-        const GLuint zeros[3] = {0, 0, 0};
-        glNamedBufferSubData(counters_.id(), 0, sizeof(zeros), zeros);
-        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counters_.id());
-
         std::uint64_t total = initialise(frame);
         if (total > 0) {
             const float clearAccum[4] = {0, 0, 0, 1};
@@ -55,32 +50,32 @@ public:
                     break;
                 }
                 int cur = pass % 2;
-                std::uint64_t interior = peel(frame, cur);
-                blend(frame);
-                if (interior == 0) break;
+                peel(frame, cur);
+                if (!blend(frame, cur)) break;
                 skipper_.query(frame, minMax_[cur].id(),
                                {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
             }
             composite(frame);
-            stats_.fragmentsCaptured = readCounter(kCaptured);
         }
         skipper_.endFrame(stats_);
         stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Two RG32F min-max targets (8 B), front and back layers and front and back
         // accumulations (RGBA16F, 8 B, or RGBA32F, 16 B, each).
-        stats_.bytes = pixels * (2 * 8 + 4 * floatTexelBytes(precision_, 4)) + sizeof(zeros);
+        stats_.bytes = pixels * (2 * 8 + 4 * floatTexelBytes(precision_, 4));
     }
 
 private:
     void ensurePrograms() {
         if (initProgram_.program) return;
         initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
+        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         peelProgram_ = buildSceneProgram("oit/peeling/dual_peel.frag.glsl");
         blendProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_blend.frag.glsl"});
         compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_composite.frag.glsl"});
-        counters_ = gl::Buffer::create();
-        glNamedBufferStorage(counters_.id(), 3 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+        frontLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
+        backLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
+        interiorLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
 
     void ensureTargets(glm::ivec2 size) {
@@ -126,39 +121,37 @@ private:
         glBlendEquation(GL_MAX);
     }
 
-    std::uint64_t readCounter(int slot) {
-        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-        GLuint value = 0;
-        glGetNamedBufferSubData(counters_.id(), GLintptr(slot * sizeof(GLuint)), sizeof(GLuint), &value);
-        return value;
-    }
-
     std::uint64_t initialise(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, "dual init");
         bindPeelTargets(frame, 0, false);
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         skipper_.draw(frame, initProgram_, stats_);
+        glEndQuery(GL_SAMPLES_PASSED);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        return readCounter(kTotal);
+        GLuint64 total = 0;
+        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &total);
+        return total;
     }
 
     // Peels the front and back layers using minMax_[1 - cur]; the next range goes to
-    // minMax_[cur]. Returns the fragments strictly inside the range (left for later passes).
-    std::uint64_t peel(const FrameContext& frame, int cur) {
+    // minMax_[cur].
+    void peel(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "dual peel");
-        GLuint zero = 0;
-        glNamedBufferSubData(counters_.id(), kInterior * sizeof(GLuint), sizeof(GLuint), &zero);
         bindPeelTargets(frame, cur, true);
         glBindTextureUnit(peel_bindings::kPrevious, minMax_[1 - cur].id());
         skipper_.draw(frame, peelProgram_, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        return readCounter(kInterior);
     }
 
-    void blend(const FrameContext& frame) {
+    // Blends the layers just peeled and adds them to fragmentsCaptured; returns whether any
+    // pixel has fragments left strictly inside the next range (minMax_[cur]). Three full-screen
+    // draws under occlusion queries (dual_blend.frag.glsl): counting with atomics instead cost
+    // half of this pass on llvmpipe.
+    bool blend(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "dual blend");
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
@@ -169,9 +162,30 @@ private:
         glBlendFuncSeparatei(1, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
         glBindTextureUnit(peel_bindings::kLayer, front_.id());
         glBindTextureUnit(peel_bindings::kBack, back_.id());
-        drawFullscreen(frame, blendProgram_.id());
+        glBindTextureUnit(peel_bindings::kPrevious, minMax_[cur].id());
+        const GLuint program = blendProgram_.id();
+        const GLint step = glGetUniformLocation(program, "uStep");
+        auto drawStep = [&](int s, bool front, bool back, GLenum target, GLuint query) {
+            glColorMaski(0, front, front, front, front);
+            glColorMaski(1, back, back, back, back);
+            glProgramUniform1i(program, step, s);
+            glBeginQuery(target, query);
+            drawFullscreen(frame, program);
+            glEndQuery(target);
+        };
+        drawStep(0, true, false, GL_SAMPLES_PASSED, frontLayers_.id());
+        drawStep(1, false, true, GL_SAMPLES_PASSED, backLayers_.id());
+        drawStep(2, false, false, GL_ANY_SAMPLES_PASSED, interiorLeft_.id());
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDisable(GL_BLEND);
         ++stats_.passes;
+        GLuint64 front = 0, back = 0;
+        GLuint left = 0;
+        glGetQueryObjectui64v(frontLayers_.id(), GL_QUERY_RESULT, &front);
+        glGetQueryObjectui64v(backLayers_.id(), GL_QUERY_RESULT, &back);
+        glGetQueryObjectuiv(interiorLeft_.id(), GL_QUERY_RESULT, &left);
+        stats_.fragmentsCaptured += front + back;
+        return left != 0;
     }
 
     void composite(const FrameContext& frame) {
@@ -192,7 +206,7 @@ private:
     double allocatedPrecision_ = 0;
     SceneProgram initProgram_, peelProgram_;
     gl::Program blendProgram_, compositeProgram_;
-    gl::Buffer counters_;
+    gl::Query samples_, frontLayers_, backLayers_, interiorLeft_;
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
     gl::Framebuffer peelFbo_, blendFbo_;

@@ -5,12 +5,13 @@
 // front layer, one at the farthest the back layer. When only one fragment is left the two
 // depths are equal and it goes to the front only, so it is counted once. All three targets use
 // MAX blending: -2 and 0 are neutral, and colours carry alpha + 1 so that presence is visible.
+// Nothing is counted here: an atomic per fragment per pass is a large share of a pass. The blend
+// pass counts the pixels whose next range is not empty, once per pixel.
 #include "surface.glsl"
 #include "peel_bindings.glsl"
 
 layout(early_fragment_tests) in;
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;
-layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uInterior;
 
 layout(location = 0) out vec2 outMinMax;
 layout(location = 1) out vec4 outFront;
@@ -26,7 +27,6 @@ void main() {
     outFront = vec4(0.0);
     outBack = vec4(0.0);
     if (z < nearest && z > farthest) {
-        atomicCounterIncrement(uInterior);
         outMinMax = vec2(z, -z);
         return;
     }
