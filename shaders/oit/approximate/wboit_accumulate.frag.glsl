@@ -18,18 +18,22 @@ float viewDepth(float windowDepth) {
     return uNear * uFar / (windowDepth * (uFar - uNear) + uNear);
 }
 
+// Integer powers as products: pow() is exp2(log2()) per call, a third of this pass on llvmpipe.
+float sq(float x) { return x * x; }
+float cube(float x) { return x * x * x; }
+
 float depthWeight(float alpha) {
     float z = viewDepth(gl_FragCoord.z);
     float w;
     if (uWeightEquation == 8)
-        w = 10.0 / (1e-5 + pow(z / 10.0, 3.0) + pow(z / 200.0, 6.0));
+        w = 10.0 / (1e-5 + cube(z / 10.0) + cube(sq(z / 200.0)));
     else if (uWeightEquation == 9)
-        w = 0.03 / (1e-5 + pow(z / 200.0, 4.0));
+        w = 0.03 / (1e-5 + sq(sq(z / 200.0)));
     else if (uWeightEquation == 10)
         // The paper's d(z) is conventional window depth (0 near, 1 far): 1 - d = reversed-Z depth.
-        return alpha * max(1e-2, 3e3 * pow(gl_FragCoord.z, 3.0));
+        return alpha * max(1e-2, 3e3 * cube(gl_FragCoord.z));
     else
-        w = 10.0 / (1e-5 + pow(z / 5.0, 2.0) + pow(z / 200.0, 6.0));
+        w = 10.0 / (1e-5 + sq(z / 5.0) + cube(sq(z / 200.0)));
     return alpha * clamp(w, 1e-2, 3e3);
 }
 
