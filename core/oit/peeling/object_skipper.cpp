@@ -4,7 +4,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 
 namespace strata::peeling {
@@ -24,92 +24,125 @@ GLuint ObjectSkipper::nextQuery() {
     return pool_[poolUsed_++].id();
 }
 
-void ObjectSkipper::ensureBox() {
-    if (boxProgram_) return;
-    boxProgram_ = gl::buildProgram({"oit/peeling/bounds.vert.glsl", "oit/peeling/bounds_query.frag.glsl"});
-    boxMin_ = glGetUniformLocation(boxProgram_.id(), "uBoxMin");
-    boxMax_ = glGetUniformLocation(boxProgram_.id(), "uBoxMax");
-    boxViewProj_ = glGetUniformLocation(boxProgram_.id(), "uViewProj");
-    boxSide_ = glGetUniformLocation(boxProgram_.id(), "uSide");
-    const std::array<float, 24> corners = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-    const std::array<GLuint, 36> indices = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6, 0, 4, 5, 0, 5, 1,
-                                            3, 2, 6, 3, 6, 7, 0, 3, 7, 0, 7, 4, 1, 5, 6, 1, 6, 2};
-    boxVao_ = gl::VertexArray::create();
-    boxVertices_ = gl::Buffer::create();
-    boxIndices_ = gl::Buffer::create();
-    glNamedBufferStorage(boxVertices_.id(), sizeof(corners), corners.data(), 0);
-    glNamedBufferStorage(boxIndices_.id(), sizeof(indices), indices.data(), 0);
-    GLuint vao = boxVao_.id();
-    glVertexArrayVertexBuffer(vao, 0, boxVertices_.id(), 0, 3 * sizeof(float));
-    glVertexArrayElementBuffer(vao, boxIndices_.id());
-    glEnableVertexArrayAttrib(vao, 0);
-    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribBinding(vao, 0, 0);
+void ObjectSkipper::ensurePrograms() {
+    if (reduceProgram_) return;
+    reduceProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bound_reduce.frag.glsl"});
+    rectProgram_ = gl::buildProgram({"oit/peeling/bounds_rect.vert.glsl", "oit/peeling/bounds_query.frag.glsl"});
+    rectLocation_ = glGetUniformLocation(rectProgram_.id(), "uRect");
+    sideLocation_ = glGetUniformLocation(rectProgram_.id(), "uSide");
+    boxFarLocation_ = glGetUniformLocation(rectProgram_.id(), "uBoxFar");
+    boxNearLocation_ = glGetUniformLocation(rectProgram_.id(), "uBoxNear");
+    glProgramUniform1i(reduceProgram_.id(), glGetUniformLocation(reduceProgram_.id(), "uBlock"), kBlock);
+    emptyVao_ = gl::VertexArray::create();
+}
+
+void ObjectSkipper::ensureReducedTarget(glm::ivec2 size) {
+    const glm::ivec2 reduced = (size + kBlock - 1) / kBlock;
+    if (reduced == reducedSize_) return;
+    reducedSize_ = reduced;
+    reduced_ = gl::createTexture2D(GL_RG32F, reduced.x, reduced.y);
+    reduceFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(reduceFbo_.id(), GL_COLOR_ATTACHMENT0, reduced_.id(), 0);
+    // The queries rasterize into a framebuffer with no attachments, so the reduced bound they
+    // sample is never also a render target.
+    queryFbo_ = gl::Framebuffer::create();
+    glNamedFramebufferParameteri(queryFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, reduced.x);
+    glNamedFramebufferParameteri(queryFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, reduced.y);
+}
+
+ObjectSkipper::ScreenBox ObjectSkipper::screenBox(const FrameContext& frame, const Bounds& b) const {
+    // Inflated so that round-off between this projection and the rasterized geometry (a flat
+    // quad has a flat box) never puts the geometry outside the box's depth range or rectangle.
+    glm::vec3 extent = b.max - b.min;
+    float pad = 1e-4f * glm::length(extent) + 1e-6f * (1.0f + glm::length(b.center()));
+    glm::vec3 lo = b.min - pad, hi = b.max + pad;
+    ScreenBox box;
+    glm::vec2 pmin(1e30f), pmax(-1e30f);
+    float dmin = 1e30f, dmax = -1e30f;
+    bool behindEye = false;
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 corner((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+        glm::vec4 clip = frame.viewProjection * glm::vec4(corner, 1.0f);
+        if (!(clip.w > 1e-6f)) {
+            behindEye = true;
+            continue;
+        }
+        glm::vec3 ndc = glm::vec3(clip) / clip.w;
+        pmin = glm::min(pmin, glm::vec2(ndc));
+        pmax = glm::max(pmax, glm::vec2(ndc));
+        dmin = std::min(dmin, ndc.z);
+        dmax = std::max(dmax, ndc.z);
+    }
+    // Geometry is clipped to the near and far planes: its depths lie in [0, 1] (reversed-Z:
+    // 1 near). A box reaching behind the eye projects without bound: then the whole screen and
+    // the whole depth range, which never culls.
+    if (behindEye) {
+        box.rect = glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f);
+        box.farDepth = 0.0f;
+        box.nearDepth = 1.0f;
+        return box;
+    }
+    box.farDepth = std::clamp(dmin, 0.0f, 1.0f);
+    box.nearDepth = std::clamp(dmax, 0.0f, 1.0f);
+    // Whole reduced pixels covering the rectangle, with one more on each side for round-off.
+    const glm::vec2 reduced(reducedSize_);
+    const glm::vec2 full(frame.size);
+    glm::vec2 t0 = glm::floor((pmin * 0.5f + 0.5f) * full / float(kBlock)) - 1.0f;
+    glm::vec2 t1 = glm::ceil((pmax * 0.5f + 0.5f) * full / float(kBlock)) + 1.0f;
+    t0 = glm::clamp(t0, glm::vec2(0.0f), reduced);
+    t1 = glm::clamp(t1, glm::vec2(0.0f), reduced);
+    box.rect = glm::vec4(t0 / reduced * 2.0f - 1.0f, t1 / reduced * 2.0f - 1.0f);
+    box.empty = !(t1.x > t0.x && t1.y > t0.y);
+    return box;
 }
 
 void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std::vector<RemainingSide>& sides) {
     if (!enabled_) return;
-    ensureBox();
+    ensurePrograms();
+    ensureReducedTarget(frame.size);
     gl::ScopedPass pass(frame.timer, "skip queries");
-    // The output framebuffer only gives the boxes somewhere to rasterize: nothing is written
-    // (colour masked, no depth test or writes) and none of the peel textures is attached.
-    glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-    glViewport(0, 0, frame.size.x, frame.size.y);
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    // Parts of a box in front of the near plane (the eye inside it) or past the far plane still
-    // rasterize, clamped, so the test stays conservative.
-    glEnable(GL_DEPTH_CLAMP);
-    // The unit cube's triangles (ensureBox) wind clockwise seen from outside.
-    glFrontFace(GL_CW);
-    glUseProgram(boxProgram_.id());
-    glProgramUniformMatrix4fv(boxProgram_.id(), boxViewProj_, 1, GL_FALSE, glm::value_ptr(frame.viewProjection));
+    glBindVertexArray(emptyVao_.id());
+
+    // The bound's block maxima: one small pass instead of a full-resolution box per object.
+    glBindFramebuffer(GL_FRAMEBUFFER, reduceFbo_.id());
+    glViewport(0, 0, reducedSize_.x, reducedSize_.y);
     glBindTextureUnit(peel_bindings::kPrevious, remaining);
-    glBindVertexArray(boxVao_.id());
+    glUseProgram(reduceProgram_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    // One rectangle per live object and side, under an occlusion query.
+    glBindFramebuffer(GL_FRAMEBUFFER, queryFbo_.id());
+    glBindTextureUnit(peel_bindings::kPrevious, reduced_.id());
+    const GLuint program = rectProgram_.id();
+    glUseProgram(program);
     const auto& objects = frame.scene.objects();
     for (int o : frame.transparentOrder) {
         if (culled_[o]) continue;
         const Bounds& b = objects[o].worldBounds;
         if (b.empty()) continue;
-        // Inflated so that the box's faces are never rasterized nearer than a surface lying on
-        // them (a flat quad has a flat box) and its outline covers every pixel the object does.
-        glm::vec3 extent = b.max - b.min;
-        float pad = 1e-4f * glm::length(extent) + 1e-6f * (1.0f + glm::length(b.center()));
-        glm::vec3 lo = b.min - pad, hi = b.max + pad;
-        glProgramUniform3fv(boxProgram_.id(), boxMin_, 1, glm::value_ptr(lo));
-        glProgramUniform3fv(boxProgram_.id(), boxMax_, 1, glm::value_ptr(hi));
-        // Seen from outside, each pixel the box covers has one near and one far face, and the
-        // witness for each side is on one of them: the far face holds the box's farthest point
-        // (side 0: is anything not nearer than r?), the near face its nearest (side 1). So only
-        // that face is drawn, half the fragments. With the eye inside the box there are no near
-        // faces in front of it: then both are drawn, as the depth clamp makes them count.
-        const glm::vec3 eye = frame.camera.position;
-        const bool eyeInside = glm::all(glm::greaterThanEqual(eye, lo)) && glm::all(glm::lessThanEqual(eye, hi));
+        const ScreenBox box = screenBox(frame, b);
+        glProgramUniform4fv(program, rectLocation_, 1, glm::value_ptr(box.rect));
+        glProgramUniform1f(program, boxFarLocation_, box.farDepth);
+        glProgramUniform1f(program, boxNearLocation_, box.nearDepth);
         auto& pending = pending_[o].queries;
         pending.clear();
         for (RemainingSide side : sides) {
             GLuint q = nextQuery();
-            if (eyeInside) {
-                glDisable(GL_CULL_FACE);
-            } else {
-                glEnable(GL_CULL_FACE);
-                glCullFace(side == RemainingSide::NotNearerThanR ? GL_FRONT : GL_BACK);
-            }
-            glProgramUniform1i(boxProgram_.id(), boxSide_, side == RemainingSide::NotNearerThanR ? 0 : 1);
+            glProgramUniform1i(program, sideLocation_, side == RemainingSide::NotNearerThanR ? 0 : 1);
+            // An empty rectangle (the object off screen) draws nothing: the query reads 0.
             glBeginQuery(GL_ANY_SAMPLES_PASSED, q);
-            glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
+            if (!box.empty) glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
             glEndQuery(GL_ANY_SAMPLES_PASSED);
             pending.push_back(q);
             ++boxDraws_;
         }
     }
-    glDisable(GL_DEPTH_CLAMP);
-    glDisable(GL_CULL_FACE);
-    glFrontFace(GL_CCW);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glViewport(0, 0, frame.size.x, frame.size.y);
 }
 
 void ObjectSkipper::draw(const FrameContext& frame, const SceneProgram& program, TechniqueStats& stats) {

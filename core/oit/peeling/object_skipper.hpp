@@ -1,12 +1,17 @@
 #pragma once
 // Skipping of fully peeled objects (depth-fighting paper, section 3.3). After a peel pass the
 // per-pixel bound of what is left to peel is known (f2b: the last peeled depth; dual: the next
-// nearest and farthest depths). An object whose (slightly inflated) bounding box has no sample
-// on the remaining side of that bound anywhere cannot contribute again. Each live object's box
-// is drawn under an occlusion query; the next pass draws the object under conditional rendering
-// on that query (GL_QUERY_WAIT: the GPU waits, the CPU does not), and once a result is known on
-// the CPU to be zero the object stays culled for the rest of the frame (a box behind the bound
-// stays behind it: the remaining range only shrinks) and gets no more queries.
+// nearest and farthest depths). An object whose (slightly inflated) bounding box lies wholly on
+// the peeled side of that bound over its screen rectangle cannot contribute again.
+//
+// The test runs at reduced resolution: one pass reduces the bound to its maxima over
+// kBlock x kBlock pixel blocks (the conservative side), then each live object's screen rectangle
+// (in those blocks) is drawn with the box's depth range under an occlusion query. That costs
+// 1 / kBlock^2 of drawing each box at full resolution, which for large flat objects (a stack of
+// layers) cost as much as a peel pass. The next pass draws the object under conditional
+// rendering on that query (GL_QUERY_WAIT: the GPU waits, the CPU does not), and once a result
+// is known on the CPU to be zero the object stays culled for the rest of the frame (the
+// remaining range only shrinks) and gets no more queries.
 //
 // Counting is exact, not guessed: a draw skipped on the CPU is counted when skipped; a draw
 // issued under conditional rendering is counted as skipped after the frame if and only if its
@@ -41,7 +46,7 @@ public:
     // objectDrawsSkipped. Call once the frame's passes are issued.
     void endFrame(TechniqueStats& stats);
 
-    // Bounding-box draws issued for queries this frame (their cost is not an object draw).
+    // Query rectangles issued this frame, one per live object and side (not object draws).
     std::uint64_t boxDraws() const { return boxDraws_; }
 
 private:
@@ -52,8 +57,19 @@ private:
         GLuint query;
     };
 
+    // An object's inflated bounding box on screen: its rectangle in NDC, snapped outwards to
+    // whole reduced pixels, and its window depth range (reversed-Z) clipped to [0, 1].
+    struct ScreenBox {
+        glm::vec4 rect{-1.0f, -1.0f, 1.0f, 1.0f};
+        float farDepth = 0.0f, nearDepth = 1.0f;
+        bool empty = false;
+    };
+    static constexpr int kBlock = 8;
+
     GLuint nextQuery();
-    void ensureBox();
+    void ensurePrograms();
+    void ensureReducedTarget(glm::ivec2 size);
+    ScreenBox screenBox(const FrameContext& frame, const Bounds& b) const;
 
     bool enabled_ = false;
     std::vector<bool> culled_;
@@ -62,10 +78,12 @@ private:
     std::vector<gl::Query> pool_;
     std::size_t poolUsed_ = 0;
     std::uint64_t boxDraws_ = 0;
-    gl::Program boxProgram_;
-    GLint boxMin_ = -1, boxMax_ = -1, boxViewProj_ = -1, boxSide_ = -1;
-    gl::VertexArray boxVao_;
-    gl::Buffer boxVertices_, boxIndices_;
+    gl::Program reduceProgram_, rectProgram_;
+    GLint rectLocation_ = -1, sideLocation_ = -1, boxFarLocation_ = -1, boxNearLocation_ = -1;
+    gl::VertexArray emptyVao_;
+    glm::ivec2 reducedSize_{0, 0};
+    gl::Texture reduced_;
+    gl::Framebuffer reduceFbo_, queryFbo_;
 };
 
 }  // namespace strata::peeling
