@@ -131,6 +131,27 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
     CHECK(compareImages(tiled.image, whole.image).maxAbsError == 0.0);
 }
 
+TEST_CASE("abuffer's compute resolve gives the fragment resolve's image, whole and in tiles") {
+    // Coincident shells (the tie rule), a long list (the selection walk) and tiles whose
+    // sizes are not multiples of the 8x8 work groups.
+    for (const char* spec : {"shells:3:roundoff", "layers:70", "default"}) {
+        CAPTURE(spec);
+        Fixture f(makeBuiltinScene(spec));
+        glm::ivec2 size(37, 29);
+        auto fragment = test::renderWith(*f.gpu, f.camera, size, "abuffer");
+        for (const char* blockMiB : {"0", "0.05"}) {
+            CAPTURE(blockMiB);
+            auto technique = createTechnique("abuffer");
+            setParameter(*technique, "compute_resolve=1");
+            setParameter(*technique, std::string("max_block_mib=") + blockMiB);
+            auto compute = test::renderWith(*f.gpu, f.camera, size, *technique);
+            if (std::string(blockMiB) != "0" && std::string(spec) == "layers:70") CHECK(compute.result.stats.tiles > 1);
+            CHECK(compareImages(compute.image, fragment.image).maxAbsError == 0.0);
+            CHECK(compute.result.stats.fragmentsCaptured == fragment.result.stats.fragmentsCaptured);
+        }
+    }
+}
+
 TEST_CASE("abuffer resolves lists longer than the register array exactly") {
     Fixture f(makeLayersScene(80));  // past LOCAL_CAPACITY = 64: the selection walk
     glm::ivec2 size(8, 8);

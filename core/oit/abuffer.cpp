@@ -27,6 +27,8 @@ public:
             {"initial_nodes", "node pool capacity on the first frame (0: two per pixel); it grows as needed", &initialNodes_, 0, 1e9, true},
             {"max_block_mib", "largest node pool in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
              &maxBlockMiB_, 0, 1e6, false},
+            {"compute_resolve", "1: resolve in a compute dispatch instead of a full-screen fragment pass (same image)",
+             &computeResolve_, 0, 1, true},
         };
     }
 
@@ -34,6 +36,7 @@ public:
         if (!storeProgram_.program) {
             storeProgram_ = buildSceneProgram("oit/abuffer_store.frag.glsl");
             resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"});
+            computeResolveProgram_ = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"});
             capacityLocation_ = glGetUniformLocation(storeProgram_.id(), "uCapacity");
             counter_ = gl::Buffer::create();
             glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
@@ -141,6 +144,10 @@ private:
     }
 
     void resolve(const FrameContext& frame, const Tile& tile) {
+        if (computeResolve_ != 0) {
+            resolveCompute(frame, tile);
+            return;
+        }
         gl::ScopedPass pass(frame.timer, "abuffer resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         glEnable(GL_SCISSOR_TEST);
@@ -154,9 +161,28 @@ private:
         ++stats_.passes;
     }
 
+    void resolveCompute(const FrameContext& frame, const Tile& tile) {
+        gl::ScopedPass pass(frame.timer, "abuffer resolve (compute)");
+        const GLuint program = computeResolveProgram_.id();
+        glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindImageTexture(bindings::kResolveOutput, frame.targets.outputColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                           GL_RGBA32F);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
+        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        setDepthOrderUniforms(frame, program);
+        glProgramUniform4i(program, glGetUniformLocation(program, "uTile"), tile.origin.x, tile.origin.y, tile.size.x,
+                           tile.size.y);
+        glUseProgram(program);
+        glDispatchCompute(GLuint((tile.size.x + 7) / 8), GLuint((tile.size.y + 7) / 8), 1);
+        // The output is read next as a texture or framebuffer attachment (blit, read-back).
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        ++stats_.passes;
+    }
+
     TechniqueInfo info_;
     SceneProgram storeProgram_;
-    gl::Program resolveProgram_;
+    gl::Program resolveProgram_, computeResolveProgram_;
     GLint capacityLocation_ = -1;
     gl::Buffer counter_, nodes_;
     gl::Texture heads_;
@@ -164,6 +190,7 @@ private:
     std::uint64_t capacity_ = 0, poolCapacity_ = 0;
     double initialNodes_ = 0;
     double maxBlockMiB_ = 0;
+    double computeResolve_ = 0;
 };
 
 }  // namespace

@@ -7,5 +7,6 @@ constexpr unsigned kNodes = 1;
 constexpr unsigned kHeads = 0;
 constexpr unsigned kOpaqueColor = 0;
 constexpr unsigned kOpaqueDepth = 1;
+constexpr unsigned kResolveOutput = 3;  // image unit: compute resolves write the output colour
 
 }  // namespace strata::bindings

@@ -5,3 +5,4 @@
 #define BIND_HEADS         0
 #define BIND_OPAQUE_COLOR  0
 #define BIND_OPAQUE_DEPTH  1
+#define BIND_RESOLVE_OUTPUT 3   // image unit: compute resolves write the output colour

@@ -1,0 +1,35 @@
+// The A-buffer's per-pixel linked lists as ordered_composite.glsl reads them: node accessors
+// and the iteration macro. Shared by the fragment and compute resolves (abuffer_resolve.*).
+#include "bindings.glsl"
+#include "abuffer_node.glsl"
+
+layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
+
+uint gFirstNode;  // the pixel's list head as a node index, 0xFFFFFFFF for an empty list
+
+float fragmentDepth(uint i) { return nodes[i].depth; }
+uint fragmentObject(uint i) { return nodes[i].objectId; }
+uint fragmentPrimitive(uint i) { return nodes[i].primitiveId; }
+
+void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
+    vec2 rg = unpackHalf2x16(nodes[i].colorRG);
+    vec2 ba = unpackHalf2x16(nodes[i].colorBA);
+    color += transmittance * ba.y * vec3(rg, ba.x);
+    transmittance *= 1.0 - ba.y;
+}
+
+// Links hold index + 1 with 0 ending the list, so "link - 1" ends at 0xFFFFFFFF.
+#define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodes[i].next - 1u)
+#include "ordered_composite.glsl"
+
+// The pixel's transparent fragments in depth order over `opaque`.
+vec3 resolvePixel(ivec2 pixel, vec3 opaque) {
+    gFirstNode = imageLoad(uHeads, pixel).r - 1u;
+    vec3 color = vec3(0.0);
+    float transmittance = 1.0;
+    compositeInDepthOrder(color, transmittance);
+#ifdef LIST_TAIL
+    compositeTail(pixel, color, transmittance);
+#endif
+    return color + transmittance * opaque;
+}
