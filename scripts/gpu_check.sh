@@ -163,12 +163,14 @@ write_readme() {
     } >"$out/README.md.partial" && mv "$out/README.md.partial" "$out/README.md"
 }
 
-# bench NAME SCENE SIZE: one `strata bench` of every technique, recorded whatever happens.
+# bench NAME SCENE SIZE N TOTAL [ARGS]: one `strata bench` (ARGS, default every technique at
+# its defaults), recorded whatever happens.
 bench() {
-    local name=$1 scene=$2 size=$3 n=$4 total=$5 rc t0 secs status
-    note "[$n/$total] $name: $scene at $size ..."
+    local name=$1 scene=$2 size=$3 n=$4 total=$5 extra=${6:---modes all} rc t0 secs status
+    note "[$n/$total] $name: $scene at $size $extra ..."
     t0=$(date +%s.%N)
-    timeout --kill-after=30 "$limit" "$strata" bench "$scene" --modes all --size "$size" \
+    # shellcheck disable=SC2086  # extra is a list of arguments
+    timeout --kill-after=30 "$limit" "$strata" bench "$scene" $extra --size "$size" \
         --frames "$frames" --warmup "$warmup" --json "$out/runs/$name.json" --csv "$out/runs/$name.csv" \
         >"$out/runs/$name.txt" 2>"$out/runs/$name.err"
     rc=$?
@@ -223,6 +225,9 @@ write_readme
 todo=()
 for size in "${sizes[@]}"; do
     for n in "${layers[@]}"; do todo+=("layers-$n-$size|builtin:layers:$n|$size"); done
+    # The settings whose defaults were chosen on llvmpipe, at their other value: the compute
+    # resolve and fp16 accumulation (compare with the layers-16 run of the same size).
+    todo+=("layers-16-$size-compute-fp16|builtin:layers:16|$size|--modes abuffer,blend-sorted,f2b,dual,wboit,floor --set abuffer.compute_resolve=1 --set precision=16")
 done
 scene_files=("$root"/scenes/*.json)
 if [[ -d $scenes_data ]]; then
@@ -245,8 +250,8 @@ fi
 i=0
 for t in "${todo[@]}"; do
     i=$((i + 1))
-    IFS='|' read -r name scene size <<<"$t"
-    bench "$name" "$scene" "$size" "$i" "${#todo[@]}"
+    IFS='|' read -r name scene size extra <<<"$t"
+    bench "$name" "$scene" "$size" "$i" "${#todo[@]}" "${extra:-}"
 done
 
 write_readme
