@@ -212,6 +212,29 @@ TEST_CASE("coplanar copies: ll and a large enough kbuffer or fab capture all K i
     }
 }
 
+TEST_CASE("sbuffer stores and resolves in bands of rows when the fragments exceed the largest block") {
+    Layers f(16, 0.3f);
+    glm::ivec2 size(64, 48);  // 49,152 fragments * 20 B = 0.94 MiB
+    const std::uint64_t total = 16u * 64u * 48u;
+    auto whole = test::renderWith(f.scene, f.camera, size, "sbuffer");
+    CHECK(whole.result.stats.tiles == 1);
+    auto banded = test::renderWith(f.scene, f.camera, size, *make("sbuffer", {"max_block_mib=0.2"}));
+    // 0.2 MiB holds 10,485 entries: 10 rows of 1,024 per band, so 5 bands.
+    CHECK(banded.result.stats.tiles == 5);
+    CHECK(banded.result.stats.fragmentsCaptured == total);
+    CHECK(banded.result.stats.fragmentsDropped == 0);
+    CHECK_FALSE(banded.result.stats.overflowed);
+    CHECK(compareImages(banded.image, whole.image).maxAbsError == 0.0);
+    // A block smaller than one row (1,024 entries): each row is a band of its own and keeps
+    // what fits; the rest is counted as dropped, never written out of bounds.
+    auto tiny = test::renderWith(f.scene, f.camera, size, *make("sbuffer", {"max_block_mib=0.01"}));
+    const std::uint64_t perRow = std::uint64_t(0.01 * 1024 * 1024) / 20;  // 524 entries
+    CHECK(tiny.result.stats.tiles == 48);
+    CHECK(tiny.result.stats.fragmentsCaptured == perRow * 48);
+    CHECK(tiny.result.stats.fragmentsDropped == total - perRow * 48);
+    CHECK(tiny.result.stats.overflowed);
+}
+
 TEST_CASE("buffer techniques report bytes by their formulas") {
     Layers f(7, 0.3f);
     glm::ivec2 size(20, 12);

@@ -1,7 +1,9 @@
 // S-buffer (Vasilakis & Fudos 2012): count each pixel's fragments, prefix-sum the counts into
 // variable contiguous regions, store, then sort and composite each region. Memory is sized
-// exactly from the count, so nothing overflows unless the total exceeds the largest storage
-// block the device allows (then the excess is counted as dropped).
+// exactly from the count. When the total exceeds the largest storage block the device allows,
+// the store and resolve run in bands of rows, each within one block (the count and the scan
+// still run once): robust at any depth complexity, like the A-buffer's tiles. Only a single row
+// holding more fragments than a block could lose fragments, and those are counted as dropped.
 #include "oit/buffers/buffer_entries.hpp"
 #include "oit/buffers/buffer_support.hpp"
 #include "oit/buffers/prefix_sum.hpp"
@@ -11,6 +13,7 @@
 #include "render/bindings.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace strata {
 namespace {
@@ -57,42 +60,59 @@ public:
             gl::ScopedPass pass(frame.timer, "sbuffer prefix sum");
             total = scan_.scan(offsets_.id(), pixels);
         }
-        // Exactly the counted fragments, bounded by the largest block the device allows.
-        GLint64 limit = 0;
-        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
-        const std::uint64_t capacity = std::min<std::uint64_t>(total, std::uint64_t(limit) / kEntryBytes);
+        totalAfterScan_ = total;
+        // Exactly the counted fragments when they fit in one block, else bands of rows that do.
+        const std::uint64_t limit = maxEntries();
+        const std::vector<Band> bands = total <= limit ? std::vector<Band>{{0, frame.size.y, 0}} : splitRows(frame, limit);
+        std::uint64_t capacity = 0;
+        for (std::size_t b = 0; b < bands.size(); ++b) {
+            std::uint64_t end = b + 1 < bands.size() ? bands[b + 1].base : total;
+            capacity = std::max(capacity, std::min(end - bands[b].base, limit));
+        }
         if (entriesSize_ != capacity || !entries_) {
             gl::allocateBuffer(entries_, std::max<std::uint64_t>(capacity, 1) * kEntryBytes, GL_DYNAMIC_COPY,
                                "sbuffer entries");
             entriesSize_ = capacity;
         }
-        {
-            gl::ScopedPass pass(frame.timer, "sbuffer store");
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindPixelOffsets, offsets_.id());
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
-            counters_.bind();
-            glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            setTransparentDepthState(frame);
-            glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity));
-            glProgramUniform1i(program, passLocation, 1);
-            stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            storeBarrier();
-            ++stats_.passes;
+        const GLuint resolve = resolveProgram_.id();
+        for (const Band& band : bands) {
+            const bool whole = bands.size() == 1;
+            if (!whole) {
+                glEnable(GL_SCISSOR_TEST);
+                glScissor(0, band.y0, frame.size.x, band.y1 - band.y0);
+            }
+            {
+                gl::ScopedPass pass(frame.timer, "sbuffer store");
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindPixelOffsets, offsets_.id());
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
+                counters_.bind();
+                glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                setTransparentDepthState(frame);
+                glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity));
+                glProgramUniform1ui(program, glGetUniformLocation(program, "uBase"), GLuint(band.base));
+                glProgramUniform1i(program, passLocation, 1);
+                stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                storeBarrier();
+                ++stats_.passes;
+            }
+            {
+                gl::ScopedPass pass(frame.timer, "sbuffer resolve");
+                glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+                glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+                tailTargets_.bindForResolve(frame, false);
+                glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uWidth"), GLuint(frame.size.x));
+                glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uBase"), GLuint(band.base));
+                glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uCapacity"), GLuint(capacity));
+                glProgramUniform1i(resolve, glGetUniformLocation(resolve, "uTail"), 0);
+                setDepthOrderUniforms(frame, resolve);
+                drawFullscreen(frame, resolve);
+                ++stats_.passes;
+            }
         }
-        {
-            gl::ScopedPass pass(frame.timer, "sbuffer resolve");
-            glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
-            tailTargets_.bindForResolve(frame, false);
-            const GLuint resolve = resolveProgram_.id();
-            glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uWidth"), GLuint(frame.size.x));
-            glProgramUniform1i(resolve, glGetUniformLocation(resolve, "uTail"), 0);
-            setDepthOrderUniforms(frame, resolve);
-            drawFullscreen(frame, resolve);
-            ++stats_.passes;
-        }
+        glDisable(GL_SCISSOR_TEST);
+        stats_.tiles = int(bands.size());
         const std::uint64_t dropped = counters_.read()[0];
         stats_.fragmentsCaptured = total - dropped;
         stats_.fragmentsDropped = dropped;
@@ -100,7 +120,45 @@ public:
         stats_.bytes = pixels * 4 + std::max<std::uint64_t>(capacity, 1) * kEntryBytes + scan_.bytes() + kCounterBytes;
     }
 
+    std::vector<Parameter> parameters() override {
+        return {{"max_block_mib", "largest entry buffer in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
+                 &maxBlockMiB_, 0, 1e6, false}};
+    }
+
 private:
+    // Rows [y0, y1) whose entries start at `base` in the whole frame's prefix sum.
+    struct Band {
+        int y0, y1;
+        std::uint64_t base;
+    };
+
+    std::uint64_t maxEntries() const {
+        GLint64 limit = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+        std::uint64_t bytes = std::uint64_t(std::max<GLint64>(limit, 1 << 20));
+        if (maxBlockMiB_ > 0) bytes = std::min<std::uint64_t>(bytes, std::uint64_t(maxBlockMiB_ * 1024 * 1024));
+        return std::max<std::uint64_t>(bytes / kEntryBytes, 1);
+    }
+
+    // Greedy bands of whole rows, each holding at most `limit` entries, from the scanned offsets
+    // (read back only in this rare case: one uint per pixel).
+    std::vector<Band> splitRows(const FrameContext& frame, std::uint64_t limit) {
+        const int w = frame.size.x, h = frame.size.y;
+        std::vector<GLuint> offsets(std::size_t(w) * std::size_t(h));
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        glGetNamedBufferSubData(offsets_.id(), 0, GLsizeiptr(offsets.size() * sizeof(GLuint)), offsets.data());
+        // Row y's first entry; past the last row, the total.
+        auto start = [&](int y) { return y < h ? std::uint64_t(offsets[std::size_t(y) * std::size_t(w)]) : totalAfterScan_; };
+        std::vector<Band> bands;
+        for (int y0 = 0; y0 < h;) {
+            int y1 = y0 + 1;  // at least one row, even one that alone exceeds the block
+            while (y1 < h && start(y1 + 1) - start(y0) <= limit) ++y1;
+            bands.push_back({y0, y1, start(y0)});
+            y0 = y1;
+        }
+        return bands;
+    }
+
     TechniqueInfo info_;
     SceneProgram storeProgram_;
     gl::Program resolveProgram_;
@@ -109,13 +167,16 @@ private:
     PrefixSum scan_;
     Counters counters_;
     TailTargets tailTargets_;
+    std::uint64_t totalAfterScan_ = 0;
+    double maxBlockMiB_ = 0;
 };
 
 }  // namespace
 
 TechniqueEntry sbufferEntry() {
-    TechniqueInfo info{"sbuffer", "buffer", true, true, "3 (count, store, resolve) + prefix-sum dispatches",
-                       "w*h*4 offsets + 20 B per fragment (sized exactly from the count) + prefix-sum block totals + 16",
+    TechniqueInfo info{"sbuffer", "buffer", true, true, "1 count + 2 per band (store, resolve) + prefix-sum dispatches",
+                       "w*h*4 offsets + 20 B per fragment (sized exactly from the count; past the largest block, the "
+                       "largest band of rows) + prefix-sum block totals + 16",
                        "S-buffer: counting pass, GPU prefix sum over pixels (work-efficient block scan), variable "
                        "contiguous region per pixel, store, resolve sorting by (depth, object, primitive)"};
     return {info, [info] { return std::make_unique<SBuffer>(info); }};

@@ -18,6 +18,7 @@ layout(std430, binding = BIND_DEPTH_KEYS) coherent buffer DepthKeys { uint depth
 #elif defined(LAYOUT_SBUFFER)
 // After the store pass each offset has advanced by its pixel's count: it is the region's end.
 layout(std430, binding = BIND_PIXEL_OFFSETS) coherent buffer PixelOffsets { uint offsets[]; };
+uniform uint uBase;
 #else
 #error "define LAYOUT_FAB, LAYOUT_KBUFFER or LAYOUT_SBUFFER"
 #endif
@@ -36,6 +37,10 @@ void pixelRange(ivec2 pixel, out uint first, out uint count) {
 #else
     first = index == 0u ? 0u : offsets[index - 1u];
     count = offsets[index] - first;
+    // Banded (sbuffer.cpp): entries hold the current band only, from its first entry uBase; a
+    // row that overflowed its band holds fewer than it counted.
+    first -= uBase;
+    count = min(count, uCapacity > first ? uCapacity - first : 0u);
 #endif
 }
 

@@ -5,8 +5,10 @@
 //  a compute prefix sum turns the counts, in place, into each pixel's region start;
 //  pass 1 stores each fragment at atomicAdd(offset[pixel], 1): the offset walks through the
 //  pixel's contiguous region, ending at the next region's start, which the resolve reads back.
-// The entries array is sized exactly to the counted total; uCapacity only guards a total larger
-// than the device's storage block (those fragments are counted, never written out of bounds).
+// The entries array is sized exactly to the counted total, or to the largest band of rows when
+// the total exceeds the device's storage block (the host then stores and resolves band by band,
+// entries relative to uBase). uCapacity guards a single row larger than a block: those
+// fragments are counted, never written out of bounds.
 #include "surface.glsl"
 #include "entry.glsl"
 
@@ -15,6 +17,7 @@ layout(std430, binding = BIND_PIXEL_OFFSETS) coherent buffer PixelOffsets { uint
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uDropped;
 uniform uint uWidth;
 uniform uint uCapacity;
+uniform uint uBase;  // first entry of the band of rows being stored (0 unless banded)
 uniform int uPass;
 
 void main() {
@@ -24,7 +27,7 @@ void main() {
         atomicAdd(offsets[index], 1u);
         return;
     }
-    uint slot = atomicAdd(offsets[index], 1u);
+    uint slot = atomicAdd(offsets[index], 1u) - uBase;
     if (slot >= uCapacity) { atomicCounterIncrement(uDropped); return; }
     entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), surfaceColor());
 }
