@@ -129,6 +129,17 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
     CHECK(tiled.result.stats.tiles >= 6);
     CHECK(tiled.result.stats.fragmentsCaptured == 16u * 64u * 64u);
     CHECK(compareImages(tiled.image, whole.image).maxAbsError == 0.0);
+    // The next frame starts from these tiles: one store and one resolve each, no store wasted
+    // on finding out again that larger tiles overflow.
+    auto again = test::renderWith(*f.gpu, f.camera, size, *technique);
+    CHECK(again.result.stats.tiles == tiled.result.stats.tiles);
+    CHECK(again.result.stats.passes == 2 * again.result.stats.tiles);
+    CHECK(again.result.stats.regrows == 0);
+    CHECK(compareImages(again.image, whole.image).maxAbsError == 0.0);
+    CHECK(tiled.result.stats.passes > again.result.stats.passes);
+    // With the fragments back within one pool, one tile again.
+    setParameter(*technique, "max_block_mib=0");
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *technique).result.stats.tiles == 1);
 }
 
 TEST_CASE("abuffer's compute resolve gives the fragment resolve's image, whole and in tiles") {

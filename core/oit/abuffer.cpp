@@ -55,7 +55,12 @@ public:
         ensurePool();
 
         stats_ = {};
-        std::vector<Tile> tiles{{{0, 0}, frame.size}};
+        // Start from last frame's tiles while they are still needed: finding out again that the
+        // whole frame overflows would cost a wasted store pass every frame. Back to one tile
+        // once last frame's fragments fit in half the largest pool.
+        const bool reuseTiles = !lastTiles_.empty() && lastTilesSize_ == frame.size && lastTotal_ * 2 > maxNodes;
+        std::vector<Tile> tiles = reuseTiles ? lastTiles_ : std::vector<Tile>{{{0, 0}, frame.size}};
+        std::vector<Tile> done;
         int tilesDone = 0;
         while (!tiles.empty()) {
             Tile tile = tiles.back();
@@ -81,7 +86,13 @@ public:
             resolve(frame, tile);
             stats_.fragmentsCaptured += needed;
             ++tilesDone;
+            done.push_back(tile);
         }
+        // Kept in the order they pop in next frame (tiles are taken from the back).
+        lastTiles_.assign(done.rbegin(), done.rend());
+        if (lastTiles_.size() == 1) lastTiles_.clear();
+        lastTilesSize_ = frame.size;
+        lastTotal_ = stats_.fragmentsCaptured;
         glDisable(GL_SCISSOR_TEST);
         stats_.tiles = tilesDone;
         stats_.bytes = capacity_ * kNodeBytes + std::uint64_t(frame.size.x) * frame.size.y * 4 + sizeof(GLuint);
@@ -191,6 +202,9 @@ private:
     double initialNodes_ = 0;
     double maxBlockMiB_ = 0;
     double computeResolve_ = 0;
+    std::vector<Tile> lastTiles_;  // last frame's tiles when it needed more than one
+    glm::ivec2 lastTilesSize_{0, 0};
+    std::uint64_t lastTotal_ = 0;
 };
 
 }  // namespace
