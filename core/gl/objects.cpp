@@ -1,5 +1,6 @@
 #include "gl/objects.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,14 @@ Texture createTexture2D(GLenum internalFormat, int width, int height) {
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return t;
+}
+
+std::uint64_t storageBlockElements(std::uint64_t elementBytes, double capMiB) {
+    GLint64 limit = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+    std::uint64_t bytes = std::uint64_t(std::max<GLint64>(limit, 1 << 20));
+    if (capMiB > 0) bytes = std::min<std::uint64_t>(bytes, std::uint64_t(capMiB * 1024 * 1024));
+    return std::max<std::uint64_t>(bytes / elementBytes, 1);
 }
 
 void allocateBuffer(Buffer& buffer, std::size_t bytes, GLenum usage, const char* what) {

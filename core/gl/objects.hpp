@@ -3,6 +3,7 @@
 // A default-constructed owner holds nothing (name 0); `release()` hands the name over.
 #include <epoxy/gl.h>
 
+#include <cstdint>
 #include <utility>
 
 namespace strata::gl {
@@ -74,6 +75,11 @@ inline Query createQuery(GLenum target) { GLuint n = 0; glCreateQueries(target, 
 
 // A 2D texture with immutable storage, nearest filtering, clamped.
 Texture createTexture2D(GLenum internalFormat, int width, int height);
+
+// How many elements of `elementBytes` the largest shader storage block holds: the device's
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE, or less when `capMiB` > 0 (a setting, used by tests to
+// force tiling on small frames). At least 1.
+std::uint64_t storageBlockElements(std::uint64_t elementBytes, double capMiB);
 
 // A buffer with mutable-size semantics (glNamedBufferData) so it can be grown.
 // Throws std::runtime_error naming `what` when the driver reports GL_OUT_OF_MEMORY.

@@ -103,13 +103,7 @@ public:
 
 
 private:
-    std::uint64_t maxPoolNodes() const {
-        GLint64 limit = 0;
-        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
-        std::uint64_t bytes = std::uint64_t(std::max<GLint64>(limit, 1 << 20));
-        if (maxBlockMiB_ > 0) bytes = std::min<std::uint64_t>(bytes, std::uint64_t(maxBlockMiB_ * 1024 * 1024));
-        return std::max<std::uint64_t>(bytes / kNodeBytes, 1);
-    }
+    std::uint64_t maxPoolNodes() const { return gl::storageBlockElements(kNodeBytes, maxBlockMiB_); }
 
     void ensurePool() {
         if (poolCapacity_ == capacity_) return;

@@ -2,6 +2,7 @@
 // and the iteration macro. Shared by the fragment and compute resolves (abuffer_resolve.*).
 #include "bindings.glsl"
 #include "abuffer_node.glsl"
+#include "packed_color.glsl"
 
 layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
 
@@ -12,10 +13,7 @@ uint fragmentObject(uint i) { return nodes[i].objectId; }
 uint fragmentPrimitive(uint i) { return nodes[i].primitiveId; }
 
 void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
-    vec2 rg = unpackHalf2x16(nodes[i].colorRG);
-    vec2 ba = unpackHalf2x16(nodes[i].colorBA);
-    color += transmittance * ba.y * vec3(rg, ba.x);
-    transmittance *= 1.0 - ba.y;
+    compositePacked(nodes[i].colorRG, nodes[i].colorBA, color, transmittance);
 }
 
 // Links hold index + 1 with 0 ending the list, so "link - 1" ends at 0xFFFFFFFF.

@@ -132,13 +132,7 @@ private:
         std::uint64_t base;
     };
 
-    std::uint64_t maxEntries() const {
-        GLint64 limit = 0;
-        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
-        std::uint64_t bytes = std::uint64_t(std::max<GLint64>(limit, 1 << 20));
-        if (maxBlockMiB_ > 0) bytes = std::min<std::uint64_t>(bytes, std::uint64_t(maxBlockMiB_ * 1024 * 1024));
-        return std::max<std::uint64_t>(bytes / kEntryBytes, 1);
-    }
+    std::uint64_t maxEntries() const { return gl::storageBlockElements(kEntryBytes, maxBlockMiB_); }
 
     // Greedy bands of whole rows, each holding at most `limit` entries, from the scanned offsets
     // (read back only in this rare case: one uint per pixel).

@@ -6,6 +6,7 @@
 #include "bindings.glsl"
 #include "entry.glsl"
 #include "tail_resolve.glsl"
+#include "oit/packed_color.glsl"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 uniform uint uWidth;
@@ -51,10 +52,7 @@ uint fragmentObject(uint i) { return entries[i].objectId; }
 uint fragmentPrimitive(uint i) { return entries[i].primitiveId; }
 
 void compositeFragment(uint e, inout vec3 color, inout float transmittance) {
-    vec2 rg = unpackHalf2x16(entries[e].colorRG);
-    vec2 ba = unpackHalf2x16(entries[e].colorBA);
-    color += transmittance * ba.y * vec3(rg, ba.x);
-    transmittance *= 1.0 - ba.y;
+    compositePacked(entries[e].colorRG, entries[e].colorBA, color, transmittance);
 }
 
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirst; i < gEnd; ++i)
