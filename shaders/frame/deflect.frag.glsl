@@ -15,29 +15,31 @@ vec4 fetchClamped(ivec2 t, ivec2 size) {
     return texelFetch(uSource, clamp(t, ivec2(0), size - 1), 0);
 }
 
+// One exit, no early returns: the nearest-sampled homography failed on NVIDIA while the same
+// shader's bilinear path passed; this keeps the control flow the same for both filters.
 void main() {
     ivec2 size = textureSize(uSource, 0);
     vec3 h = uMap * vec3(gl_FragCoord.xy, 1.0);
     vec2 s = h.xy / h.z;
     // The negated test also sends NaN (a degenerate map) to the border.
-    if (!(h.z > 0.0 && all(greaterThanEqual(s, vec2(0.0))) && all(lessThanEqual(s, vec2(size))))) {
+    bool inside = h.z > 0.0 && all(greaterThanEqual(s, vec2(0.0))) && all(lessThanEqual(s, vec2(size)));
+    vec4 color = uBorder;
+    if (!inside) {
         if (uCount != 0) atomicCounterIncrement(uOutside);
-        fragColor = uBorder;
-        return;
-    }
-    if (uBilinear == 0) {
+    } else if (uBilinear == 0) {
         // The texel whose square contains s; s == size on the far edges clamps to the last one.
-        fragColor = fetchClamped(ivec2(floor(s)), size);
-        return;
+        color = fetchClamped(ivec2(floor(s)), size);
+    } else {
+        // Texel centres sit at integer + 0.5: interpolate between the four around s with float
+        // weights (hardware filtering rounds them to ~8 bits), edge texels repeated at the rim.
+        vec2 t = s - 0.5;
+        ivec2 i0 = ivec2(floor(t));
+        vec2 f = t - vec2(i0);
+        vec4 c00 = fetchClamped(i0, size);
+        vec4 c10 = fetchClamped(i0 + ivec2(1, 0), size);
+        vec4 c01 = fetchClamped(i0 + ivec2(0, 1), size);
+        vec4 c11 = fetchClamped(i0 + ivec2(1, 1), size);
+        color = mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
     }
-    // Texel centres sit at integer + 0.5: interpolate between the four around s with float
-    // weights (hardware filtering rounds them to ~8 bits), edge texels repeated at the rim.
-    vec2 t = s - 0.5;
-    ivec2 i0 = ivec2(floor(t));
-    vec2 f = t - vec2(i0);
-    vec4 c00 = fetchClamped(i0, size);
-    vec4 c10 = fetchClamped(i0 + ivec2(1, 0), size);
-    vec4 c01 = fetchClamped(i0 + ivec2(0, 1), size);
-    vec4 c11 = fetchClamped(i0 + ivec2(1, 1), size);
-    fragColor = mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+    fragColor = color;
 }
