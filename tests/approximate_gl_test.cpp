@@ -188,6 +188,14 @@ TEST_CASE("bench gives every time as a multiple of the floor's when the floor ro
     CHECK(header.size() > 14);
     CHECK(header.substr(header.size() - 14) == ",ms_over_floor");
     CHECK(benchToTable(with).find("x floor") != std::string::npos);
+    // A row below 0.95x the floor is called out under the table.
+    BenchReport below = with;
+    for (auto& m : below.modes)
+        if (m.id == "wboit") m.msMedian = 0.5 * floorMs;
+    CHECK(benchToTable(below).find("note: wboit measured 0.50x the floor") != std::string::npos);
+    for (auto& m : below.modes)
+        if (m.id == "wboit") m.msMedian = 2.0 * floorMs;
+    CHECK(benchToTable(below).find("note:") == std::string::npos);
 
     BenchReport without = benchLayers(3, 0.5f, {"wboit"}, {16, 16});
     nlohmann::json k = benchToJson(without);

@@ -88,6 +88,13 @@ std::string benchToTable(const BenchReport& r) {
                       overFloor.c_str(), m.overflowed ? "  OVERFLOW" : (m.regrows ? "  (grew)" : ""));
         out << line;
     }
+    // The floor is the least work any technique can do on these fragments: a row below it
+    // means noise (llvmpipe shares the CPU) or a floor that is not one.
+    if (floorTime)
+        for (const auto& m : r.modes)
+            if (m.id != "floor" && m.msMedian < 0.95 * *floorTime)
+                out << "note: " << m.id << " measured " << fmt("%.2f", m.msMedian / *floorTime)
+                    << "x the floor (below 0.95): noise, or the floor is not a lower bound\n";
     return out.str();
 }
 
