@@ -16,7 +16,7 @@ void ObjectSkipper::beginFrame(const FrameContext& frame, bool enabled) {
     pending_.assign(n, Pending{});
     conditional_.clear();
     poolUsed_ = 0;
-    boxDraws_ = 0;
+    queryDraws_ = 0;
 }
 
 GLuint ObjectSkipper::nextQuery() {
@@ -139,7 +139,7 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
             if (!box.empty) glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
             glEndQuery(GL_ANY_SAMPLES_PASSED);
             pending.push_back(q);
-            ++boxDraws_;
+            ++queryDraws_;
         }
     }
     glViewport(0, 0, frame.size.x, frame.size.y);

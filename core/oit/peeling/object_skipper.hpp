@@ -34,8 +34,9 @@ public:
     // Forgets last frame's culling. `enabled` false: every object is drawn in every pass.
     void beginFrame(const FrameContext& frame, bool enabled);
 
-    // Draws the boxes of the live objects against `remaining`; one query per object and side.
-    // Several sides: an object is live only while every side's query passes.
+    // Reduces `remaining` to block maxima and tests each live object's screen rectangle and
+    // depth range against them; one query per object and side. Several sides: an object is
+    // live only while every side's query passes.
     void query(const FrameContext& frame, GLuint remaining, const std::vector<RemainingSide>& sides);
 
     // Binds `program` and draws the live objects in submission order; adds to objectDraws and
@@ -47,7 +48,7 @@ public:
     void endFrame(TechniqueStats& stats);
 
     // Query rectangles issued this frame, one per live object and side (not object draws).
-    std::uint64_t boxDraws() const { return boxDraws_; }
+    std::uint64_t queryDraws() const { return queryDraws_; }
 
 private:
     struct Pending {
@@ -77,7 +78,7 @@ private:
     std::vector<Conditional> conditional_;
     std::vector<gl::Query> pool_;
     std::size_t poolUsed_ = 0;
-    std::uint64_t boxDraws_ = 0;
+    std::uint64_t queryDraws_ = 0;
     gl::Program reduceProgram_, rectProgram_;
     GLint rectLocation_ = -1, sideLocation_ = -1, boxFarLocation_ = -1, boxNearLocation_ = -1;
     gl::VertexArray emptyVao_;
