@@ -185,7 +185,9 @@ private:
         glGetQueryObjectui64v(backLayers_.id(), GL_QUERY_RESULT, &back);
         glGetQueryObjectuiv(interiorLeft_.id(), GL_QUERY_RESULT, &left);
         stats_.fragmentsCaptured += front + back;
-        return left != 0;
+        // A pass that captured nothing had an empty range everywhere, so nothing is left
+        // whatever the interior query says (a guard against a driver that skips the masked draw).
+        return left != 0 && front + back > 0;
     }
 
     void composite(const FrameContext& frame) {
