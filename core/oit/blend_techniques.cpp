@@ -8,9 +8,9 @@
 // fragment).
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
+#include "oit/scratch_target.hpp"
 #include "oit/technique_families.hpp"
 
-#include <stdexcept>
 
 namespace strata {
 namespace {
@@ -31,7 +31,7 @@ public:
         gl::ScopedPass pass(frame.timer, "blend");
         GLuint target = frame.targets.outputFramebuffer();
         if (half) {
-            target = scratchFramebuffer(frame);
+            target = scratch_.bind(frame.targets, frame.size, GL_RGBA16F, info_.id.c_str());
             copyColor(frame, frame.targets.outputFramebuffer(), target);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -52,20 +52,6 @@ public:
     }
 
 private:
-    GLuint scratchFramebuffer(const FrameContext& frame) {
-        if (frame.size != scratchSize_ || !scratchFbo_) {
-            scratch_ = gl::createTexture2D(GL_RGBA16F, frame.size.x, frame.size.y);
-            scratchFbo_ = gl::Framebuffer::create();
-            glNamedFramebufferTexture(scratchFbo_.id(), GL_COLOR_ATTACHMENT0, scratch_.id(), 0);
-            scratchSize_ = frame.size;
-        }
-        // The frame targets may have been reallocated since the last frame: attach every time.
-        glNamedFramebufferTexture(scratchFbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
-        if (glCheckNamedFramebufferStatus(scratchFbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("blend: RGBA16F scratch framebuffer incomplete");
-        return scratchFbo_.id();
-    }
-
     static void copyColor(const FrameContext& frame, GLuint from, GLuint to) {
         glBlitNamedFramebuffer(from, to, 0, 0, frame.size.x, frame.size.y, 0, 0, frame.size.x, frame.size.y,
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -76,9 +62,7 @@ private:
     double precision_ = 32;
     SceneProgram program_;
     gl::Query samples_;
-    gl::Texture scratch_;
-    gl::Framebuffer scratchFbo_;
-    glm::ivec2 scratchSize_{0, 0};
+    ScratchTarget scratch_;
 };
 
 TechniqueEntry blendUnsortedEntry() {

@@ -25,10 +25,10 @@
 // reversed-Z window depth: w is proportional to 1 / z, and |z1 - z2| / max(z) equals
 // |w1 - w2| / max(w) exactly, so the GPU needs no division and no eye depth.
 //
-// The tolerance is given in float ulps (units of 2^-23, relative): Scene::depthTieUlps. Surfaces closer than it are
-// treated as coincident: at the default 64 ulps (7.6e-6 relative) that is 76 um at 10 m,
-// far below anything a depth buffer separates reliably, and far above the few ulps of
-// round-off that drivers show for coincident planes.
+// The tolerance is given in float ulps (units of 2^-23, relative): Scene::depthTieUlps.
+// Surfaces closer than it are treated as coincident: at the default 64 ulps (7.6e-6 relative)
+// that is 76 um at 10 m, far below anything a depth buffer separates reliably, and far above
+// the few ulps of round-off that drivers show for coincident planes.
 #include "render/composite.hpp"
 
 #include <vector>

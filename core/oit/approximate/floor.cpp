@@ -17,8 +17,7 @@
 // floor composites nothing, and its error columns are those of ignoring transparency.
 #include "oit/approximate/approximate_entries.hpp"
 #include "oit/draw_transparent.hpp"
-
-#include <stdexcept>
+#include "oit/scratch_target.hpp"
 
 namespace strata::approximate {
 namespace {
@@ -33,11 +32,11 @@ public:
             program_ = buildSceneProgram("oit/approximate/floor.frag.glsl");
             samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         }
-        bindScratch(frame);
+        const GLuint fbo = scratch_.bind(frame.targets, frame.size, GL_R8, "floor");
         stats_ = {};
         {
             gl::ScopedPass pass(frame.timer, "floor");
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
             setTransparentDepthState(frame);
             glDisable(GL_BLEND);
             glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
@@ -54,25 +53,10 @@ public:
     }
 
 private:
-    void bindScratch(const FrameContext& frame) {
-        if (frame.size != size_ || !fbo_) {
-            scratch_ = gl::createTexture2D(GL_R8, frame.size.x, frame.size.y);
-            fbo_ = gl::Framebuffer::create();
-            glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, scratch_.id(), 0);
-            size_ = frame.size;
-        }
-        // The frame targets may have been reallocated since the last frame: attach every time.
-        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
-        if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("floor: R8 scratch framebuffer incomplete");
-    }
-
     TechniqueInfo info_;
     SceneProgram program_;
     gl::Query samples_;
-    gl::Texture scratch_;
-    gl::Framebuffer fbo_;
-    glm::ivec2 size_{0, 0};
+    ScratchTarget scratch_;
 };
 
 }  // namespace
