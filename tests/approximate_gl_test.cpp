@@ -16,15 +16,7 @@ namespace {
 
 constexpr float kTolerance = 1.0f / 255.0f;
 
-struct Fixture {
-    std::unique_ptr<GpuScene> gpu;
-    Camera camera;
-    explicit Fixture(Scene s) {
-        test::glContext();
-        gpu = std::make_unique<GpuScene>(std::move(s));
-        camera = defaultCamera(gpu->scene(), gpu->objects());
-    }
-};
+using test::Fixture;
 
 BenchReport benchLayers(int layers, float alpha, const std::vector<std::string>& modes, glm::ivec2 size,
                         const std::vector<std::string>& parameters = {}) {

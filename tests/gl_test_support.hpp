@@ -46,4 +46,15 @@ inline Rendered renderWith(const GpuScene& scene, const Camera& camera, glm::ive
     return renderWith(scene, camera, size, *technique, options);
 }
 
+// A scene on the GPU with the camera it suggests.
+struct Fixture {
+    std::unique_ptr<GpuScene> gpu;
+    Camera camera;
+    explicit Fixture(Scene s) {
+        glContext();
+        gpu = std::make_unique<GpuScene>(std::move(s));
+        camera = defaultCamera(gpu->scene(), gpu->objects());
+    }
+};
+
 }  // namespace strata::test

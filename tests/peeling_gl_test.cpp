@@ -14,15 +14,7 @@ namespace {
 
 constexpr float kTolerance = 1.0f / 255.0f;
 
-struct Fixture {
-    std::unique_ptr<GpuScene> gpu;
-    Camera camera;
-    explicit Fixture(Scene s) {
-        test::glContext();
-        gpu = std::make_unique<GpuScene>(std::move(s));
-        camera = defaultCamera(gpu->scene(), gpu->objects());
-    }
-};
+using test::Fixture;
 
 std::unique_ptr<Technique> make(const std::string& id, std::initializer_list<std::string> settings = {}) {
     auto t = createTechnique(id);

@@ -23,15 +23,7 @@ constexpr float kHalfTolerance = 2.0f / 255.0f;
 // (abuffer's 24-byte node), so 1e-4-level differences remain (measured up to 1.3e-4).
 constexpr float kFloatTolerance = 2.5e-4f;
 
-struct Fixture {
-    std::unique_ptr<GpuScene> gpu;
-    Camera camera;
-    explicit Fixture(Scene s) {
-        test::glContext();
-        gpu = std::make_unique<GpuScene>(std::move(s));
-        camera = defaultCamera(gpu->scene(), gpu->objects());
-    }
-};
+using test::Fixture;
 
 std::unique_ptr<Technique> make(const std::string& id, const std::vector<std::string>& settings) {
     auto t = createTechnique(id);
