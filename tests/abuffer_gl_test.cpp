@@ -130,7 +130,9 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
     CHECK(tiled.result.stats.fragmentsCaptured == 16u * 64u * 64u);
     CHECK(compareImages(tiled.image, whole.image).maxAbsError == 0.0);
     // The next frame starts from these tiles: one store and one resolve each, no store wasted
-    // on finding out again that larger tiles overflow.
+    // on finding out again that larger tiles overflow. Bit-equal on any driver: each pixel holds
+    // the same set of fragments, which the resolve's total order composites in one sequence by
+    // the same program, whatever the tiles or the order the nodes were appended in.
     auto again = test::renderWith(*f.gpu, f.camera, size, *technique);
     CHECK(again.result.stats.tiles == tiled.result.stats.tiles);
     CHECK(again.result.stats.passes == 2 * again.result.stats.tiles);
@@ -157,7 +159,9 @@ TEST_CASE("abuffer's compute resolve gives the fragment resolve's image, whole a
             setParameter(*technique, std::string("max_block_mib=") + blockMiB);
             auto compute = test::renderWith(*f.gpu, f.camera, size, *technique);
             if (std::string(blockMiB) != "0" && std::string(spec) == "layers:70") CHECK(compute.result.stats.tiles > 1);
-            CHECK(compareImages(compute.image, fragment.image).maxAbsError == 0.0);
+            // Two compiled stages may contract multiply-adds differently on a GPU: float
+            // round-off, far below one 8-bit step, is all that may differ.
+            CHECK(compareImages(compute.image, fragment.image).maxAbsError <= 1e-5);
             CHECK(compute.result.stats.fragmentsCaptured == fragment.result.stats.fragmentsCaptured);
         }
     }

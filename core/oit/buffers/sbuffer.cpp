@@ -60,10 +60,10 @@ public:
             gl::ScopedPass pass(frame.timer, "sbuffer prefix sum");
             total = scan_.scan(offsets_.id(), pixels);
         }
-        totalAfterScan_ = total;
         // Exactly the counted fragments when they fit in one block, else bands of rows that do.
         const std::uint64_t limit = maxEntries();
-        const std::vector<Band> bands = total <= limit ? std::vector<Band>{{0, frame.size.y, 0}} : splitRows(frame, limit);
+        const std::vector<Band> bands =
+            total <= limit ? std::vector<Band>{{0, frame.size.y, 0}} : splitRows(frame, limit, total);
         std::uint64_t capacity = 0;
         for (std::size_t b = 0; b < bands.size(); ++b) {
             std::uint64_t end = b + 1 < bands.size() ? bands[b + 1].base : total;
@@ -136,13 +136,13 @@ private:
 
     // Greedy bands of whole rows, each holding at most `limit` entries, from the scanned offsets
     // (read back only in this rare case: one uint per pixel).
-    std::vector<Band> splitRows(const FrameContext& frame, std::uint64_t limit) {
+    std::vector<Band> splitRows(const FrameContext& frame, std::uint64_t limit, std::uint64_t total) {
         const int w = frame.size.x, h = frame.size.y;
         std::vector<GLuint> offsets(std::size_t(w) * std::size_t(h));
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         glGetNamedBufferSubData(offsets_.id(), 0, GLsizeiptr(offsets.size() * sizeof(GLuint)), offsets.data());
         // Row y's first entry; past the last row, the total.
-        auto start = [&](int y) { return y < h ? std::uint64_t(offsets[std::size_t(y) * std::size_t(w)]) : totalAfterScan_; };
+        auto start = [&](int y) { return y < h ? std::uint64_t(offsets[std::size_t(y) * std::size_t(w)]) : total; };
         std::vector<Band> bands;
         for (int y0 = 0; y0 < h;) {
             int y1 = y0 + 1;  // at least one row, even one that alone exceeds the block
@@ -161,7 +161,6 @@ private:
     PrefixSum scan_;
     Counters counters_;
     TailTargets tailTargets_;
-    std::uint64_t totalAfterScan_ = 0;
     double maxBlockMiB_ = 0;
 };
 
