@@ -17,6 +17,7 @@ void ObjectSkipper::beginFrame(const FrameContext& frame, bool enabled) {
     conditional_.clear();
     poolUsed_ = 0;
     queryDraws_ = 0;
+    boxes_.clear();  // projected on the frame's first query: the camera is fixed within a frame
 }
 
 GLuint ObjectSkipper::nextQuery() {
@@ -121,11 +122,14 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     const GLuint program = rectProgram_.id();
     glUseProgram(program);
     const auto& objects = frame.scene.objects();
+    if (boxes_.empty()) {
+        boxes_.resize(objects.size());
+        for (int o : frame.transparentOrder)
+            if (!objects[o].worldBounds.empty()) boxes_[o] = screenBox(frame, objects[o].worldBounds);
+    }
     for (int o : frame.transparentOrder) {
-        if (culled_[o]) continue;
-        const Bounds& b = objects[o].worldBounds;
-        if (b.empty()) continue;
-        const ScreenBox box = screenBox(frame, b);
+        if (culled_[o] || objects[o].worldBounds.empty()) continue;
+        const ScreenBox& box = boxes_[o];
         glProgramUniform4fv(program, rectLocation_, 1, glm::value_ptr(box.rect));
         glProgramUniform1f(program, boxFarLocation_, box.farDepth);
         glProgramUniform1f(program, boxNearLocation_, box.nearDepth);

@@ -74,6 +74,7 @@ private:
 
     bool enabled_ = false;
     std::vector<bool> culled_;
+    std::vector<ScreenBox> boxes_;  // per object id, this frame
     std::vector<Pending> pending_;
     std::vector<Conditional> conditional_;
     std::vector<gl::Query> pool_;
