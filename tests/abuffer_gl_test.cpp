@@ -111,7 +111,7 @@ TEST_CASE("abuffer with a pool smaller than the fragments grows, re-renders and 
     glm::ivec2 size(32, 24);
     auto roomy = test::renderWith(*f.gpu, f.camera, size, "abuffer");
     auto technique = createTechnique("abuffer");
-    setParameter(*technique, "initial_nodes=100");
+    test::setSetting(*technique, "initial_nodes=100");
     auto tight = test::renderWith(*f.gpu, f.camera, size, *technique);
     CHECK(tight.result.stats.regrows >= 1);
     CHECK(tight.result.stats.fragmentsCaptured == 8u * 32u * 24u);
@@ -124,7 +124,7 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
     glm::ivec2 size(64, 64);  // 65,536 fragments * 24 B = 1.5 MiB
     auto whole = test::renderWith(*f.gpu, f.camera, size, "abuffer");
     auto technique = createTechnique("abuffer");
-    setParameter(*technique, "max_block_mib=0.25");
+    test::setSetting(*technique, "max_block_mib=0.25");
     auto tiled = test::renderWith(*f.gpu, f.camera, size, *technique);
     CHECK(tiled.result.stats.tiles >= 6);
     CHECK(tiled.result.stats.fragmentsCaptured == 16u * 64u * 64u);
@@ -140,7 +140,7 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
     CHECK(compareImages(again.image, whole.image).maxAbsError == 0.0);
     CHECK(tiled.result.stats.passes > again.result.stats.passes);
     // With the fragments back within one pool, one tile again.
-    setParameter(*technique, "max_block_mib=0");
+    test::setSetting(*technique, "max_block_mib=0");
     CHECK(test::renderWith(*f.gpu, f.camera, size, *technique).result.stats.tiles == 1);
 }
 
@@ -155,8 +155,8 @@ TEST_CASE("abuffer's compute resolve gives the fragment resolve's image, whole a
         for (const char* blockMiB : {"0", "0.05"}) {
             CAPTURE(blockMiB);
             auto technique = createTechnique("abuffer");
-            setParameter(*technique, "compute_resolve=1");
-            setParameter(*technique, std::string("max_block_mib=") + blockMiB);
+            test::setSetting(*technique, "compute_resolve=1");
+            test::setSetting(*technique, std::string("max_block_mib=") + blockMiB);
             auto compute = test::renderWith(*f.gpu, f.camera, size, *technique);
             if (std::string(blockMiB) != "0" && std::string(spec) == "layers:70") CHECK(compute.result.stats.tiles > 1);
             // Two compiled stages may contract multiply-adds differently on a GPU: float

@@ -19,7 +19,7 @@ constexpr float kTolerance = 1.0f / 255.0f;
 using test::Fixture;
 
 BenchReport benchLayers(int layers, float alpha, const std::vector<std::string>& modes, glm::ivec2 size,
-                        const std::vector<std::string>& parameters = {}) {
+                        const std::vector<std::string>& settings = {}) {
     test::glContext();
     GpuScene scene(makeLayersScene(layers, alpha));
     BenchOptions options;
@@ -28,7 +28,7 @@ BenchReport benchLayers(int layers, float alpha, const std::vector<std::string>&
     options.size = size;
     options.frames = 2;
     options.warmupFrames = 1;
-    options.parameters = parameters;
+    options.settings = resolveSettings(benchModeIds(modes), commandLineAssignments(settings));
     return runBench(scene, options);
 }
 
@@ -113,7 +113,7 @@ TEST_CASE("stochastic with opaque layers (alpha 1) keeps exactly the nearest lay
     glm::ivec2 size(16, 16);
     Image exact = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
     auto technique = createTechnique("stochastic");
-    setParameter(*technique, "samples=3");
+    test::setSetting(*technique, "samples=3");
     Image image = test::renderWith(*f.gpu, f.camera, size, *technique).image;
     CHECK(compareImages(image, exact).maxAbsError <= kTolerance);
 }
@@ -125,7 +125,7 @@ TEST_CASE("wboit's depth weight equations 7 to 10 all run and stay finite") {
     for (int eq : {7, 8, 9, 10}) {
         CAPTURE(eq);
         auto technique = createTechnique("wboit");
-        setParameter(*technique, "weight=" + std::to_string(eq));
+        test::setSetting(*technique, "weight=" + std::to_string(eq));
         Image image = test::renderWith(*f.gpu, f.camera, size, *technique).image;
         auto d = compareImages(image, exact);
         CHECK(std::isfinite(d.rmse));
@@ -133,7 +133,7 @@ TEST_CASE("wboit's depth weight equations 7 to 10 all run and stay finite") {
         CHECK(d.rmse < 0.3);
     }
     auto technique = createTechnique("wboit");
-    CHECK_THROWS_AS(setParameter(*technique, "weight=6"), std::invalid_argument);
+    CHECK_THROWS_AS(test::setSetting(*technique, "weight=6"), std::invalid_argument);
 }
 
 TEST_CASE("floor counts every fragment once and leaves the opaque image") {

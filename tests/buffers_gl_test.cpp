@@ -20,12 +20,6 @@ namespace {
 
 constexpr float kTolerance = 1.0f / 255.0f;
 
-std::unique_ptr<Technique> make(const std::string& id, std::initializer_list<std::string> settings = {}) {
-    auto t = createTechnique(id);
-    for (const auto& s : settings) setParameter(*t, s);
-    return t;
-}
-
 std::string capacity(int k) { return "capacity=" + std::to_string(k); }
 
 struct Layers {
@@ -84,7 +78,7 @@ TEST_CASE("buffers with capacity >= N equal abuffer on N layers and capture ever
         for (std::string id : {"kbuffer", "fab", "ll", "sbuffer"}) {
             CAPTURE(n);
             CAPTURE(id);
-            auto t = id == "sbuffer" ? make(id) : make(id, {capacity(std::max(n, 1))});
+            auto t = id == "sbuffer" ? test::makeTechnique(id) : test::makeTechnique(id, {capacity(std::max(n, 1))});
             auto r = test::renderWith(f.scene, f.camera, size, *t);
             CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
             REQUIRE(r.result.fragmentsTotal.has_value());
@@ -109,19 +103,19 @@ TEST_CASE("kbuffer with K < N keeps the K nearest layers; fab keeps K of them, c
         Image expected = test::renderWith(nearest, f.camera, size, "abuffer").image;
         Image all = test::renderWith(f.scene, f.camera, size, "abuffer").image;
         REQUIRE(compareImages(expected, all).maxAbsError > 0.01);  // dropping layers is visible
-        auto keep = test::renderWith(f.scene, f.camera, size, *make("kbuffer", {capacity(k)}));
+        auto keep = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("kbuffer", {capacity(k)}));
         REQUIRE(keep.result.fragmentsTotal.has_value());
         // kbuffer keeps the K nearest whatever the order they arrive in.
         FrameOptions reversed;
         reversed.reverseSubmission = true;
-        auto kbReversed = test::renderWith(f.scene, f.camera, size, *make("kbuffer", {capacity(k)}), reversed);
+        auto kbReversed = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("kbuffer", {capacity(k)}), reversed);
         CHECK(compareImages(keep.image, expected).maxAbsError <= kTolerance);
         CHECK(compareImages(kbReversed.image, expected).maxAbsError <= kTolerance);
         // fab keeps the first K to arrive, and a GPU's arrival order is not the submission order:
         // what is guaranteed is the count, and that each pixel shows the composite of some K of
         // its N fragments, in depth order.
         for (bool reverse : {false, true}) {
-            auto fab = test::renderWith(f.scene, f.camera, size, *make("fab", {capacity(k)}),
+            auto fab = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("fab", {capacity(k)}),
                                         reverse ? reversed : FrameOptions{});
             CAPTURE(k);
             CAPTURE(reverse);
@@ -144,7 +138,7 @@ TEST_CASE("ll with a fixed pool smaller than the fragments counts the overflow a
     Layers f(7, 0.4f);
     glm::ivec2 size(16, 12);
     const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
-    auto r = test::renderWith(f.scene, f.camera, size, *make("ll", {capacity(3)}));
+    auto r = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("ll", {capacity(3)}));
     CHECK(r.result.stats.fragmentsCaptured == 3 * pixels);  // the pool: w*h*3 nodes
     CHECK(r.result.stats.fragmentsDropped == 4 * pixels);
     CHECK(r.result.stats.overflowed);
@@ -162,8 +156,8 @@ TEST_CASE("tail=1 blends what overflows: smaller error than dropping it, counted
         for (int k : {3, 6}) {
             CAPTURE(id);
             CAPTURE(k);
-            auto dropped = test::renderWith(f.scene, f.camera, size, *make(id, {capacity(k), "tail=0"}));
-            auto tailed = test::renderWith(f.scene, f.camera, size, *make(id, {capacity(k), "tail=1"}));
+            auto dropped = test::renderWith(f.scene, f.camera, size, *test::makeTechnique(id, {capacity(k), "tail=0"}));
+            auto tailed = test::renderWith(f.scene, f.camera, size, *test::makeTechnique(id, {capacity(k), "tail=1"}));
             double dropError = compareImages(dropped.image, exact).rmse;
             double tailError = compareImages(tailed.image, exact).rmse;
             CHECK(dropError > 0.002);  // one layer of 0.4 behind six: 0.6^6 of it shows
@@ -197,7 +191,7 @@ TEST_CASE("coplanar copies: ll and a large enough kbuffer or fab capture all K i
             FrameOptions reversed;
             reversed.reverseSubmission = true;
             for (bool reverse : {false, true}) {
-                auto t = id == "sbuffer" ? make(id) : make(id, {capacity(k)});
+                auto t = id == "sbuffer" ? test::makeTechnique(id) : test::makeTechnique(id, {capacity(k)});
                 auto r = test::renderWith(scene, camera, size, *t, reverse ? reversed : FrameOptions{});
                 CHECK(r.result.stats.fragmentsCaptured == std::uint64_t(k) * 64);
                 CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
@@ -205,7 +199,7 @@ TEST_CASE("coplanar copies: ll and a large enough kbuffer or fab capture all K i
         }
         if (k > 2) {
             // Fewer kbuffer slots than coincident copies: exactly the slots are filled.
-            auto r = test::renderWith(scene, camera, size, *make("kbuffer", {capacity(2)}));
+            auto r = test::renderWith(scene, camera, size, *test::makeTechnique("kbuffer", {capacity(2)}));
             CHECK(r.result.stats.fragmentsCaptured == 2u * 64u);
             CHECK(r.result.stats.fragmentsDropped == std::uint64_t(k - 2) * 64);
         }
@@ -218,7 +212,7 @@ TEST_CASE("sbuffer stores and resolves in bands of rows when the fragments excee
     const std::uint64_t total = 16u * 64u * 48u;
     auto whole = test::renderWith(f.scene, f.camera, size, "sbuffer");
     CHECK(whole.result.stats.tiles == 1);
-    auto banded = test::renderWith(f.scene, f.camera, size, *make("sbuffer", {"max_block_mib=0.2"}));
+    auto banded = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("sbuffer", {"max_block_mib=0.2"}));
     // 0.2 MiB holds 10,485 entries: 10 rows of 1,024 per band, so 5 bands.
     CHECK(banded.result.stats.tiles == 5);
     CHECK(banded.result.stats.fragmentsCaptured == total);
@@ -228,7 +222,7 @@ TEST_CASE("sbuffer stores and resolves in bands of rows when the fragments excee
     CHECK(compareImages(banded.image, whole.image).maxAbsError == 0.0);
     // A block smaller than one row (1,024 entries): each row is a band of its own and keeps
     // what fits; the rest is counted as dropped, never written out of bounds.
-    auto tiny = test::renderWith(f.scene, f.camera, size, *make("sbuffer", {"max_block_mib=0.01"}));
+    auto tiny = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("sbuffer", {"max_block_mib=0.01"}));
     const std::uint64_t perRow = std::uint64_t(0.01 * 1024 * 1024) / 20;  // 524 entries
     CHECK(tiny.result.stats.tiles == 48);
     CHECK(tiny.result.stats.fragmentsCaptured == perRow * 48);
@@ -242,7 +236,7 @@ TEST_CASE("buffer techniques report bytes by their formulas") {
     const std::uint64_t px = 20 * 12;
     const std::uint64_t tailBytes = px * 20;  // RGBA32F + R32F
     auto bytes = [&](const std::string& id, std::initializer_list<std::string> settings) {
-        return test::renderWith(f.scene, f.camera, size, *make(id, settings)).result.stats.bytes;
+        return test::renderWith(f.scene, f.camera, size, *test::makeTechnique(id, settings)).result.stats.bytes;
     };
     // fab: K entries of 20 B per pixel + a 4-byte counter per pixel + 16 B of stat counters.
     CHECK(bytes("fab", {capacity(8)}) == px * 8 * 20 + px * 4 + 16);

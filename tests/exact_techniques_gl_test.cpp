@@ -19,19 +19,16 @@ constexpr float kTolerance = 1.0f / 255.0f;
 // A technique with a bounded capacity gets enough of it for `layers` fragments per pixel.
 std::unique_ptr<Technique> exactTechnique(const std::string& id, int layers) {
     auto t = createTechnique(id);
-    for (const auto& p : t->parameters())
-        if (p.name == "capacity") setParameter(*t, "capacity=" + std::to_string(std::max<double>(layers, p.min)));
+    if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=" + std::to_string(std::max(layers, 1)));
     return t;
 }
 
 // The techniques that are exact given enough memory: the robust ones, and the bounded ones
-// (a `capacity` parameter) given a capacity that holds every fragment.
+// (a `capacity` setting) given a capacity that holds every fragment.
 std::vector<std::string> robustIds() {
     std::vector<std::string> ids;
     for (const auto& e : techniqueRegistry()) {
-        auto params = e.create()->parameters();
-        bool bounded = std::any_of(params.begin(), params.end(), [](const Parameter& p) { return p.name == "capacity"; });
-        if (e.info.robust || bounded) ids.push_back(e.info.id);
+        if (e.info.robust || test::hasSetting(e.info.id, "capacity")) ids.push_back(e.info.id);
     }
     return ids;
 }

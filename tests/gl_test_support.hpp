@@ -6,11 +6,13 @@
 #include "gl/debug.hpp"
 #include "image/image.hpp"
 #include "oit/technique.hpp"
+#include "oit/technique_settings.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/gpu_scene.hpp"
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace strata::test {
 
@@ -19,6 +21,25 @@ namespace strata::test {
 inline gl::HeadlessContext& glContext() {
     static gl::HeadlessContext context;
     return context;
+}
+
+// Applies "[id.]name=value" to a technique through the path the command line takes.
+inline void setSetting(Technique& technique, const std::string& assignment) {
+    applySettings(technique, {{assignment, "test"}});
+}
+
+// Technique `id` with "name=value" settings.
+inline std::unique_ptr<Technique> makeTechnique(const std::string& id, const std::vector<std::string>& settings = {}) {
+    auto t = createTechnique(id);
+    for (const auto& s : settings) setSetting(*t, s);
+    return t;
+}
+
+// Whether technique `id` has a setting called `name` (read from the registry, no GL needed).
+inline bool hasSetting(const std::string& id, const std::string& name) {
+    for (const auto& d : findTechnique(id)->settings)
+        if (d.name == name) return true;
+    return false;
 }
 
 struct Rendered {

@@ -16,12 +16,6 @@ constexpr float kTolerance = 1.0f / 255.0f;
 
 using test::Fixture;
 
-std::unique_ptr<Technique> make(const std::string& id, std::initializer_list<std::string> settings = {}) {
-    auto t = createTechnique(id);
-    for (const auto& s : settings) setParameter(*t, s);
-    return t;
-}
-
 // Three full-view quads one behind another at distances 1, 2 and 3: separate objects whose
 // bounds are separable in depth.
 Scene threeQuadsScene() {
@@ -112,12 +106,12 @@ TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {
 TEST_CASE("max_passes bounds peeling and reports the overflow") {
     Fixture f(makeLayersScene(7, 0.3f));
     glm::ivec2 size(10, 10);
-    auto f2b = test::renderWith(*f.gpu, f.camera, size, *make("f2b", {"max_passes=3"}));
+    auto f2b = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b", {"max_passes=3"}));
     CHECK(f2b.result.stats.overflowed);
     CHECK(f2b.result.stats.fragmentsCaptured == 300);
     CHECK(f2b.result.stats.fragmentsDropped == 400);
     CHECK(f2b.result.stats.passes == 2 * 3 + 1);
-    auto dual = test::renderWith(*f.gpu, f.camera, size, *make("dual", {"max_passes=2"}));
+    auto dual = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("dual", {"max_passes=2"}));
     CHECK(dual.result.stats.overflowed);
     CHECK(dual.result.stats.fragmentsCaptured == 400);
     CHECK(dual.result.stats.fragmentsDropped == 300);
@@ -137,8 +131,8 @@ TEST_CASE("three objects one behind another: peeled objects are skipped, the ima
     // dual: init + 2 peels; after the first peel only the middle quad is left (7 of 9).
     for (const Expect& e : {Expect{"f2b", 9, 8}, Expect{"f2b2", 18, 16}, Expect{"dual", 9, 7}}) {
         CAPTURE(e.id);
-        auto without = test::renderWith(*f.gpu, f.camera, size, *make(e.id, {"skip_peeled=0"}));
-        auto with = test::renderWith(*f.gpu, f.camera, size, *make(e.id, {"skip_peeled=1"}));
+        auto without = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(e.id, {"skip_peeled=0"}));
+        auto with = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(e.id, {"skip_peeled=1"}));
         CHECK(without.result.stats.objectDraws == e.drawsWithout);
         CHECK(without.result.stats.objectDrawsSkipped == 0);
         CHECK(with.result.stats.objectDraws == e.drawsWith);
@@ -156,8 +150,8 @@ TEST_CASE("skipping is conservative: skip on and off agree on intersecting and c
         glm::ivec2 size(40, 30);
         for (const char* id : {"f2b", "f2b2", "dual"}) {
             CAPTURE(id);
-            auto without = test::renderWith(*f.gpu, f.camera, size, *make(id, {"skip_peeled=0"}));
-            auto with = test::renderWith(*f.gpu, f.camera, size, *make(id, {"skip_peeled=1"}));
+            auto without = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
+            auto with = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));
             CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
             CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
             CHECK(with.result.stats.passes == without.result.stats.passes);
@@ -180,8 +174,8 @@ TEST_CASE("skipping is conservative with the eye inside an object's bounds and b
         glm::ivec2 size(32, 24);
         for (const char* id : {"f2b", "f2b2", "dual"}) {
             CAPTURE(id);
-            auto without = test::renderWith(*f.gpu, camera, size, *make(id, {"skip_peeled=0"}));
-            auto with = test::renderWith(*f.gpu, camera, size, *make(id, {"skip_peeled=1"}));
+            auto without = test::renderWith(*f.gpu, camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
+            auto with = test::renderWith(*f.gpu, camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));
             CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
             CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
             CHECK(with.result.stats.passes == without.result.stats.passes);
@@ -195,14 +189,14 @@ TEST_CASE("bun: exact while every bucket holds at most two fragments, loses the 
     const std::uint64_t pixels = 240;
     Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
     // 16 evenly spaced layers over the range, 16 uniform buckets: one layer per bucket.
-    auto exact = test::renderWith(*f.gpu, f.camera, size, *make("bun", {"buckets=16", "range_from_geometry=1"}));
+    auto exact = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("bun", {"buckets=16", "range_from_geometry=1"}));
     CHECK(compareImages(exact.image, reference).maxAbsError <= kTolerance);
     CHECK(exact.result.stats.fragmentsCaptured == 16 * pixels);
     CHECK_FALSE(exact.result.stats.overflowed);
     CHECK(exact.result.stats.passes == 4);
     CHECK(exact.result.stats.bytes == pixels * (8 + 8 * 16 + 16 * 16) + 8);
     // 4 buckets of 4 layers each keep their nearest and farthest: half the fragments.
-    auto lossy = test::renderWith(*f.gpu, f.camera, size, *make("bun", {"buckets=4", "range_from_geometry=1"}));
+    auto lossy = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("bun", {"buckets=4", "range_from_geometry=1"}));
     CHECK(lossy.result.stats.fragmentsCaptured == 8 * pixels);
     CHECK(lossy.result.stats.fragmentsDropped == 8 * pixels);
     CHECK(lossy.result.stats.overflowed);
@@ -213,7 +207,7 @@ TEST_CASE("bun with the depth range from the bounds: 8 layers in 4 buckets are t
     Fixture f(makeLayersScene(8, 0.4f));
     glm::ivec2 size(16, 16);
     Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
-    auto r = test::renderWith(*f.gpu, f.camera, size, *make("bun", {"buckets=4"}));
+    auto r = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("bun", {"buckets=4"}));
     CHECK(compareImages(r.image, reference).maxAbsError <= kTolerance);
     CHECK(r.result.stats.fragmentsCaptured == 8u * 256u);
     CHECK_FALSE(r.result.stats.overflowed);

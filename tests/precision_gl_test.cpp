@@ -25,17 +25,7 @@ constexpr float kFloatTolerance = 2.5e-4f;
 
 using test::Fixture;
 
-std::unique_ptr<Technique> make(const std::string& id, const std::vector<std::string>& settings) {
-    auto t = createTechnique(id);
-    for (const auto& s : settings) setParameter(*t, s);
-    return t;
-}
-
-bool hasPrecision(Technique& t) {
-    for (const auto& p : t.parameters())
-        if (p.name == "precision") return true;
-    return false;
-}
+bool hasPrecision(Technique& t) { return test::hasSetting(t.info().id, "precision"); }
 
 bool allFinite(const Image& image) {
     for (float v : image.rgba)
@@ -52,10 +42,10 @@ TEST_CASE("precision is offered by every technique with float targets of its own
         CAPTURE(id);
         auto t = createTechnique(id);
         REQUIRE(hasPrecision(*t));
-        CHECK_NOTHROW(setParameter(*t, "precision=16"));
-        CHECK_NOTHROW(setParameter(*t, "precision=32"));
+        CHECK_NOTHROW(test::setSetting(*t, "precision=16"));
+        CHECK_NOTHROW(test::setSetting(*t, "precision=32"));
         for (const char* bad : {"precision=24", "precision=8", "precision=64", "precision=17"})
-            CHECK_THROWS_AS(setParameter(*t, bad), std::invalid_argument);
+            CHECK_THROWS_AS(test::setSetting(*t, bad), std::invalid_argument);
     }
     for (const char* id : {"abuffer", "sbuffer", "floor"}) {
         CAPTURE(id);
@@ -97,7 +87,7 @@ TEST_CASE("exact techniques match the reference at both precisions on layers sce
                 CAPTURE(n);
                 CAPTURE(bits);
                 settings.push_back("precision=" + std::to_string(bits));
-                auto r = test::renderWith(*f.gpu, f.camera, size, *make(c.id, settings));
+                auto r = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(c.id, settings));
                 settings.pop_back();
                 float e = compareImages(r.image, reference).maxAbsError;
                 error[bits == 32] = e;
@@ -119,8 +109,8 @@ TEST_CASE("approximate techniques: half and float accumulation give the same pic
         for (std::string id : {"blend-unsorted", "wboit", "stochastic"}) {
             CAPTURE(id);
             CAPTURE(n);
-            auto half = test::renderWith(*f.gpu, f.camera, size, *make(id, {"precision=16"}));
-            auto full = test::renderWith(*f.gpu, f.camera, size, *make(id, {"precision=32"}));
+            auto half = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"precision=16"}));
+            auto full = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"precision=32"}));
             CHECK(allFinite(half.image));
             float between = compareImages(half.image, full.image).maxAbsError;
             double rmse16 = compareImages(half.image, reference).rmse;
@@ -138,7 +128,7 @@ TEST_CASE("memory follows the precision: RGBA16F 8 B, RGBA32F 16 B, R16F 2 B, R3
     glm::ivec2 size(24, 10);
     const std::uint64_t px = 240;
     auto bytes = [&](const char* id, std::vector<std::string> settings) {
-        return test::renderWith(*f.gpu, f.camera, size, *make(id, settings)).result.stats.bytes;
+        return test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, settings)).result.stats.bytes;
     };
     CHECK(bytes("blend-unsorted", {"precision=16"}) == px * 8);  // RGBA16F scratch
     CHECK(bytes("blend-unsorted", {"precision=32"}) == 0);       // blends into the output
@@ -179,8 +169,8 @@ TEST_CASE("wboit at half float: weights scaled so 64 near fragments at the weigh
     camera.orientation = glm::quat(1, 0, 0, 0);
     camera.fitClipPlanes(gpu.bounds());
     glm::ivec2 size(16, 16);
-    auto half = test::renderWith(gpu, camera, size, *make("wboit", {"precision=16"}));
-    auto full = test::renderWith(gpu, camera, size, *make("wboit", {"precision=32"}));
+    auto half = test::renderWith(gpu, camera, size, *test::makeTechnique("wboit", {"precision=16"}));
+    auto full = test::renderWith(gpu, camera, size, *test::makeTechnique("wboit", {"precision=32"}));
     CHECK(allFinite(full.image));
     CHECK(allFinite(half.image));
     CHECK(compareImages(half.image, full.image).maxAbsError <= 0.03f);

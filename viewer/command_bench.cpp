@@ -4,6 +4,7 @@
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
 #include "scene/scene_source.hpp"
+#include "settings_options.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -20,7 +21,7 @@ struct BenchArgs {
     int warmup = 2;
     std::string cameraPath;
     std::string json, csv, images;
-    std::vector<std::string> parameters;
+    SettingsArgs settings;
 };
 
 std::vector<std::string> splitModes(const std::string& text) {
@@ -41,7 +42,8 @@ void run(const BenchArgs& a) {
     options.size = parseSize(a.size);
     options.frames = a.frames;
     options.warmupFrames = a.warmup;
-    options.parameters = a.parameters;
+    // Settings are checked against every mode before the scene loads or a frame renders.
+    options.settings = resolveSettingsArgs(benchModeIds(options.modes), a.settings);
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
     if (!a.images.empty()) {
         std::filesystem::create_directories(a.images);
@@ -74,7 +76,7 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--json", args->json, "write the JSON report here");
     cmd->add_option("--csv", args->csv, "write one CSV row per technique here");
     cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
-    cmd->add_option("--set", args->parameters, "technique parameter [id.]name=value (repeatable)");
+    addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }
 

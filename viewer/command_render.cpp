@@ -5,9 +5,11 @@
 #include "gl/context.hpp"
 #include "gl/debug.hpp"
 #include "oit/technique.hpp"
+#include "oit/technique_settings.hpp"
 #include "reference/raycast.hpp"
 #include "render/frame_renderer.hpp"
 #include "scene/scene_source.hpp"
+#include "settings_options.hpp"
 
 #include <cstdio>
 #include <optional>
@@ -23,7 +25,7 @@ struct RenderArgs {
     double time = 0.0;
     std::string out;
     std::string heatmap;
-    std::vector<std::string> parameters;
+    SettingsArgs settings;
 };
 
 // Exact depth ties per pixel from the CPU ray cast, as a heat colour over a dimmed image:
@@ -44,11 +46,12 @@ Image coplanarityHeatmap(const GpuScene& scene, const Camera& camera, const Imag
 
 void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
+    if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
+    const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
     Scene scene = openScene(a.scene);
     gl::HeadlessContext context;
     GpuScene gpu(std::move(scene));
-    auto technique = createTechnique(a.mode);
-    for (const auto& p : a.parameters) setParameter(*technique, p);
+    auto technique = createConfiguredTechnique(a.mode, settings);
     Camera camera = defaultCamera(gpu.scene(), gpu.objects());
     if (!a.cameraPath.empty()) {
         camera = cameraAt(CameraPath::read(a.cameraPath), a.time, camera);
@@ -85,7 +88,7 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--time", args->time, "time on the camera path, seconds");
     cmd->add_option("--out", args->out, "output image (.png sRGB 8-bit or .exr linear half)")->required();
     cmd->add_option("--heatmap", args->heatmap, "coplanarity heatmap image (exact depth ties per pixel, CPU ray cast)");
-    cmd->add_option("--set", args->parameters, "technique parameter name=value (repeatable)");
+    addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }
 

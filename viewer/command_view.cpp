@@ -1,6 +1,8 @@
 // `strata view`: the interactive viewer.
 #include "commands.hpp"
 
+#include "oit/technique.hpp"
+#include "settings_options.hpp"
 #include "view_app.hpp"
 
 namespace strata {
@@ -15,7 +17,8 @@ void registerViewCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("view", "open the interactive viewer");
     cmd->add_option("scene", options->scene, "scene to open")->capture_default_str();
     cmd->add_option("--mode", options->mode, "technique id")->capture_default_str();
-    cmd->add_option("--set", options->parameters, "technique parameter name=value (repeatable)");
+    auto settings = std::make_shared<SettingsArgs>();
+    addSettingsOptions(cmd, *settings);
     cmd->add_option("--path", *play, "play this camera path");
     cmd->add_option("--record", *record, "record the camera to this path file (R toggles)");
     cmd->add_flag("--immersive", options->immersive, "head-tracked mode driven by --trace");
@@ -32,6 +35,9 @@ void registerViewCommand(CLI::App& app) {
     cmd->add_option("--size", *size, "window size WxH")->capture_default_str();
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);
+        if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
+        // Against every technique: the panel can switch to any of them.
+        options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
         options->width = s.x;
         options->height = s.y;
         if (!play->empty()) options->playPath = *play;

@@ -135,15 +135,7 @@ public:
           truth_(std::move(truth)), truthLabel_(std::move(truthLabel)) {
         device_ = gl::currentDeviceInfo();
         base_ = defaultCamera(scene_.scene(), scene_.objects());
-        technique_ = createTechnique(options.mode);
-        for (const auto& a : options.parameters) {
-            auto dot = a.find('.'), eq = a.find('=');
-            if (dot != std::string::npos && eq != std::string::npos && dot < eq) {
-                if (a.substr(0, dot) == options.mode) setParameter(*technique_, a.substr(dot + 1));
-            } else {
-                setParameter(*technique_, a);
-            }
-        }
+        technique_ = createConfiguredTechnique(options.mode, options.settings);
         predictor_ = indexOf(tracking::predictorNames(), options.predictor, "predictor");
         deflect_ = int(tracking::parseDeflect(options.deflect));
         stereo_ = options.stereo;

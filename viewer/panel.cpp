@@ -1,6 +1,7 @@
 #include "panel.hpp"
 
 #include "gl/debug.hpp"
+#include "settings_panel.hpp"
 
 #include <imgui.h>
 
@@ -53,7 +54,7 @@ void helpTooltip(const std::string& text) {
     if (!text.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
 }
 
-void drawTechnique(const PanelState& state, PanelRequests& requests) {
+void drawTechnique(const PanelState& state, PanelSettings& settings, PanelRequests& requests) {
     const TechniqueEntry* current = findTechnique(state.techniqueId);
     std::string preview = current ? techniqueLabel(current->info) : state.techniqueId;
     ImGui::SetNextItemWidth(-1.0f);
@@ -74,35 +75,7 @@ void drawTechnique(const PanelState& state, PanelRequests& requests) {
         ImGui::Text("robust: %s   coplanarity-aware: %s", info.robust ? "yes" : "no",
                     info.handlesCoplanarity ? "yes" : "no");
     }
-    if (!state.technique) return;
-    auto parameters = state.technique->parameters();
-    if (parameters.empty()) {
-        ImGui::TextDisabled("no parameters");
-        return;
-    }
-    for (auto& p : parameters) {
-        ImGui::PushID(p.name.c_str());
-        if (p.integer) {
-            // A 64-bit field: capacities can exceed an int.
-            double lo = std::max(p.min, -9.0e18), hi = std::min(p.max, 9.0e18);
-            std::int64_t v = std::int64_t(std::llround(*p.value));
-            const std::int64_t step = p.step > 0 ? std::int64_t(p.step) : 1, stepFast = 16 * step;
-            if (ImGui::InputScalar(p.name.c_str(), ImGuiDataType_S64, &v, &step, &stepFast)) {
-                double snapped = p.step > 0 ? p.min + std::round((double(v) - p.min) / p.step) * p.step : double(v);
-                *p.value = std::clamp(snapped, lo, hi);
-            }
-        } else {
-            double v = *p.value;
-            double range = p.max - p.min;
-            float speed = std::isfinite(range) && range > 0.0 && range < 1e9 ? float(range / 500.0)
-                                                                              : float(std::max(std::abs(v), 1.0) * 0.01);
-            if (ImGui::DragScalar(p.name.c_str(), ImGuiDataType_Double, &v, speed, &p.min, &p.max, "%.4g",
-                                  ImGuiSliderFlags_AlwaysClamp))
-                *p.value = std::clamp(v, p.min, p.max);
-        }
-        helpTooltip(p.help + " [" + std::to_string(p.min) + ", " + std::to_string(p.max) + "]");
-        ImGui::PopID();
-    }
+    if (current) drawSettings(current->settings, settings.technique);
 }
 
 void drawTiming(const PanelState& state) {
@@ -219,7 +192,7 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     ImGui::SetNextWindowSize(ImVec2(380.0f, height), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Strata");
-    if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) drawTechnique(state, requests);
+    if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) drawTechnique(state, settings, requests);
     if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) drawTiming(state);
     if (ImGui::CollapsingHeader("Fragments and memory", ImGuiTreeNodeFlags_DefaultOpen)) drawFragments(state, settings);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(state);

@@ -1,5 +1,5 @@
 #pragma once
-// The viewer's ImGui panel: technique choice and parameters, live GPU time per pass with a
+// The viewer's ImGui panel: technique choice and settings, live GPU time per pass with a
 // plot of recent frames, fragment counts and memory, GL errors, scene and camera state, and the
 // walkthrough keys. It reads a snapshot of the viewer's state and returns what the user asked
 // for; the viewer applies the requests between frames (never while the panel is drawing).
@@ -67,8 +67,9 @@ struct PanelState {
     std::string lastSaved;      // last screenshot or path written
 };
 
-// Settings the panel edits in place.
+// Settings the panel edits in place: copies, which the viewer applies between frames.
 struct PanelSettings {
+    SettingValues technique;    // the current technique's settings
     bool countEveryFrame = false;
     int countInterval = 30;     // count fragments every N frames (0 = never) unless every frame
     bool vsync = true;

@@ -44,26 +44,6 @@ std::string timestampedName(const char* prefix, const char* extension) {
     return name;
 }
 
-// `--set` assignments: `name=value` or `id.name=value`. Strict for the technique the command line
-// chose (a typo is an error); lenient on a switch in the panel (names the technique lacks are skipped).
-void applyAssignments(Technique& technique, const std::vector<std::string>& assignments, bool strict) {
-    const std::string& id = technique.info().id;
-    for (const auto& a : assignments) {
-        auto dot = a.find('.'), eq = a.find('=');
-        if (dot != std::string::npos && eq != std::string::npos && dot < eq) {
-            if (a.substr(0, dot) == id) setParameter(technique, a.substr(dot + 1));
-            continue;
-        }
-        if (strict) {
-            setParameter(technique, a);
-            continue;
-        }
-        std::string name = a.substr(0, eq);
-        for (const auto& p : technique.parameters())
-            if (p.name == name) setParameter(technique, a);
-    }
-}
-
 class Viewer {
 public:
     Viewer(const ViewOptions& options, Scene scene, GLFWwindow* window)
@@ -71,8 +51,9 @@ public:
           controls_(defaultCamera(scene_.scene(), scene_.objects()), scene_.bounds()) {
         device_ = gl::currentDeviceInfo();
         techniqueId_ = options.mode;
-        technique_ = createTechnique(techniqueId_);
-        applyAssignments(*technique_, options.parameters, true);
+        techniqueSettings_ = options.settings;
+        technique_ = createConfiguredTechnique(techniqueId_, techniqueSettings_);
+        settings_.technique = technique_->settings();
         present_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present.frag.glsl"});
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
@@ -167,10 +148,10 @@ private:
 
     void switchTechnique(const std::string& id) {
         try {
-            auto next = createTechnique(id);
-            applyAssignments(*next, options_.parameters, false);
+            auto next = createConfiguredTechnique(id, techniqueSettings_);
             technique_ = std::move(next);
             techniqueId_ = id;
+            settings_.technique = technique_->settings();
             count_.reset();
             lastError_.clear();
         } catch (const std::exception& e) {
@@ -179,16 +160,10 @@ private:
     }
 
     // F5: new technique and renderer, so every program is rebuilt from the files on disk; the
-    // technique keeps its parameter values.
+    // technique keeps its settings.
     void reload() {
         try {
-            auto next = createTechnique(techniqueId_);
-            if (technique_) {
-                auto old = technique_->parameters();
-                for (auto& p : next->parameters())
-                    for (const auto& o : old)
-                        if (o.name == p.name) *p.value = *o.value;
-            }
+            auto next = createConfiguredTechnique(techniqueId_, techniqueSettings_);
             gl::Program present = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present.frag.glsl"});
             technique_ = std::move(next);
             renderer_ = std::make_unique<FrameRenderer>();
@@ -249,6 +224,12 @@ private:
         frameOptions.timePasses = true;
         frameOptions.countFragments =
             settings_.countEveryFrame || (settings_.countInterval > 0 && frameIndex_ % std::uint64_t(settings_.countInterval) == 0);
+        // The panel edited a copy; it takes effect here, between frames, where it differs from
+        // what the last frame used (the technique reallocates what the change needs).
+        if (technique_ && settings_.technique != technique_->settings()) {
+            technique_->setSettings(settings_.technique);
+            techniqueSettings_[techniqueId_] = settings_.technique;
+        }
         try {
             frame_ = renderer_->render(scene_, camera, size, technique_.get(), frameOptions);
             if (frame_.fragmentsTotal) count_ = FragmentCount{frameIndex_, *frame_.fragmentsTotal, frame_.stats};
@@ -376,6 +357,7 @@ private:
     std::optional<FragmentCount> count_;
     std::uint64_t frameIndex_ = 0;
     PanelSettings settings_;
+    SettingsById techniqueSettings_;  // each technique's, kept across switches and reloads
     PanelRequests requests_;
     glm::vec2 lastCursor_{0.0f};
     bool dragLeft_ = false, dragRight_ = false;

@@ -1,6 +1,8 @@
 #pragma once
 // `strata view`: the interactive window (GLFW + Dear ImGui) over the same frame pipeline the
 // headless commands use.
+#include "oit/technique_settings.hpp"
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -11,7 +13,7 @@ namespace strata {
 struct ViewOptions {
     std::string scene = "builtin:default";
     std::string mode = "abuffer";
-    std::vector<std::string> parameters;                 // name=value for the technique
+    SettingsById settings;                               // every technique's, resolved from --set/--settings
     std::optional<std::filesystem::path> playPath;       // --path: play a camera path
     std::optional<std::filesystem::path> recordPath;     // --record: record the camera to a path file
     bool immersive = false;

@@ -40,28 +40,10 @@ std::vector<Camera> benchCameras(const GpuScene& scene, const BenchOptions& opti
     return cameras;
 }
 
-void applyParameters(Technique& technique, const std::vector<std::string>& assignments) {
-    const std::string& id = technique.info().id;
-    for (const auto& a : assignments) {
-        auto dot = a.find('.');
-        auto eq = a.find('=');
-        if (dot != std::string::npos && dot < eq) {
-            if (a.substr(0, dot) == id) setParameter(technique, a.substr(dot + 1));
-            continue;
-        }
-        // An unqualified name applies to every technique that has it.
-        std::string name = a.substr(0, eq);
-        auto params = technique.parameters();
-        if (std::any_of(params.begin(), params.end(), [&](const Parameter& p) { return p.name == name; }))
-            setParameter(technique, a);
-    }
-}
-
 }  // namespace
 
-BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
-    if (options.frames < 1) throw std::invalid_argument("bench: --frames must be at least 1");
-    std::vector<std::string> modes = options.modes;
+std::vector<std::string> benchModeIds(const std::vector<std::string>& requested) {
+    std::vector<std::string> modes = requested;
     if (modes.empty())
         for (const auto& e : techniqueRegistry()) modes.push_back(e.info.id);
     for (const auto& m : modes)
@@ -69,6 +51,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     // The reference renders first, so every technique is compared on the same frames.
     modes.erase(std::remove(modes.begin(), modes.end(), "abuffer"), modes.end());
     modes.insert(modes.begin(), "abuffer");
+    return modes;
+}
+
+BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
+    if (options.frames < 1) throw std::invalid_argument("bench: --frames must be at least 1");
+    const std::vector<std::string> modes = benchModeIds(options.modes);
     bool referenceRequested = std::find(options.modes.begin(), options.modes.end(), "abuffer") != options.modes.end() ||
                               options.modes.empty();
 
@@ -114,8 +102,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         const std::string& id = modes[m];
         if (options.progress)
             options.progress("bench: [" + std::to_string(m + 1) + "/" + std::to_string(modes.size()) + "] " + id);
-        std::unique_ptr<Technique> owned = createTechnique(id);
-        applyParameters(*owned, options.parameters);
+        std::unique_ptr<Technique> owned = createConfiguredTechnique(id, options.settings);
         Technique* technique = owned.get();
         if (m == 0) reference = std::move(owned);
 
@@ -129,6 +116,8 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.family = technique->info().family;
         mode.robust = technique->info().robust;
         mode.handlesCoplanarity = technique->info().handlesCoplanarity;
+        mode.settingDescriptions = technique->settingDescriptions();
+        mode.settings = technique->settings();
         std::vector<double> gpu, cpu, opaque;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;

@@ -9,6 +9,7 @@
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"
+#include "oit/technique_settings.hpp"
 #include "render/gpu_scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -28,7 +29,7 @@ struct BenchOptions {
     int frames = 10;
     int warmupFrames = 2;
     std::optional<CameraPath> cameraPath;   // else the scene's default camera, fixed
-    std::vector<std::string> parameters;    // "id.name=value" or "name=value" (applies to every mode having it)
+    SettingsById settings;                  // from resolveSettings(benchModeIds(modes), ...); defaults where absent
     std::optional<std::filesystem::path> imagesDir;  // first frame of each mode as PNG
     std::function<void(const std::string&)> progress;  // one line per step, may be empty
 };
@@ -54,6 +55,8 @@ struct BenchMode {
     std::uint64_t fragmentsTail = 0;         // summed over frames
     double rmse = 0, psnr = 100, maxAbsError = 0;
     std::vector<std::pair<std::string, double>> passMsMedian;  // per pass name
+    std::vector<SettingDescription> settingDescriptions;       // what the mode ran with
+    SettingValues settings;
 };
 
 struct BenchReport {
@@ -68,7 +71,11 @@ struct BenchReport {
     std::size_t objects = 0;
 };
 
-// Needs a current GL context. Throws std::invalid_argument for an unknown mode or parameter.
+// The techniques a bench of `modes` renders (empty: all), the reference first: the set its
+// settings are resolved against. Throws std::invalid_argument for an unknown id.
+std::vector<std::string> benchModeIds(const std::vector<std::string>& modes);
+
+// Needs a current GL context. Throws std::invalid_argument for an unknown mode.
 BenchReport runBench(const GpuScene& scene, const BenchOptions& options);
 
 nlohmann::json benchToJson(const BenchReport& report);

@@ -54,6 +54,15 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"rmse", finite(m.rmse)}, {"psnr", finite(m.psnr)}, {"max_abs_error", finite(m.maxAbsError)},
         });
         if (floorTime) modes.back()["ms_over_floor"] = finite(m.msMedian / *floorTime);
+        // What the row was measured with: the cost and loss of a setting are read off two rows.
+        nlohmann::json settings = nlohmann::json::object();
+        for (std::size_t i = 0; i < m.settingDescriptions.size() && i < m.settings.size(); ++i) {
+            const auto& d = m.settingDescriptions[i];
+            if (d.type == SettingType::Flag) settings[d.name] = m.settings[i] != 0;
+            else if (d.type == SettingType::Integer) settings[d.name] = std::int64_t(m.settings[i]);
+            else settings[d.name] = m.settings[i];
+        }
+        modes.back()["settings"] = settings;
     }
     return {
         {"scene", r.scene},

@@ -17,20 +17,27 @@ struct Tile {
     glm::ivec2 size;
 };
 
-class ABuffer final : public Technique {
+struct ABufferSettings {
+    int initialNodes = 0;
+    double maxBlockMiB = 0;
+    bool computeResolve = false;
+    static const SettingsSchema<ABufferSettings>& schema() {
+        static const SettingsSchema<ABufferSettings> s{
+            integerSetting(&ABufferSettings::initialNodes, "initial_nodes", 0, 1000000000, SettingChange::Reallocate,
+                           "node pool capacity on the first frame (0: two per pixel); it grows as needed"),
+            realSetting(&ABufferSettings::maxBlockMiB, "max_block_mib", 0, 1e6, SettingChange::Reallocate,
+                        "largest node pool in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)"),
+            flagSetting(&ABufferSettings::computeResolve, "compute_resolve", SettingChange::Nothing,
+                        "resolve in a compute dispatch instead of a full-screen fragment pass (same image)"),
+        };
+        return s;
+    }
+};
+
+class ABuffer final : public TechniqueWithSettings<ABufferSettings> {
 public:
     explicit ABuffer(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {
-            {"initial_nodes", "node pool capacity on the first frame (0: two per pixel); it grows as needed", &initialNodes_, 0, 1e9, true},
-            {"max_block_mib", "largest node pool in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
-             &maxBlockMiB_, 0, 1e6, false},
-            {"compute_resolve", "1: resolve in a compute dispatch instead of a full-screen fragment pass (same image)",
-             &computeResolve_, 0, 1, true},
-        };
-    }
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -49,7 +56,7 @@ public:
         // First frame: the parameter, or two fragments per pixel; later frames keep what the
         // previous frame needed, so the pool follows the fragments present.
         if (capacity_ == 0)
-            capacity_ = initialNodes_ > 0 ? std::uint64_t(initialNodes_) : std::uint64_t(frame.size.x) * frame.size.y * 2;
+            capacity_ = settings_.initialNodes > 0 ? std::uint64_t(settings_.initialNodes) : std::uint64_t(frame.size.x) * frame.size.y * 2;
         capacity_ = std::max<std::uint64_t>(capacity_, 1);
         if (capacity_ > maxNodes) capacity_ = maxNodes;
         ensurePool();
@@ -101,9 +108,8 @@ public:
         if (largestTile * 4 < capacity_) capacity_ = std::max<std::uint64_t>(largestTile + largestTile / 8, 1024);
     }
 
-
 private:
-    std::uint64_t maxPoolNodes() const { return gl::storageBlockElements(kNodeBytes, maxBlockMiB_); }
+    std::uint64_t maxPoolNodes() const { return gl::storageBlockElements(kNodeBytes, settings_.maxBlockMiB); }
 
     void ensurePool() {
         if (poolCapacity_ == capacity_) return;
@@ -149,7 +155,7 @@ private:
     }
 
     void resolve(const FrameContext& frame, const Tile& tile) {
-        if (computeResolve_ != 0) {
+        if (settings_.computeResolve) {
             resolveCompute(frame, tile);
             return;
         }
@@ -193,9 +199,6 @@ private:
     gl::Texture heads_;
     glm::ivec2 headsSize_{0, 0};
     std::uint64_t capacity_ = 0, poolCapacity_ = 0;
-    double initialNodes_ = 0;
-    double maxBlockMiB_ = 0;
-    double computeResolve_ = 0;
     std::vector<Tile> lastTiles_;  // last frame's tiles when it needed more than one
     glm::ivec2 lastTilesSize_{0, 0};
     std::uint64_t lastTotal_ = 0;
@@ -207,7 +210,7 @@ TechniqueEntry abufferEntry() {
     TechniqueInfo info{"abuffer", "reference", true, true, "2 per tile (+1 store per regrow)",
                        "w*h*4 heads + 24 B per fragment, pool grown to the fragments present",
                        "exact reference: per-pixel linked lists of every fragment, sorted by (depth, object, primitive)"};
-    return {info, [info] { return std::make_unique<ABuffer>(info); }};
+    return techniqueEntry<ABuffer>(info);
 }
 
 }  // namespace strata

@@ -15,17 +15,23 @@
 namespace strata {
 namespace {
 
-class BlendTechnique final : public Technique {
+struct BlendSettings {
+    int precision = 32;
+    static const SettingsSchema<BlendSettings>& schema() {
+        static const SettingsSchema<BlendSettings> s{precisionSetting(&BlendSettings::precision, "blend target")};
+        return s;
+    }
+};
+
+class BlendTechnique final : public TechniqueWithSettings<BlendSettings> {
 public:
     BlendTechnique(TechniqueInfo info, bool sorted) : info_(std::move(info)), sorted_(sorted) {}
     const TechniqueInfo& info() const override { return info_; }
 
-    std::vector<Parameter> parameters() override { return {precisionParameter(&precision_, "blend target")}; }
-
     void render(const FrameContext& frame) override {
         if (!program_.program) program_ = buildSceneProgram("oit/blend.frag.glsl");
         std::vector<int> order = sorted_ ? sortedBackToFront(frame) : frame.transparentOrder;
-        const bool half = isHalf(precision_);
+        const bool half = isHalf(settings_.precision);
         stats_ = {};
         stats_.passes = 1;
         gl::ScopedPass pass(frame.timer, "blend");
@@ -48,7 +54,7 @@ public:
         GLuint64 blended = 0;
         glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
         stats_.fragmentsCaptured = blended;
-        stats_.bytes = half ? std::uint64_t(frame.size.x) * frame.size.y * floatTexelBytes(precision_, 4) : 0;
+        stats_.bytes = half ? std::uint64_t(frame.size.x) * frame.size.y * floatTexelBytes(settings_.precision, 4) : 0;
     }
 
 private:
@@ -59,7 +65,6 @@ private:
 
     TechniqueInfo info_;
     bool sorted_;
-    double precision_ = 32;
     SceneProgram program_;
     gl::Query samples_;
     ScratchTarget scratch_;
@@ -69,14 +74,14 @@ TechniqueEntry blendUnsortedEntry() {
     TechniqueInfo info{"blend-unsorted", "baseline", false, false, "1",
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending in submission order (wrong wherever objects arrive front to back)"};
-    return {info, [info] { return std::make_unique<BlendTechnique>(info, false); }};
+    return techniqueEntry<BlendTechnique>(info, false);
 }
 
 TechniqueEntry blendSortedEntry() {
     TechniqueInfo info{"blend-sorted", "baseline", false, false, "1",
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending with objects sorted back to front by bounds centre"};
-    return {info, [info] { return std::make_unique<BlendTechnique>(info, true); }};
+    return techniqueEntry<BlendTechnique>(info, true);
 }
 
 }  // namespace

@@ -1,9 +1,8 @@
 #pragma once
-// Accumulation precision: the `precision` parameter of every technique that blends into (or
+// Accumulation precision: the `precision` setting (precisionSetting in settings.hpp) of every technique that blends into (or
 // stores colour in) float targets of its own. 16 bits per channel (RGBA16F: half the memory and
 // bandwidth, a 10-bit mantissa, largest value 65504) or 32 (RGBA32F). Depth targets are never
 // affected: they stay 32-bit float whatever this says.
-#include "oit/technique.hpp"
 
 #include <epoxy/gl.h>
 
@@ -11,19 +10,14 @@
 
 namespace strata {
 
-inline Parameter precisionParameter(double* bits, const char* what = "accumulation targets") {
-    return {"precision", std::string("bits per channel of the ") + what + ": 16 (half float) or 32 (float)", bits,
-            16, 32, true, 16};
-}
-
-inline bool isHalf(double bits) { return bits < 24; }
+inline bool isHalf(int bits) { return bits < 24; }
 
 // GL_RGBA16F / GL_RGBA32F.
-inline GLenum rgbaFloatFormat(double bits) { return isHalf(bits) ? GL_RGBA16F : GL_RGBA32F; }
+inline GLenum rgbaFloatFormat(int bits) { return isHalf(bits) ? GL_RGBA16F : GL_RGBA32F; }
 // GL_R16F / GL_R32F.
-inline GLenum redFloatFormat(double bits) { return isHalf(bits) ? GL_R16F : GL_R32F; }
+inline GLenum redFloatFormat(int bits) { return isHalf(bits) ? GL_R16F : GL_R32F; }
 // Bytes per texel of a float target with `channels` channels.
-inline std::uint64_t floatTexelBytes(double bits, int channels) {
+inline std::uint64_t floatTexelBytes(int bits, int channels) {
     return std::uint64_t(channels) * (isHalf(bits) ? 2u : 4u);
 }
 

@@ -1,12 +1,13 @@
 #pragma once
 // The transparency-technique interface. A technique composites the scene's transparent objects
 // over the opaque image: it reads the opaque colour and depth from the frame targets and writes
-// the output colour. It declares what it is (TechniqueInfo), exposes its parameters, and reports
+// the output colour. It declares what it is (TechniqueInfo), exposes its settings, and reports
 // what the last frame cost and captured (TechniqueStats).
 #include "camera/camera.hpp"
 #include "gl/gpu_timer.hpp"
 #include "render/frame_targets.hpp"
 #include "render/gpu_scene.hpp"
+#include "oit/settings.hpp"
 
 #include <glm/glm.hpp>
 
@@ -44,18 +45,6 @@ struct TechniqueStats {
     std::uint64_t fragmentsTail = 0;      // overflowed fragments blended approximately ("tail" option)
 };
 
-// An integer or real knob with its range, driving the panel, --set key=value and JSON alike.
-// With step > 0 only min + k * step is accepted (e.g. precision 16 or 32).
-struct Parameter {
-    std::string name;
-    std::string help;
-    double* value;
-    double min;
-    double max;
-    bool integer;
-    double step = 0;
-};
-
 struct FrameContext {
     const GpuScene& scene;
     const Camera& camera;
@@ -74,25 +63,47 @@ public:
     virtual const TechniqueInfo& info() const = 0;
     virtual void render(const FrameContext& frame) = 0;
     const TechniqueStats& stats() const { return stats_; }
-    virtual std::vector<Parameter> parameters() { return {}; }
+
+    // The settings, described once per technique (see settings.hpp). setSettings takes values
+    // already checked against the descriptions (resolveSettings, the panel); they apply from the
+    // next render, which compares them with the previous frame's to reallocate what changed.
+    virtual std::vector<SettingDescription> settingDescriptions() const = 0;
+    virtual SettingValues settings() const = 0;
+    virtual void setSettings(const SettingValues& values) = 0;
 
 protected:
     TechniqueStats stats_;
 };
 
+// A technique whose settings are the plain struct S, described by S::schema().
+template <class S>
+class TechniqueWithSettings : public Technique {
+public:
+    using Settings = S;
+    std::vector<SettingDescription> settingDescriptions() const override { return S::schema().descriptions(); }
+    SettingValues settings() const override { return S::schema().read(settings_); }
+    void setSettings(const SettingValues& values) override { settings_ = S::schema().write(values); }
+
+protected:
+    S settings_;
+};
+
 struct TechniqueEntry {
     TechniqueInfo info;
+    std::vector<SettingDescription> settings;  // readable without a GL context
     std::function<std::unique_ptr<Technique>()> create;
 };
+
+// The registry line of technique class T, constructed from its info and `args`.
+template <class T, class... Args>
+TechniqueEntry techniqueEntry(TechniqueInfo info, Args... args) {
+    return {info, T::Settings::schema().descriptions(), [info, args...] { return std::make_unique<T>(info, args...); }};
+}
 
 // Every technique by id, in display order. The command line, panel and bench read this list.
 const std::vector<TechniqueEntry>& techniqueRegistry();
 // Throws std::invalid_argument listing the known ids when `id` is unknown.
 std::unique_ptr<Technique> createTechnique(const std::string& id);
 const TechniqueEntry* findTechnique(const std::string& id);
-
-// Applies "name=value" to the technique's parameters; throws std::invalid_argument on an
-// unknown name, a malformed value or one outside the range.
-void setParameter(Technique& technique, const std::string& assignment);
 
 }  // namespace strata

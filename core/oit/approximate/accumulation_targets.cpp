@@ -8,7 +8,7 @@
 
 namespace strata::approximate {
 
-void AccumulationTargets::beginAccumulation(const FrameContext& frame, double precisionBits) {
+void AccumulationTargets::beginAccumulation(const FrameContext& frame, int precisionBits) {
     if (frame.size != size_ || precisionBits != bits_ || !fbo_) {
         accum_ = gl::createTexture2D(rgbaFloatFormat(precisionBits), frame.size.x, frame.size.y);
         transmittance_ = gl::createTexture2D(redFloatFormat(precisionBits), frame.size.x, frame.size.y);
@@ -43,7 +43,7 @@ void AccumulationTargets::endAccumulation() const {
     glBindTextureUnit(approximate_bindings::kTransmittance, transmittance_.id());
 }
 
-std::uint64_t AccumulationTargets::bytesPerPixel(double precisionBits) {
+std::uint64_t AccumulationTargets::bytesPerPixel(int precisionBits) {
     return floatTexelBytes(precisionBits, 4) + floatTexelBytes(precisionBits, 1);
 }
 

@@ -12,15 +12,15 @@ public:
     // (Re)allocates on a size or precision change, attaches the frame's opaque depth, clears
     // accumulation to 0 and transmittance to 1, binds the framebuffer and sets the blend state:
     // buffer 0 (ONE, ONE), buffer 1 (ZERO, ONE_MINUS_SRC_COLOR).
-    void beginAccumulation(const FrameContext& frame, double precisionBits);
+    void beginAccumulation(const FrameContext& frame, int precisionBits);
     // Blending off; accumulation and transmittance bound as textures for the composite.
     void endAccumulation() const;
 
     // Bytes per pixel at a precision: 4 + 1 channels of 2 or 4 bytes.
-    static std::uint64_t bytesPerPixel(double precisionBits);
+    static std::uint64_t bytesPerPixel(int precisionBits);
 
 private:
-    double bits_ = 0;
+    int bits_ = 0;
     glm::ivec2 size_{0, 0};
     gl::Texture accum_, transmittance_;
     gl::Framebuffer fbo_;

@@ -22,7 +22,7 @@
 namespace strata::approximate {
 namespace {
 
-class Floor final : public Technique {
+class Floor final : public TechniqueWithSettings<NoSettings> {
 public:
     explicit Floor(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
@@ -65,7 +65,7 @@ TechniqueEntry floorEntry() {
     TechniqueInfo info{"floor", "floor", false, false, "1", "w*h*1 (R8 scratch colour, never read)",
                        "lower bound, not OIT: every fragment rasterized and shaded once into an R8 scratch "
                        "target, no blending; its image is the opaque image"};
-    return {info, [info] { return std::make_unique<Floor>(info); }};
+    return techniqueEntry<Floor>(info);
 }
 
 }  // namespace strata::approximate

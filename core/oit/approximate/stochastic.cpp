@@ -21,15 +21,23 @@
 namespace strata::approximate {
 namespace {
 
-class Stochastic final : public Technique {
+struct StochasticSettings {
+    int samples = 8;
+    int precision = 16;
+    static const SettingsSchema<StochasticSettings>& schema() {
+        static const SettingsSchema<StochasticSettings> s{
+            integerSetting(&StochasticSettings::samples, "samples", 1, 64, SettingChange::Reallocate,
+                           "S, stochastic samples per pixel (noise falls as 1/sqrt(S))"),
+            precisionSetting(&StochasticSettings::precision, "accumulation and transmittance"),
+        };
+        return s;
+    }
+};
+
+class Stochastic final : public TechniqueWithSettings<StochasticSettings> {
 public:
     explicit Stochastic(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {{"samples", "S, stochastic samples per pixel (noise falls as 1/sqrt(S))", &samples_, 1, 64, true},
-                precisionParameter(&precision_, "accumulation and transmittance")};
-    }
 
     void render(const FrameContext& frame) override {
         if (!depthProgram_.program) {
@@ -38,7 +46,7 @@ public:
             compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/approximate/stochastic_composite.frag.glsl"});
             query_ = gl::createQuery(GL_SAMPLES_PASSED);
         }
-        const int samples = int(samples_);
+        const int samples = settings_.samples;
         if (frame.size != depthsSize_ || samples != depthsLayers_) {
             sampleDepths_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
             glTextureStorage3D(sampleDepths_.id(), 1, GL_R32UI, frame.size.x, frame.size.y, samples);
@@ -62,7 +70,7 @@ public:
         }
         {
             gl::ScopedPass pass(frame.timer, "stochastic accumulate");
-            targets_.beginAccumulation(frame, precision_);
+            targets_.beginAccumulation(frame, settings_.precision);
             glBindImageTexture(approximate_bindings::kSampleDepths, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
             // Every fragment in front of the opaque depth adds its (possibly zero) share.
             glBeginQuery(GL_SAMPLES_PASSED, query_.id());
@@ -77,7 +85,7 @@ public:
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 3;
-        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * (std::uint64_t(samples) * 4 + AccumulationTargets::bytesPerPixel(precision_));
+        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * (std::uint64_t(samples) * 4 + AccumulationTargets::bytesPerPixel(settings_.precision));
         GLuint64 blended = 0;
         glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &blended);
         stats_.fragmentsCaptured = blended;
@@ -92,8 +100,6 @@ private:
     glm::ivec2 depthsSize_{0, 0};
     int depthsLayers_ = 0;
     AccumulationTargets targets_;
-    double samples_ = 8;
-    double precision_ = 16;
 };
 
 }  // namespace
@@ -101,7 +107,7 @@ private:
 TechniqueEntry stochasticEntry() {
     TechniqueInfo info{"stochastic", "approximate", false, false, "3", "w*h*(S*4 + 20)",
                        "stochastic transparency (Enderton 2010), S virtual samples, alpha-corrected"};
-    return {info, [info] { return std::make_unique<Stochastic>(info); }};
+    return techniqueEntry<Stochastic>(info);
 }
 
 }  // namespace strata::approximate

@@ -25,16 +25,23 @@ namespace {
 
 constexpr float kHalfWeightScale = 1.0f / 16.0f;  // a power of two: the scaling itself is exact
 
-class Wboit final : public Technique {
+struct WboitSettings {
+    int weight = 7;
+    int precision = 16;
+    static const SettingsSchema<WboitSettings>& schema() {
+        static const SettingsSchema<WboitSettings> s{
+            integerSetting(&WboitSettings::weight, "weight", 7, 10, SettingChange::Nothing,
+                           "the paper's depth weight: equation 7, 8, 9 (eye distance) or 10 (window depth)"),
+            precisionSetting(&WboitSettings::precision, "accumulation and revealage"),
+        };
+        return s;
+    }
+};
+
+class Wboit final : public TechniqueWithSettings<WboitSettings> {
 public:
     explicit Wboit(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {{"weight", "the paper's depth weight: equation 7, 8, 9 (eye distance) or 10 (window depth)",
-                 &weightEquation_, 7, 10, true},
-                precisionParameter(&precision_, "accumulation and revealage")};
-    }
 
     void render(const FrameContext& frame) override {
         if (!accumulateProgram_.program) {
@@ -46,14 +53,14 @@ public:
         GLuint program = accumulateProgram_.id();
         glProgramUniform1f(program, glGetUniformLocation(program, "uNear"), frame.camera.nearPlane);
         glProgramUniform1f(program, glGetUniformLocation(program, "uFar"), frame.camera.farPlane);
-        glProgramUniform1i(program, glGetUniformLocation(program, "uWeightEquation"), int(weightEquation_));
-        const float weightScale = isHalf(precision_) ? kHalfWeightScale : 1.0f;
+        glProgramUniform1i(program, glGetUniformLocation(program, "uWeightEquation"), settings_.weight);
+        const float weightScale = isHalf(settings_.precision) ? kHalfWeightScale : 1.0f;
         glProgramUniform1f(program, glGetUniformLocation(program, "uWeightScale"), weightScale);
         GLuint composite = compositeProgram_.id();
         glProgramUniform1f(composite, glGetUniformLocation(composite, "uWeightScale"), weightScale);
         {
             gl::ScopedPass pass(frame.timer, "wboit accumulate");
-            targets_.beginAccumulation(frame, precision_);
+            targets_.beginAccumulation(frame, settings_.precision);
             // Every fragment in front of the opaque depth is blended: an occlusion query counts them.
             glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
             stats_.objectDraws = drawTransparent(frame, accumulateProgram_, frame.transparentOrder);
@@ -67,7 +74,7 @@ public:
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 2;
-        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * AccumulationTargets::bytesPerPixel(precision_);
+        stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * AccumulationTargets::bytesPerPixel(settings_.precision);
         GLuint64 blended = 0;
         glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
         stats_.fragmentsCaptured = blended;
@@ -79,8 +86,6 @@ private:
     gl::Program compositeProgram_;
     gl::Query samples_;
     AccumulationTargets targets_;
-    double weightEquation_ = 7;
-    double precision_ = 16;
 };
 
 }  // namespace
@@ -88,7 +93,7 @@ private:
 TechniqueEntry wboitEntry() {
     TechniqueInfo info{"wboit", "approximate", false, false, "2", "w*h*10 at precision=16 (RGBA16F accumulation + R16F revealage); w*h*20 at 32 (RGBA32F + R32F)",
                        "weighted blended OIT (McGuire-Bavoil 2013): depth-weighted average colour, exact coverage"};
-    return {info, [info] { return std::make_unique<Wboit>(info); }};
+    return techniqueEntry<Wboit>(info);
 }
 
 }  // namespace strata::approximate

@@ -39,7 +39,7 @@ private:
 class TailTargets {
 public:
     // 16 or 32 (tailPrecisionParameter); takes effect at the next bind.
-    void setPrecision(double bits) { bits_ = bits; }
+    void setPrecision(int bits) { bits_ = bits; }
     std::uint64_t bytesPerPixel() const;
     // Binds a framebuffer for a store pass: the tail targets (cleared on `clear`) when `enabled`,
     // else the output framebuffer with colour writes masked. Sets blending for the tail.
@@ -58,21 +58,20 @@ private:
     gl::Framebuffer fbo_;
     glm::ivec2 size_{0, 0};
     GLuint depth_ = 0;
-    double bits_ = 32, allocatedBits_ = 0;
+    int bits_ = 32, allocatedBits_ = 0;
 };
 
-// The knobs every bounded buffer offers.
-inline Parameter capacityParameter(double* value, double max, const char* help) {
-    return {"capacity", help, value, 1, max, true};
-}
-inline Parameter tailParameter(double* value) {
-    return {"tail", "1: blend what overflows approximately (one weighted-average layer behind the kept ones); 0: drop it",
-            value, 0, 1, true};
+// The knobs every bounded buffer offers besides its capacity.
+template <class S>
+typename SettingsSchema<S>::Field tailSetting(bool S::*member) {
+    return flagSetting(member, "tail", SettingChange::Reallocate,
+                       "blend what overflows approximately (one weighted-average layer behind the kept ones) instead of "
+                       "dropping it");
 }
 
-inline Parameter tailPrecisionParameter(double* value) {
-    return {"precision", "bits per channel of the tail's accumulation targets (with tail=1): 16 (half float) or 32",
-            value, 16, 32, true, 16};
+template <class S>
+typename SettingsSchema<S>::Field tailPrecisionSetting(int S::*member) {
+    return precisionSetting(member, "tail's accumulation targets (with tail on)");
 }
 
 // Barrier after a store pass that wrote images, buffers and counters.

@@ -12,15 +12,25 @@ namespace {
 
 using namespace buffers;
 
-class Fab final : public Technique {
+struct FabSettings {
+    int capacity = 8;
+    bool tail = false;
+    int tailPrecision = 32;
+    static const SettingsSchema<FabSettings>& schema() {
+        static const SettingsSchema<FabSettings> s{
+            integerSetting(&FabSettings::capacity, "capacity", 1, 1024, SettingChange::Reallocate,
+                           "entries per pixel (K); fragments past the first K to arrive overflow"),
+            tailSetting(&FabSettings::tail),
+            tailPrecisionSetting(&FabSettings::tailPrecision),
+        };
+        return s;
+    }
+};
+
+class Fab final : public TechniqueWithSettings<FabSettings> {
 public:
     explicit Fab(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {capacityParameter(&capacity_, 1024, "entries per pixel (K); fragments past the first K to arrive overflow"),
-                tailParameter(&tail_), tailPrecisionParameter(&tailPrecision_)};
-    }
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -28,10 +38,10 @@ public:
             resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
                                                {{"LAYOUT_FAB", ""}});
         }
-        const auto k = std::uint64_t(capacity_);
+        const auto k = std::uint64_t(settings_.capacity);
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        const bool tail = tail_ != 0;
-        tailTargets_.setPrecision(tailPrecision_);
+        const bool tail = settings_.tail;
+        tailTargets_.setPrecision(settings_.tailPrecision);
         if (frame.size != countsSize_) {
             counts_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
             countsSize_ = frame.size;
@@ -81,7 +91,7 @@ public:
 private:
     void setUniforms(GLuint program, const FrameContext& frame) const {
         glProgramUniform1ui(program, glGetUniformLocation(program, "uWidth"), GLuint(frame.size.x));
-        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity_));
+        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(settings_.capacity));
     }
 
     TechniqueInfo info_;
@@ -93,9 +103,6 @@ private:
     std::uint64_t entriesSize_ = 0;
     Counters counters_;
     TailTargets tailTargets_;
-    double capacity_ = 8;
-    double tail_ = 0;
-    double tailPrecision_ = 32;
 };
 
 }  // namespace
@@ -106,7 +113,7 @@ TechniqueEntry fabEntry() {
                        "fixed-size per-pixel arrays of K entries with an atomic per-pixel counter (r32ui image); keeps "
                        "the first K fragments to arrive, counts the rest (dropped, or blended approximately with tail=1); "
                        "resolve sorts by (depth, object, primitive)"};
-    return {info, [info] { return std::make_unique<Fab>(info); }};
+    return techniqueEntry<Fab>(info);
 }
 
 }  // namespace strata

@@ -15,7 +15,22 @@ namespace {
 
 using namespace buffers;
 
-class KBuffer final : public Technique {
+struct KBufferSettings {
+    int capacity = 8;
+    bool tail = false;
+    int tailPrecision = 32;
+    static const SettingsSchema<KBufferSettings>& schema() {
+        static const SettingsSchema<KBufferSettings> s{
+            integerSetting(&KBufferSettings::capacity, "capacity", 1, 64, SettingChange::Reallocate,
+                           "slots per pixel (K): the K nearest fragments are kept"),
+            tailSetting(&KBufferSettings::tail),
+            tailPrecisionSetting(&KBufferSettings::tailPrecision),
+        };
+        return s;
+    }
+};
+
+class KBuffer final : public TechniqueWithSettings<KBufferSettings> {
 public:
     // Per entry: the 4-byte depth key and the 20-byte attributes.
     static constexpr std::uint64_t kBytesPerSlot = 4 + kEntryBytes;
@@ -23,22 +38,16 @@ public:
     explicit KBuffer(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
 
-    std::vector<Parameter> parameters() override {
-        // Bounded like the hardware k-buffer: each fragment walks the K slots in its insertion.
-        return {capacityParameter(&capacity_, 64, "slots per pixel (K): the K nearest fragments are kept"),
-                tailParameter(&tail_), tailPrecisionParameter(&tailPrecision_)};
-    }
-
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
             storeProgram_ = buildSceneProgram("oit/buffers/kbuffer_store.frag.glsl");
             resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
                                                {{"LAYOUT_KBUFFER", ""}});
         }
-        const auto k = std::uint64_t(capacity_);
+        const auto k = std::uint64_t(settings_.capacity);
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        const bool tail = tail_ != 0;
-        tailTargets_.setPrecision(tailPrecision_);
+        const bool tail = settings_.tail;
+        tailTargets_.setPrecision(settings_.tailPrecision);
         if (slots_ != pixels * k) {
             gl::allocateBuffer(keys_, pixels * k * 4, GL_DYNAMIC_COPY, "kbuffer depth keys");
             gl::allocateBuffer(entries_, pixels * k * kEntryBytes, GL_DYNAMIC_COPY, "kbuffer entries");
@@ -86,7 +95,7 @@ public:
 private:
     void setUniforms(GLuint program, const FrameContext& frame) const {
         glProgramUniform1ui(program, glGetUniformLocation(program, "uWidth"), GLuint(frame.size.x));
-        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity_));
+        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(settings_.capacity));
     }
 
     TechniqueInfo info_;
@@ -96,9 +105,6 @@ private:
     std::uint64_t slots_ = 0;
     Counters counters_;
     TailTargets tailTargets_;
-    double capacity_ = 8;
-    double tail_ = 0;
-    double tailPrecision_ = 32;
 };
 
 }  // namespace
@@ -109,7 +115,7 @@ TechniqueEntry kbufferEntry() {
                        "k-buffer of the K nearest fragments per pixel, no interlock: lock-free 32-bit atomicMax "
                        "insertion of depth keys, then slots claimed by atomicCompSwap; what does not fit is dropped "
                        "(or blended approximately with tail=1); K bounded (max 64), so not robust"};
-    return {info, [info] { return std::make_unique<KBuffer>(info); }};
+    return techniqueEntry<KBuffer>(info);
 }
 
 }  // namespace strata

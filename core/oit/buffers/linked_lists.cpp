@@ -13,15 +13,25 @@ namespace {
 
 using namespace buffers;
 
-class LinkedLists final : public Technique {
+struct LinkedListsSettings {
+    int capacity = 8;
+    bool tail = false;
+    int tailPrecision = 32;
+    static const SettingsSchema<LinkedListsSettings>& schema() {
+        static const SettingsSchema<LinkedListsSettings> s{
+            integerSetting(&LinkedListsSettings::capacity, "capacity", 1, 1024, SettingChange::Reallocate,
+                           "node pool size as nodes per pixel on average (pool = w*h*capacity)"),
+            tailSetting(&LinkedListsSettings::tail),
+            tailPrecisionSetting(&LinkedListsSettings::tailPrecision),
+        };
+        return s;
+    }
+};
+
+class LinkedLists final : public TechniqueWithSettings<LinkedListsSettings> {
 public:
     explicit LinkedLists(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {capacityParameter(&capacity_, 1024, "node pool size as nodes per pixel on average (pool = w*h*capacity)"),
-                tailParameter(&tail_), tailPrecisionParameter(&tailPrecision_)};
-    }
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -30,9 +40,9 @@ public:
                                               {{"LIST_TAIL", ""}});
         }
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        const std::uint64_t pool = pixels * std::uint64_t(capacity_);
-        const bool tail = tail_ != 0;
-        tailTargets_.setPrecision(tailPrecision_);
+        const std::uint64_t pool = pixels * std::uint64_t(settings_.capacity);
+        const bool tail = settings_.tail;
+        tailTargets_.setPrecision(settings_.tailPrecision);
         if (pool > 0xFFFFFFFEull) throw std::runtime_error("ll: node pool of " + std::to_string(pool) + " nodes exceeds 32-bit indices");
         if (frame.size != headsSize_) {
             heads_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
@@ -90,9 +100,6 @@ private:
     std::uint64_t poolNodes_ = 0;
     Counters counters_;
     TailTargets tailTargets_;
-    double capacity_ = 8;
-    double tail_ = 0;
-    double tailPrecision_ = 32;
 };
 
 }  // namespace
@@ -103,7 +110,7 @@ TechniqueEntry llEntry() {
                        "per-pixel linked lists: head-pointer image, one global atomic counter, a fixed node pool "
                        "(capacity nodes per pixel on average, never grown); overflow counted and dropped or blended "
                        "approximately (tail=1); resolve sorts by (depth, object, primitive)"};
-    return {info, [info] { return std::make_unique<LinkedLists>(info); }};
+    return techniqueEntry<LinkedLists>(info);
 }
 
 }  // namespace strata

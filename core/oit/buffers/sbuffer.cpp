@@ -20,7 +20,18 @@ namespace {
 
 using namespace buffers;
 
-class SBuffer final : public Technique {
+struct SBufferSettings {
+    double maxBlockMiB = 0;
+    static const SettingsSchema<SBufferSettings>& schema() {
+        static const SettingsSchema<SBufferSettings> s{
+            realSetting(&SBufferSettings::maxBlockMiB, "max_block_mib", 0, 1e6, SettingChange::Reallocate,
+                        "largest entry buffer in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)"),
+        };
+        return s;
+    }
+};
+
+class SBuffer final : public TechniqueWithSettings<SBufferSettings> {
 public:
     explicit SBuffer(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
@@ -120,11 +131,6 @@ public:
         stats_.bytes = pixels * 4 + std::max<std::uint64_t>(capacity, 1) * kEntryBytes + scan_.bytes() + kCounterBytes;
     }
 
-    std::vector<Parameter> parameters() override {
-        return {{"max_block_mib", "largest entry buffer in MiB (0: the device's GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
-                 &maxBlockMiB_, 0, 1e6, false}};
-    }
-
 private:
     // Rows [y0, y1) whose entries start at `base` in the whole frame's prefix sum.
     struct Band {
@@ -132,7 +138,7 @@ private:
         std::uint64_t base;
     };
 
-    std::uint64_t maxEntries() const { return gl::storageBlockElements(kEntryBytes, maxBlockMiB_); }
+    std::uint64_t maxEntries() const { return gl::storageBlockElements(kEntryBytes, settings_.maxBlockMiB); }
 
     // Greedy bands of whole rows, each holding at most `limit` entries, from the scanned offsets
     // (read back only in this rare case: one uint per pixel).
@@ -161,7 +167,6 @@ private:
     PrefixSum scan_;
     Counters counters_;
     TailTargets tailTargets_;
-    double maxBlockMiB_ = 0;
 };
 
 }  // namespace
@@ -172,7 +177,7 @@ TechniqueEntry sbufferEntry() {
                        "largest band of rows) + prefix-sum block totals + 16",
                        "S-buffer: counting pass, GPU prefix sum over pixels (work-efficient block scan), variable "
                        "contiguous region per pixel, store, resolve sorting by (depth, object, primitive)"};
-    return {info, [info] { return std::make_unique<SBuffer>(info); }};
+    return techniqueEntry<SBuffer>(info);
 }
 
 }  // namespace strata

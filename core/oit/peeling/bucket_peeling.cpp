@@ -27,24 +27,32 @@ namespace {
 
 constexpr int kMaxTargets = 8;
 
-class BucketPeeling final : public Technique {
+struct BucketPeelingSettings {
+    int buckets = 8;
+    bool rangeFromGeometry = false;
+    int precision = 16;
+    static const SettingsSchema<BucketPeelingSettings>& schema() {
+        static const SettingsSchema<BucketPeelingSettings> s{
+            integerSetting(&BucketPeelingSettings::buckets, "buckets", 1, 2 * kMaxTargets, SettingChange::Reallocate,
+                           "uniform depth buckets per pixel (two fragments each)"),
+            flagSetting(&BucketPeelingSettings::rangeFromGeometry, "range_from_geometry", SettingChange::Nothing,
+                        "the depth range from the geometry (one more geometry pass, tighter buckets) instead of the "
+                        "objects' bounding boxes"),
+            precisionSetting(&BucketPeelingSettings::precision, "bucket colours (depths stay 32-bit)"),
+        };
+        return s;
+    }
+};
+
+class BucketPeeling final : public TechniqueWithSettings<BucketPeelingSettings> {
 public:
     explicit BucketPeeling(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
 
-    std::vector<Parameter> parameters() override {
-        return {
-            {"buckets", "uniform depth buckets per pixel (two fragments each)", &buckets_, 1, 2 * kMaxTargets, true},
-            {"range_from_geometry", "0: depth range from the objects' bounding boxes; 1: from the geometry (one more "
-             "geometry pass's worth of work, tighter buckets)", &rangeFromGeometry_, 0, 1, true},
-            precisionParameter(&precision_, "bucket colours (depths stay 32-bit)"),
-        };
-    }
-
     void render(const FrameContext& frame) override {
         GLint maxDrawBuffers = 0;
         glGetIntegerv(GL_MAX_DRAW_BUFFERS, &maxDrawBuffers);
-        int buckets = int(buckets_);
+        int buckets = settings_.buckets;
         int targets = (buckets + 1) / 2;
         if (targets > maxDrawBuffers)
             throw std::runtime_error("bun: " + std::to_string(buckets) + " buckets need " + std::to_string(targets) +
@@ -74,7 +82,7 @@ public:
         // Range RG32F (8 B), ceil(B/2) RGBA32F bucket depths (16 B), 2B colours (RGBA16F, 8 B, or
         // RGBA32F, 16 B).
         stats_.bytes = pixels * (8 + std::uint64_t(targets) * 16 +
-                                 std::uint64_t(buckets) * 2 * floatTexelBytes(precision_, 4)) +
+                                 std::uint64_t(buckets) * 2 * floatTexelBytes(settings_.precision, 4)) +
                        sizeof(zeros);
     }
 
@@ -105,10 +113,10 @@ private:
     }
 
     void ensureTargets(glm::ivec2 size, int buckets) {
-        if (size == size_ && buckets == allocatedBuckets_ && precision_ == allocatedPrecision_) return;
+        if (size == size_ && buckets == allocatedBuckets_ && settings_.precision == allocatedPrecision_) return;
         size_ = size;
         allocatedBuckets_ = buckets;
-        allocatedPrecision_ = precision_;
+        allocatedPrecision_ = settings_.precision;
         int targets = (buckets + 1) / 2;
         range_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
         auto array = [&](GLenum format, int layers) {
@@ -119,7 +127,7 @@ private:
             return t;
         };
         bucketDepths_ = array(GL_RGBA32F, targets);
-        colors_ = array(rgbaFloatFormat(precision_), 2 * buckets);
+        colors_ = array(rgbaFloatFormat(settings_.precision), 2 * buckets);
         rangeFbo_ = gl::Framebuffer::create();
         glNamedFramebufferTexture(rangeFbo_.id(), GL_COLOR_ATTACHMENT0, range_.id(), 0);
         captureFbo_ = gl::Framebuffer::create();
@@ -148,7 +156,7 @@ private:
         glDisable(GL_CULL_FACE);
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
-        if (rangeFromGeometry_ != 0) {
+        if (settings_.rangeFromGeometry) {
             stats_.objectDraws += drawTransparent(frame, rangeGeometryProgram_, frame.transparentOrder);
         } else {
             // Boxes crossing the near plane (the eye inside) rasterize clamped at depth 1.
@@ -197,7 +205,7 @@ private:
         glBindTextureUnit(peel_bindings::kPrevious, range_.id());
         glBindTextureUnit(peel_bindings::kLayer, bucketDepths_.id());
         glBindImageTexture(peel_bindings::kBucketColors, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                           rgbaFloatFormat(precision_));
+                           rgbaFloatFormat(settings_.precision));
         stats_.objectDraws += drawTransparent(frame, colorProgram(), frame.transparentOrder);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         ++stats_.passes;
@@ -217,13 +225,10 @@ private:
         ++stats_.passes;
     }
 
-    const SceneProgram& colorProgram() const { return isHalf(precision_) ? colorProgram_ : colorProgram32_; }
+    const SceneProgram& colorProgram() const { return isHalf(settings_.precision) ? colorProgram_ : colorProgram32_; }
 
     TechniqueInfo info_;
-    double buckets_ = 8;
-    double rangeFromGeometry_ = 0;
-    double precision_ = 16;
-    double allocatedPrecision_ = 0;
+    int allocatedPrecision_ = 0;
     SceneProgram rangeGeometryProgram_, captureProgram_, colorProgram_, colorProgram32_;
     gl::Program rangeBoxProgram_, compositeProgram_;
     gl::Buffer counters_, boxVertices_, boxIndices_;
@@ -241,7 +246,7 @@ TechniqueEntry bunEntry() {
                        "w*h*(8 + 16*ceil(B/2) + 16*B) B at precision=16: range, bucket depths, two RGBA16F colours "
                        "per bucket; w*h*(8 + 16*ceil(B/2) + 32*B) B at 32 (RGBA32F colours)",
                        "uniform bucket peeling: B depth buckets keep their nearest and farthest fragment in one pass"};
-    return {info, [info] { return std::make_unique<BucketPeeling>(info); }};
+    return techniqueEntry<BucketPeeling>(info);
 }
 
 }  // namespace strata::peeling

@@ -19,33 +19,39 @@ namespace {
 
 // Counter slots (shaders: offsets 0, 4, 8).
 
-class DualPeeling final : public Technique {
+struct DualPeelingSettings {
+    int maxPasses = 1024;
+    bool skipPeeled = true;
+    int precision = 32;
+    static const SettingsSchema<DualPeelingSettings>& schema() {
+        static const SettingsSchema<DualPeelingSettings> s{
+            integerSetting(&DualPeelingSettings::maxPasses, "max_passes", 1, 1000000, SettingChange::Nothing,
+                           "most peel passes per frame (two layers each; hitting it counts as overflow)"),
+            flagSetting(&DualPeelingSettings::skipPeeled, "skip_peeled", SettingChange::Nothing,
+                        "skip objects whose bounds lie wholly outside the range left to peel (section 3.3)"),
+            precisionSetting(&DualPeelingSettings::precision, "front and back layers and accumulations"),
+        };
+        return s;
+    }
+};
+
+class DualPeeling final : public TechniqueWithSettings<DualPeelingSettings> {
 public:
     explicit DualPeeling(TechniqueInfo info) : info_(std::move(info)) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {
-            {"max_passes", "most peel passes per frame (two layers each; hitting it counts as overflow)", &maxPasses_,
-             1, 1e6, true},
-            {"skip_peeled", "1: skip objects whose bounds lie wholly outside the range left to peel (section 3.3)",
-             &skipPeeled_, 0, 1, true},
-            precisionParameter(&precision_, "front and back layers and accumulations"),
-        };
-    }
 
     void render(const FrameContext& frame) override {
         ensurePrograms();
         ensureTargets(frame.size);
         stats_ = {};
-        skipper_.beginFrame(frame, skipPeeled_ != 0);
+        skipper_.beginFrame(frame, settings_.skipPeeled);
         std::uint64_t total = initialise(frame);
         if (total > 0) {
             const float clearAccum[4] = {0, 0, 0, 1};
             glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
             glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
             for (int pass = 1;; ++pass) {
-                if (pass > int(maxPasses_)) {
+                if (pass > settings_.maxPasses) {
                     stats_.overflowed = true;
                     break;
                 }
@@ -62,7 +68,7 @@ public:
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Two RG32F min-max targets (8 B), front and back layers and front and back
         // accumulations (RGBA16F, 8 B, or RGBA32F, 16 B, each).
-        stats_.bytes = pixels * (2 * 8 + 4 * floatTexelBytes(precision_, 4));
+        stats_.bytes = pixels * (2 * 8 + 4 * floatTexelBytes(settings_.precision, 4));
     }
 
 private:
@@ -79,12 +85,12 @@ private:
     }
 
     void ensureTargets(glm::ivec2 size) {
-        if (size != size_ || precision_ != allocatedPrecision_) {
+        if (size != size_ || settings_.precision != allocatedPrecision_) {
             size_ = size;
-            allocatedPrecision_ = precision_;
+            allocatedPrecision_ = settings_.precision;
             // Depths stay 32-bit; colours (alpha + 1 in the layers: 1 to 2, steps of 2^-10 in
             // half float) follow the precision.
-            const GLenum rgba = rgbaFloatFormat(precision_);
+            const GLenum rgba = rgbaFloatFormat(settings_.precision);
             for (auto& t : minMax_) t = gl::createTexture2D(GL_RG32F, size.x, size.y);
             front_ = gl::createTexture2D(rgba, size.x, size.y);
             back_ = gl::createTexture2D(rgba, size.x, size.y);
@@ -202,10 +208,7 @@ private:
     }
 
     TechniqueInfo info_;
-    double maxPasses_ = 1024;
-    double skipPeeled_ = 1;
-    double precision_ = 32;
-    double allocatedPrecision_ = 0;
+    int allocatedPrecision_ = 0;
     SceneProgram initProgram_, peelProgram_;
     gl::Program blendProgram_, compositeProgram_;
     gl::Query samples_, frontLayers_, backLayers_, interiorLeft_;
@@ -222,7 +225,7 @@ TechniqueEntry dualEntry() {
                        "w*h*48 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
                        "(8 each); w*h*80 B at 32 (RGBA32F, 16 each); Table 1: 6 words",
                        "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
-    return {info, [info] { return std::make_unique<DualPeeling>(info); }};
+    return techniqueEntry<DualPeeling>(info);
 }
 
 }  // namespace strata::peeling

@@ -21,32 +21,38 @@
 namespace strata::peeling {
 namespace {
 
-class FrontToBack final : public Technique {
+struct FrontToBackSettings {
+    int maxPasses = 1024;
+    bool skipPeeled = true;
+    int precision = 32;
+    static const SettingsSchema<FrontToBackSettings>& schema() {
+        static const SettingsSchema<FrontToBackSettings> s{
+            integerSetting(&FrontToBackSettings::maxPasses, "max_passes", 1, 1000000, SettingChange::Nothing,
+                           "most layers peeled per frame (a safety bound; hitting it counts as overflow)"),
+            flagSetting(&FrontToBackSettings::skipPeeled, "skip_peeled", SettingChange::Nothing,
+                        "skip objects whose bounds lie wholly in front of the last peeled depth (section 3.3)"),
+            precisionSetting(&FrontToBackSettings::precision, "layer (f2b only) and accumulation targets"),
+        };
+        return s;
+    }
+};
+
+class FrontToBack final : public TechniqueWithSettings<FrontToBackSettings> {
 public:
     FrontToBack(TechniqueInfo info, bool twoPass) : info_(std::move(info)), twoPass_(twoPass) {}
     const TechniqueInfo& info() const override { return info_; }
-
-    std::vector<Parameter> parameters() override {
-        return {
-            {"max_passes", "most layers peeled per frame (a safety bound; hitting it counts as overflow)", &maxPasses_,
-             1, 1e6, true},
-            {"skip_peeled", "1: skip objects whose bounds lie wholly in front of the last peeled depth (section 3.3)",
-             &skipPeeled_, 0, 1, true},
-            precisionParameter(&precision_, twoPass_ ? "accumulation" : "layer and accumulation targets"),
-        };
-    }
 
     void render(const FrameContext& frame) override {
         ensurePrograms();
         ensureTargets(frame.size);
         stats_ = {};
-        skipper_.beginFrame(frame, skipPeeled_ != 0);
+        skipper_.beginFrame(frame, settings_.skipPeeled);
         const float clearAccum[4] = {0, 0, 0, 1};
         glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
 
         std::uint64_t firstRemaining = 0, remaining = 0;
         for (int layer = 0;; ++layer) {
-            if (layer >= int(maxPasses_)) {
+            if (layer >= settings_.maxPasses) {
                 stats_.overflowed = true;
                 break;
             }
@@ -73,7 +79,7 @@ public:
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's layer colour and the
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each).
-        const std::uint64_t rgba = floatTexelBytes(precision_, 4);
+        const std::uint64_t rgba = floatTexelBytes(settings_.precision, 4);
         stats_.bytes = pixels * (twoPass_ ? 2 * 8 + rgba : 2 * 4 + 2 * rgba) + sizeof(GLuint);
     }
 
@@ -96,12 +102,12 @@ private:
     }
 
     void ensureTargets(glm::ivec2 size) {
-        if (size == size_ && precision_ == allocatedPrecision_) return;
+        if (size == size_ && settings_.precision == allocatedPrecision_) return;
         size_ = size;
-        allocatedPrecision_ = precision_;
-        accum_ = gl::createTexture2D(rgbaFloatFormat(precision_), size.x, size.y);
+        allocatedPrecision_ = settings_.precision;
+        accum_ = gl::createTexture2D(rgbaFloatFormat(settings_.precision), size.x, size.y);
         if (!twoPass_) {
-            layerColor_ = gl::createTexture2D(rgbaFloatFormat(precision_), size.x, size.y);
+            layerColor_ = gl::createTexture2D(rgbaFloatFormat(settings_.precision), size.x, size.y);
             accumFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
         }
@@ -218,10 +224,7 @@ private:
 
     TechniqueInfo info_;
     bool twoPass_;
-    double maxPasses_ = 1024;
-    double skipPeeled_ = 1;
-    double precision_ = 32;
-    double allocatedPrecision_ = 0;
+    int allocatedPrecision_ = 0;
     SceneProgram peelProgram_, shadeProgram_;
     gl::Program blendProgram_, compositeProgram_;
     GLint firstLayerLocation_ = -1;
@@ -240,7 +243,7 @@ TechniqueEntry f2bEntry() {
                        "w*h*24 B at precision=16: 2 depth (4) + layer and accumulation RGBA16F (8 each); "
                        "w*h*40 B at 32 (RGBA32F, 16 each); Table 1: 3 words",
                        "front-to-back depth peeling, one layer per pass, strict depth test; skips peeled objects"};
-    return {info, [info] { return std::make_unique<FrontToBack>(info, false); }};
+    return techniqueEntry<FrontToBack>(info, false);
 }
 
 TechniqueEntry f2b2Entry() {
@@ -248,7 +251,7 @@ TechniqueEntry f2b2Entry() {
                        "w*h*24 B at precision=16: 2 depth-stencil (8) + accumulation RGBA16F (8); w*h*32 B at 32 "
                        "(RGBA32F accumulation, 16)",
                        "front-to-back peeling with a depth-only pre-pass and early-z GL_EQUAL shading per layer"};
-    return {info, [info] { return std::make_unique<FrontToBack>(info, true); }};
+    return techniqueEntry<FrontToBack>(info, true);
 }
 
 }  // namespace strata::peeling

@@ -1,0 +1,133 @@
+#pragma once
+// Technique settings. Each technique keeps its knobs in a plain struct and describes each field
+// once: name, type, range, default, help and what a change forces. `--set`, JSON presets, the
+// panel, `strata modes --settings` and the bench report all read that one description, so a
+// setting cannot be documented in one place and validated differently in another.
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace strata {
+
+enum class SettingType { Integer, Real, Flag };
+
+// What the next frame must do after the value changed; shown beside the setting so a user knows
+// a drag of the slider will reallocate GPU memory or rebuild programs.
+enum class SettingChange { Nothing, Reallocate, Recompile };
+
+struct SettingDescription {
+    std::string name;
+    SettingType type = SettingType::Integer;
+    double min = 0;
+    double max = 1;
+    std::vector<double> allowed;  // when non-empty, the only values accepted (precision: 16 or 32)
+    double defaultValue = 0;
+    SettingChange change = SettingChange::Nothing;
+    std::string help;
+};
+
+// One technique's setting values in the order of its descriptions. Integers and flags are held
+// exactly: every integer setting's range lies within +-2^53.
+using SettingValues = std::vector<double>;
+
+const char* toString(SettingType type);
+const char* toString(SettingChange change);
+
+// Parses `text` as a value of `d`: an integer for integers (no fraction, no exponent), a finite
+// number for reals, 0/1/true/false/on/off for flags; checks the range and the allowed values.
+// Throws std::invalid_argument with a one-line reason that names the setting.
+double parseSettingValue(const SettingDescription& d, std::string_view text);
+// Checks a value already held as a number (a JSON preset, the panel) the same way.
+void checkSettingValue(const SettingDescription& d, double value);
+// The value as the command line would write it: "16", "0.25", "true".
+std::string formatSettingValue(const SettingDescription& d, double value);
+// "integer in [1, 64]", "16 or 32", "real in [0, 1e+06]", "flag".
+std::string describeRange(const SettingDescription& d);
+
+// Binds the fields of the settings struct S to their descriptions. A technique defines one
+// static schema for its struct; the defaults are the struct's member initializers.
+template <class S>
+class SettingsSchema {
+public:
+    using Member = std::variant<int S::*, double S::*, bool S::*>;
+    struct Field {
+        SettingDescription description;
+        Member member;
+    };
+
+    SettingsSchema(std::initializer_list<Field> fields) : fields_(fields) {
+        const S defaults{};
+        for (auto& f : fields_) f.description.defaultValue = get(defaults, f.member);
+    }
+
+    std::vector<SettingDescription> descriptions() const {
+        std::vector<SettingDescription> out;
+        for (const auto& f : fields_) out.push_back(f.description);
+        return out;
+    }
+    SettingValues read(const S& s) const {
+        SettingValues out;
+        for (const auto& f : fields_) out.push_back(get(s, f.member));
+        return out;
+    }
+    // Values must come from resolveSettings or the panel (already checked); a missing tail keeps
+    // the defaults.
+    S write(const SettingValues& values) const {
+        S s{};
+        for (std::size_t i = 0; i < fields_.size() && i < values.size(); ++i) set(s, fields_[i].member, values[i]);
+        return s;
+    }
+
+private:
+    static double get(const S& s, const Member& m) {
+        return std::visit([&s](auto field) { return double(s.*field); }, m);
+    }
+    static void set(S& s, const Member& m, double v) {
+        std::visit(
+            [&](auto field) {
+                using T = std::remove_reference_t<decltype(s.*field)>;
+                if constexpr (std::is_same_v<T, bool>) s.*field = v != 0;
+                else s.*field = T(v);
+            },
+            m);
+    }
+
+    std::vector<Field> fields_;
+};
+
+template <class S>
+typename SettingsSchema<S>::Field integerSetting(int S::*member, std::string name, int min, int max,
+                                                 SettingChange change, std::string help) {
+    return {{std::move(name), SettingType::Integer, double(min), double(max), {}, 0, change, std::move(help)}, member};
+}
+
+template <class S>
+typename SettingsSchema<S>::Field realSetting(double S::*member, std::string name, double min, double max,
+                                              SettingChange change, std::string help) {
+    return {{std::move(name), SettingType::Real, min, max, {}, 0, change, std::move(help)}, member};
+}
+
+template <class S>
+typename SettingsSchema<S>::Field flagSetting(bool S::*member, std::string name, SettingChange change, std::string help) {
+    return {{std::move(name), SettingType::Flag, 0, 1, {}, 0, change, std::move(help)}, member};
+}
+
+// Bits per channel of a technique's own float targets: 16 (half float) or 32. Reallocates them.
+template <class S>
+typename SettingsSchema<S>::Field precisionSetting(int S::*member, std::string what) {
+    return {{"precision", SettingType::Integer, 16, 32, {16, 32}, 0, SettingChange::Reallocate,
+             "bits per channel of the " + what + ": 16 (half float) or 32 (float)"},
+            member};
+}
+
+// For techniques without knobs.
+struct NoSettings {
+    static const SettingsSchema<NoSettings>& schema() {
+        static const SettingsSchema<NoSettings> s{};
+        return s;
+    }
+};
+
+}  // namespace strata

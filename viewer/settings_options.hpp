@@ -1,0 +1,26 @@
+#pragma once
+// `--set [id.]name=value` and `--settings FILE.json`, the same two options on every command that
+// renders. The preset's assignments come first, so `--set` overrides it.
+#include "oit/technique_settings.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace strata {
+
+struct SettingsArgs {
+    std::vector<std::string> set;
+    std::string preset;
+};
+
+void addSettingsOptions(CLI::App* command, SettingsArgs& args);
+
+// Resolves the options against the techniques `ids`; throws std::invalid_argument (one line).
+SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const SettingsArgs& args);
+
+// Every registered technique: the set a command that can switch techniques resolves against.
+std::vector<std::string> allTechniqueIds();
+
+}  // namespace strata
