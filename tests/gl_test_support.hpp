@@ -7,7 +7,7 @@
 #include "image/image.hpp"
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 #include "render/gpu_scene.hpp"
 
 #include <memory>

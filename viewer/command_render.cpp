@@ -7,7 +7,7 @@
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
 #include "reference/raycast.hpp"
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 #include "scene/scene_source.hpp"
 #include "settings_options.hpp"
 

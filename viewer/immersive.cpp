@@ -23,7 +23,7 @@ int runImmersive(const ViewOptions&, Scene) {
 #include "gl/debug.hpp"
 #include "gl/shader_program.hpp"
 #include "render/deflection_warp.hpp"
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 #include "tracking/deflection.hpp"
 #include "tracking/predictor.hpp"
 #include "tracking/trace_io.hpp"

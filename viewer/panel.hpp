@@ -5,7 +5,7 @@
 // for; the viewer applies the requests between frames (never while the panel is drawing).
 #include "gl/context.hpp"
 #include "oit/technique.hpp"
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 #include "render/gpu_scene.hpp"
 
 #include <glm/glm.hpp>

@@ -13,7 +13,7 @@
 #include "gl/context.hpp"
 #include "gl/debug.hpp"
 #include "gl/shader_program.hpp"
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 #include "scene/scene_source.hpp"
 
 #include <imgui.h>

@@ -3,7 +3,7 @@
 #include "gl/debug.hpp"
 #include "oit/technique.hpp"
 #include "reference/raycast.hpp"
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "render/frame_renderer.hpp"
+#include "frame/frame_renderer.hpp"
 
 #include "oit/draw_transparent.hpp"
 #include "render/bindings.hpp"

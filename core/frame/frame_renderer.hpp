@@ -3,6 +3,9 @@
 // composites over it into the output colour. A scene with nothing transparent gets no
 // transparency pass at all. Optionally counts every transparent fragment in front of the opaque
 // depth once, by one shared method, so every technique's robustness ratio means the same.
+//
+// Layering: render/ (GL scene resources, targets, programs, depth order) <- oit/ (techniques,
+// which use render/) <- frame/ (this, which runs a technique). Nothing below includes upward.
 #include "camera/camera.hpp"
 #include "gl/gpu_timer.hpp"
 #include "image/image.hpp"
