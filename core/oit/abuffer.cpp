@@ -36,8 +36,7 @@ struct ABufferSettings {
 
 class ABuffer final : public TechniqueWithSettings<ABufferSettings> {
 public:
-    explicit ABuffer(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -191,7 +190,6 @@ private:
         ++stats_.passes;
     }
 
-    TechniqueInfo info_;
     SceneProgram storeProgram_;
     gl::Program resolveProgram_, computeResolveProgram_;
     GLint capacityLocation_ = -1;

@@ -25,8 +25,7 @@ struct BlendSettings {
 
 class BlendTechnique final : public TechniqueWithSettings<BlendSettings> {
 public:
-    BlendTechnique(TechniqueInfo info, bool sorted) : info_(std::move(info)), sorted_(sorted) {}
-    const TechniqueInfo& info() const override { return info_; }
+    BlendTechnique(TechniqueInfo info, bool sorted) : TechniqueWithSettings(std::move(info)), sorted_(sorted) {}
 
     void render(const FrameContext& frame) override {
         if (!program_.program) program_ = buildSceneProgram("oit/blend.frag.glsl");
@@ -63,7 +62,6 @@ private:
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
 
-    TechniqueInfo info_;
     bool sorted_;
     SceneProgram program_;
     gl::Query samples_;

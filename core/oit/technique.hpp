@@ -59,8 +59,9 @@ struct FrameContext {
 
 class Technique {
 public:
+    explicit Technique(TechniqueInfo info) : info_(std::move(info)) {}
     virtual ~Technique() = default;
-    virtual const TechniqueInfo& info() const = 0;
+    const TechniqueInfo& info() const { return info_; }
     virtual void render(const FrameContext& frame) = 0;
     const TechniqueStats& stats() const { return stats_; }
 
@@ -72,6 +73,7 @@ public:
     virtual void setSettings(const SettingValues& values) = 0;
 
 protected:
+    TechniqueInfo info_;
     TechniqueStats stats_;
 };
 
@@ -80,6 +82,7 @@ template <class S>
 class TechniqueWithSettings : public Technique {
 public:
     using Settings = S;
+    using Technique::Technique;
     std::vector<SettingDescription> settingDescriptions() const override { return S::schema().descriptions(); }
     SettingValues settings() const override { return S::schema().read(settings_); }
     void setSettings(const SettingValues& values) override { settings_ = S::schema().write(values); }

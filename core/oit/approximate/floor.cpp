@@ -24,8 +24,7 @@ namespace {
 
 class Floor final : public TechniqueWithSettings<NoSettings> {
 public:
-    explicit Floor(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!program_.program) {
@@ -53,7 +52,6 @@ public:
     }
 
 private:
-    TechniqueInfo info_;
     SceneProgram program_;
     gl::Query samples_;
     ScratchTarget scratch_;

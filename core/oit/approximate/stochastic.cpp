@@ -36,8 +36,7 @@ struct StochasticSettings {
 
 class Stochastic final : public TechniqueWithSettings<StochasticSettings> {
 public:
-    explicit Stochastic(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!depthProgram_.program) {
@@ -92,7 +91,6 @@ public:
     }
 
 private:
-    TechniqueInfo info_;
     SceneProgram depthProgram_, accumulateProgram_;
     gl::Program compositeProgram_;
     gl::Query query_;

@@ -40,8 +40,7 @@ struct WboitSettings {
 
 class Wboit final : public TechniqueWithSettings<WboitSettings> {
 public:
-    explicit Wboit(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!accumulateProgram_.program) {
@@ -81,7 +80,6 @@ public:
     }
 
 private:
-    TechniqueInfo info_;
     SceneProgram accumulateProgram_;
     gl::Program compositeProgram_;
     gl::Query samples_;

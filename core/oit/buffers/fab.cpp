@@ -29,8 +29,7 @@ struct FabSettings {
 
 class Fab final : public TechniqueWithSettings<FabSettings> {
 public:
-    explicit Fab(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -94,7 +93,6 @@ private:
         glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(settings_.capacity));
     }
 
-    TechniqueInfo info_;
     SceneProgram storeProgram_;
     gl::Program resolveProgram_;
     gl::Texture counts_;

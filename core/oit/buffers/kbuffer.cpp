@@ -35,8 +35,7 @@ public:
     // Per entry: the 4-byte depth key and the 20-byte attributes.
     static constexpr std::uint64_t kBytesPerSlot = 4 + kEntryBytes;
 
-    explicit KBuffer(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -98,7 +97,6 @@ private:
         glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(settings_.capacity));
     }
 
-    TechniqueInfo info_;
     SceneProgram storeProgram_;
     gl::Program resolveProgram_;
     gl::Buffer keys_, entries_;

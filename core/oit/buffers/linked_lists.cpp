@@ -30,8 +30,7 @@ struct LinkedListsSettings {
 
 class LinkedLists final : public TechniqueWithSettings<LinkedListsSettings> {
 public:
-    explicit LinkedLists(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -91,7 +90,6 @@ public:
     }
 
 private:
-    TechniqueInfo info_;
     SceneProgram storeProgram_;
     gl::Program resolveProgram_;
     gl::Texture heads_;

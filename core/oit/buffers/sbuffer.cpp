@@ -33,8 +33,7 @@ struct SBufferSettings {
 
 class SBuffer final : public TechniqueWithSettings<SBufferSettings> {
 public:
-    explicit SBuffer(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
@@ -159,7 +158,6 @@ private:
         return bands;
     }
 
-    TechniqueInfo info_;
     SceneProgram storeProgram_;
     gl::Program resolveProgram_;
     gl::Buffer offsets_, entries_;

@@ -46,8 +46,7 @@ struct BucketPeelingSettings {
 
 class BucketPeeling final : public TechniqueWithSettings<BucketPeelingSettings> {
 public:
-    explicit BucketPeeling(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         GLint maxDrawBuffers = 0;
@@ -227,7 +226,6 @@ private:
 
     const SceneProgram& colorProgram() const { return isHalf(settings_.precision) ? colorProgram_ : colorProgram32_; }
 
-    TechniqueInfo info_;
     int allocatedPrecision_ = 0;
     SceneProgram rangeGeometryProgram_, captureProgram_, colorProgram_, colorProgram32_;
     gl::Program rangeBoxProgram_, compositeProgram_;

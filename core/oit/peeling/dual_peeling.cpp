@@ -11,34 +11,16 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.hpp"
+#include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::peeling {
 namespace {
 
-// Counter slots (shaders: offsets 0, 4, 8).
-
-struct DualPeelingSettings {
-    int maxPasses = 1024;
-    bool skipPeeled = true;
-    int precision = 32;
-    static const SettingsSchema<DualPeelingSettings>& schema() {
-        static const SettingsSchema<DualPeelingSettings> s{
-            integerSetting(&DualPeelingSettings::maxPasses, "max_passes", 1, 1000000, SettingChange::Nothing,
-                           "most peel passes per frame (two layers each; hitting it counts as overflow)"),
-            flagSetting(&DualPeelingSettings::skipPeeled, "skip_peeled", SettingChange::Nothing,
-                        "skip objects whose bounds lie wholly outside the range left to peel (section 3.3)"),
-            precisionSetting(&DualPeelingSettings::precision, "front and back layers and accumulations"),
-        };
-        return s;
-    }
-};
-
-class DualPeeling final : public TechniqueWithSettings<DualPeelingSettings> {
+class DualPeeling final : public TechniqueWithSettings<PeelingSettings> {
 public:
-    explicit DualPeeling(TechniqueInfo info) : info_(std::move(info)) {}
-    const TechniqueInfo& info() const override { return info_; }
+    using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
         ensurePrograms();
@@ -207,7 +189,6 @@ private:
         ++stats_.passes;
     }
 
-    TechniqueInfo info_;
     int allocatedPrecision_ = 0;
     SceneProgram initProgram_, peelProgram_;
     gl::Program blendProgram_, compositeProgram_;

@@ -15,32 +15,16 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.hpp"
+#include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 #include "render/bindings.hpp"
 
 namespace strata::peeling {
 namespace {
 
-struct FrontToBackSettings {
-    int maxPasses = 1024;
-    bool skipPeeled = true;
-    int precision = 32;
-    static const SettingsSchema<FrontToBackSettings>& schema() {
-        static const SettingsSchema<FrontToBackSettings> s{
-            integerSetting(&FrontToBackSettings::maxPasses, "max_passes", 1, 1000000, SettingChange::Nothing,
-                           "most layers peeled per frame (a safety bound; hitting it counts as overflow)"),
-            flagSetting(&FrontToBackSettings::skipPeeled, "skip_peeled", SettingChange::Nothing,
-                        "skip objects whose bounds lie wholly in front of the last peeled depth (section 3.3)"),
-            precisionSetting(&FrontToBackSettings::precision, "layer (f2b only) and accumulation targets"),
-        };
-        return s;
-    }
-};
-
-class FrontToBack final : public TechniqueWithSettings<FrontToBackSettings> {
+class FrontToBack final : public TechniqueWithSettings<PeelingSettings> {
 public:
-    FrontToBack(TechniqueInfo info, bool twoPass) : info_(std::move(info)), twoPass_(twoPass) {}
-    const TechniqueInfo& info() const override { return info_; }
+    FrontToBack(TechniqueInfo info, bool twoPass) : TechniqueWithSettings(std::move(info)), twoPass_(twoPass) {}
 
     void render(const FrameContext& frame) override {
         ensurePrograms();
@@ -222,7 +206,6 @@ private:
         ++stats_.passes;
     }
 
-    TechniqueInfo info_;
     bool twoPass_;
     int allocatedPrecision_ = 0;
     SceneProgram peelProgram_, shadeProgram_;
