@@ -1,8 +1,9 @@
 // Makes a header valid C++ and valid GLSL at once (the nvpro samples' pattern), so binding
 // points, sizes and struct layouts are written once and host and shaders cannot drift apart.
 // C++ sees strata::gpu constexpr values and plain structs, GLSL global constants and structs.
-// Only scalars (uint, int, float) go in shared structs: they pack alike in C++ and std430,
-// vec3 does not (tests/gpu_interface_gl_test.cpp checks the layouts and the bindings).
+// Shared structs hold scalars only (uint, int, float): those pack alike in C++ and std430,
+// vectors do not (vec3 aligns to 16 in std430). tests/gpu_interface_gl_test.cpp checks the
+// layouts and the bindings.
 // Include guards, not #pragma once: the shader loader inlines every #include it meets.
 #ifndef STRATA_HOST_DEVICE_H
 #define STRATA_HOST_DEVICE_H
