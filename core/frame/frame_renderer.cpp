@@ -1,7 +1,7 @@
 #include "frame/frame_renderer.hpp"
 
+#include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
-#include "render/bindings.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -71,7 +71,7 @@ std::uint64_t FrameRenderer::countFragments(const FrameContext& frame) {
     setTransparentDepthState(frame);
     glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
     drawTransparent(frame, countProgram_, frame.transparentOrder);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -1,8 +1,9 @@
 #include "oit/abuffer.hpp"
 
+#include "common/bindings.h"
 #include "gl/debug.hpp"
+#include "oit/abuffer_node.h"
 #include "oit/draw_transparent.hpp"
-#include "render/bindings.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -10,7 +11,7 @@
 namespace strata {
 namespace {
 
-constexpr std::uint64_t kNodeBytes = 24;  // shaders/oit/abuffer_node.glsl
+constexpr std::uint64_t kNodeBytes = sizeof(gpu::FragmentNode);
 
 struct Tile {
     glm::ivec2 origin;
@@ -139,9 +140,9 @@ private:
         glEnable(GL_SCISSOR_TEST);
         glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
+        glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
         glProgramUniform1ui(storeProgram_.id(), capacityLocation_, GLuint(std::min<std::uint64_t>(capacity_, 0xFFFFFFFFu)));
         stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -163,9 +164,9 @@ private:
         glEnable(GL_SCISSOR_TEST);
         glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
         glDisable(GL_BLEND);
-        glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
-        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         setDepthOrderUniforms(frame, resolveProgram_.id());
         drawFullscreen(frame, resolveProgram_.id());
         ++stats_.passes;
@@ -174,16 +175,17 @@ private:
     void resolveCompute(const FrameContext& frame, const Tile& tile) {
         gl::ScopedPass pass(frame.timer, "abuffer resolve (compute)");
         const GLuint program = computeResolveProgram_.id();
-        glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-        glBindImageTexture(bindings::kResolveOutput, frame.targets.outputColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+        glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        glBindImageTexture(gpu::BIND_RESOLVE_OUTPUT, frame.targets.outputColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                            GL_RGBA32F);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
-        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         setDepthOrderUniforms(frame, program);
         glProgramUniform4i(program, glGetUniformLocation(program, "uTile"), tile.origin.x, tile.origin.y, tile.size.x,
                            tile.size.y);
         glUseProgram(program);
-        glDispatchCompute(GLuint((tile.size.x + 7) / 8), GLuint((tile.size.y + 7) / 8), 1);
+        constexpr int group = int(gpu::RESOLVE_GROUP_SIZE);
+        glDispatchCompute(GLuint((tile.size.x + group - 1) / group), GLuint((tile.size.y + group - 1) / group), 1);
         // The output is read next as a texture or framebuffer attachment (blit, read-back).
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -1,7 +1,7 @@
 #include "render/deflection_warp.hpp"
 
+#include "common/bindings.h"
 #include "gl/shader_program.hpp"
-#include "render/bindings.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -65,7 +65,7 @@ void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const Deflecti
     // Bound even when not counting: the shader declares the counter, and a draw whose program
     // uses an atomic counter binding with no buffer behind it is undefined (Mesa ignores it,
     // other drivers need not), whether or not the increment runs.
-    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+    glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
 
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glViewport(0, 0, size.x, size.y);
@@ -73,7 +73,7 @@ void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const Deflecti
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
     glDepthMask(GL_FALSE);
-    glBindTextureUnit(0, sourceTexture);
+    glBindTextureUnit(gpu::BIND_SOURCE, sourceTexture);
     glUseProgram(p);
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -1,6 +1,5 @@
 #version 450 core
 // Transforms a scene mesh; every scene-drawing program shares this vertex stage.
-#include "bindings.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;

@@ -1,5 +1,5 @@
 // Per-object material uniforms and the shaded colour of the current fragment.
-#include "bindings.glsl"
+#include "bindings.h"
 #include "shading.glsl"
 
 uniform vec3 uBaseColor;

@@ -2,8 +2,8 @@
 // Image deflection (core/render/deflection_warp.hpp): each output pixel centre p, in GL window
 // coordinates (origin bottom-left corner, y up), samples the source at s = uMap * (p, 1), the
 // inverse map. Outside [0, w] x [0, h] (or behind, w <= 0) gives the border colour and counts.
-#include "bindings.glsl"
-layout(binding = 0) uniform sampler2D uSource;
+#include "bindings.h"
+layout(binding = BIND_SOURCE) uniform sampler2D uSource;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uOutside;
 uniform mat3 uMap;
 uniform int uBilinear;   // 0: nearest texel, 1: bilinear by hand

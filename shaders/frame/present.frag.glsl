@@ -1,7 +1,8 @@
 #version 450 core
 // Present: the frame's linear RGB output to the window, sRGB-encoded (the default framebuffer is
 // written without GL_FRAMEBUFFER_SRGB, so the encoding happens here, exactly once).
-layout(binding = 0) uniform sampler2D uLinearColor;
+#include "bindings.h"
+layout(binding = BIND_SOURCE) uniform sampler2D uLinearColor;
 out vec4 fragColor;
 
 vec3 linearToSrgb(vec3 c) {

@@ -2,7 +2,8 @@
 // Present into a region of the window (one eye of side-by-side stereo): the texel under the
 // fragment is gl_FragCoord - uOrigin, so a texture of the region's size fills a viewport at
 // uOrigin. Linear RGB in, sRGB-encoded out, as shaders/frame/present.frag.glsl.
-layout(binding = 0) uniform sampler2D uLinearColor;
+#include "bindings.h"
+layout(binding = BIND_SOURCE) uniform sampler2D uLinearColor;
 uniform ivec2 uOrigin;
 out vec4 fragColor;
 

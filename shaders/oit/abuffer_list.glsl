@@ -1,10 +1,7 @@
 // The A-buffer's per-pixel linked lists as ordered_composite.glsl reads them: node accessors
 // and the iteration macro. Shared by the fragment and compute resolves (abuffer_resolve.*).
-#include "bindings.glsl"
-#include "abuffer_node.glsl"
+#include "abuffer_storage.glsl"
 #include "packed_color.glsl"
-
-layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
 
 uint gFirstNode;  // the pixel's list head as a node index, 0xFFFFFFFF for an empty list
 

@@ -1,13 +1,13 @@
 #version 450 core
 // A-buffer resolve as a compute dispatch over a tile (same result as abuffer_resolve.frag.glsl):
-// one invocation per pixel, 8x8 per group, writing the output colour as an image. On GPUs whose
-// fragment stage runs on a few units only (Hopper data-centre parts), compute uses them all.
-layout(local_size_x = 8, local_size_y = 8) in;
+// one invocation per pixel, writing the output colour as an image. On GPUs whose fragment stage
+// runs on a few units only (Hopper data-centre parts), compute uses them all.
 #ifdef LIST_TAIL
-#include "buffers/buffer_bindings.glsl"
 #include "buffers/tail_resolve.glsl"
 #endif
 #include "abuffer_list.glsl"
+
+layout(local_size_x = RESOLVE_GROUP_SIZE, local_size_y = RESOLVE_GROUP_SIZE) in;
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_RESOLVE_OUTPUT, rgba32f) uniform writeonly image2D uOutput;

@@ -4,7 +4,6 @@
 // object order). `ll` uses this resolve too, with LIST_TAIL defined: its overflowed fragments,
 // blended into a tail layer, composite behind the sorted ones.
 #ifdef LIST_TAIL
-#include "buffers/buffer_bindings.glsl"
 #include "buffers/tail_resolve.glsl"
 #endif
 #include "abuffer_list.glsl"

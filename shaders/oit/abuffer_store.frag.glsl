@@ -3,10 +3,9 @@
 // its pixel's list. Fragments past the pool's capacity are counted (the counter keeps running)
 // but not stored; the host grows the pool to the counted size and renders again.
 #include "surface.glsl"
-#include "abuffer_node.glsl"
+#include "abuffer_storage.glsl"
 
 layout(early_fragment_tests) in;
-layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
 uniform uint uCapacity;
 

@@ -1,6 +1,6 @@
 #include "oit/approximate/accumulation_targets.hpp"
 
-#include "oit/approximate/approximate_bindings.hpp"
+#include "oit/approximate/approximate_bindings.h"
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
 
@@ -39,8 +39,8 @@ void AccumulationTargets::beginAccumulation(const FrameContext& frame, int preci
 void AccumulationTargets::endAccumulation() const {
     glDisable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ZERO);
-    glBindTextureUnit(approximate_bindings::kAccum, accum_.id());
-    glBindTextureUnit(approximate_bindings::kTransmittance, transmittance_.id());
+    glBindTextureUnit(gpu::BIND_ACCUM, accum_.id());
+    glBindTextureUnit(gpu::BIND_TRANSMITTANCE, transmittance_.id());
 }
 
 std::uint64_t AccumulationTargets::bytesPerPixel(int precisionBits) {

@@ -11,12 +11,12 @@
 //          (alpha_i c_i vis_i, alpha_i vis_i) and multiplies T_total by (1 - alpha_i) exactly;
 //   composite: C = accum.rgb * (1 - T_total) / accum.a, final = C + T_total * opaque.
 // The noise falls as 1/sqrt(S); the coverage (1 - T_total) is exact at any S.
+#include "common/bindings.h"
 #include "oit/approximate/accumulation_targets.hpp"
-#include "oit/approximate/approximate_bindings.hpp"
+#include "oit/approximate/approximate_bindings.h"
 #include "oit/approximate/approximate_entries.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
-#include "render/bindings.hpp"
 
 namespace strata::approximate {
 namespace {
@@ -62,7 +62,7 @@ public:
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
             setTransparentDepthState(frame);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            glBindImageTexture(approximate_bindings::kSampleDepths, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+            glBindImageTexture(gpu::BIND_SAMPLE_DEPTHS, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
             stats_.objectDraws += drawTransparent(frame, depthProgram_, frame.transparentOrder);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -70,7 +70,7 @@ public:
         {
             gl::ScopedPass pass(frame.timer, "stochastic accumulate");
             targets_.beginAccumulation(frame, settings_.precision);
-            glBindImageTexture(approximate_bindings::kSampleDepths, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
+            glBindImageTexture(gpu::BIND_SAMPLE_DEPTHS, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
             // Every fragment in front of the opaque depth adds its (possibly zero) share.
             glBeginQuery(GL_SAMPLES_PASSED, query_.id());
             stats_.objectDraws += drawTransparent(frame, accumulateProgram_, frame.transparentOrder);
@@ -80,7 +80,7 @@ public:
         {
             gl::ScopedPass pass(frame.timer, "stochastic composite");
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+            glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 3;

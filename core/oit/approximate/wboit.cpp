@@ -14,11 +14,11 @@
 // which cancels in the weighted average: ~350 such fragments fit, and the smallest weight
 // (alpha^2 * 1e-2 / 16) stays a normal half float down to alpha ~0.3 (a subnormal with steps of
 // 1.5e-3 of it at 0.25).
+#include "common/bindings.h"
 #include "oit/approximate/accumulation_targets.hpp"
 #include "oit/approximate/approximate_entries.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
-#include "render/bindings.hpp"
 
 namespace strata::approximate {
 namespace {
@@ -69,7 +69,7 @@ public:
         {
             gl::ScopedPass pass(frame.timer, "wboit composite");
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+            glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 2;

@@ -1,7 +1,7 @@
 #include "oit/buffers/buffer_support.hpp"
 
+#include "common/bindings.h"
 #include "oit/precision.hpp"
-#include "render/bindings.hpp"
 
 namespace strata::buffers {
 
@@ -10,14 +10,14 @@ void Counters::reset() {
         buffer_ = gl::Buffer::create();
         glNamedBufferStorage(buffer_.id(), kCounterBytes, nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
     }
-    const std::uint32_t zero[4] = {0, 0, 0, 0};
-    glNamedBufferSubData(buffer_.id(), 0, kCounterBytes, zero);
+    const std::array<std::uint32_t, kCounterSlots> zero{};
+    glNamedBufferSubData(buffer_.id(), 0, kCounterBytes, zero.data());
 }
 
-void Counters::bind() const { glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, buffer_.id()); }
+void Counters::bind() const { glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, buffer_.id()); }
 
-std::array<std::uint32_t, 4> Counters::read() const {
-    std::array<std::uint32_t, 4> values{};
+std::array<std::uint32_t, kCounterSlots> Counters::read() const {
+    std::array<std::uint32_t, kCounterSlots> values{};
     glGetNamedBufferSubData(buffer_.id(), 0, kCounterBytes, values.data());
     return values;
 }
@@ -70,8 +70,8 @@ void TailTargets::bindForResolve(const FrameContext& frame, bool enabled) {
     if (enabled) ensure(frame);
     // Disabled: the shader's uTail is false and never samples; bind the opaque colour so the
     // units hold a complete texture either way.
-    glBindTextureUnit(kBindTailAccum, enabled ? accum_.id() : frame.targets.opaqueColor());
-    glBindTextureUnit(kBindTailReveal, enabled ? reveal_.id() : frame.targets.opaqueColor());
+    glBindTextureUnit(gpu::BIND_TAIL_ACCUM, enabled ? accum_.id() : frame.targets.opaqueColor());
+    glBindTextureUnit(gpu::BIND_TAIL_REVEAL, enabled ? reveal_.id() : frame.targets.opaqueColor());
 }
 
 void storeBarrier() {

@@ -1,33 +1,32 @@
 #pragma once
-// What the buffer family (fab, kbuffer, ll, sbuffer) shares: its binding points, the atomic
-// counters each store pass reports through, and the optional "tail" targets that blend
-// overflowed fragments approximately instead of dropping them.
+// What the buffer family (fab, kbuffer, ll, sbuffer) shares on the host: the atomic counters
+// each store pass reports through, and the optional "tail" targets that blend overflowed
+// fragments approximately instead of dropping them. Binding points and the entry layout are
+// shared with the shaders in shaders/oit/buffers/buffer_bindings.h.
 #include "gl/objects.hpp"
+#include "oit/abuffer_node.h"
+#include "oit/buffers/buffer_bindings.h"
 #include "oit/technique.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace strata::buffers {
 
-// Mirrors shaders/oit/buffers/buffer_bindings.glsl.
-constexpr unsigned kBindEntries = 2;       // SSBO
-constexpr unsigned kBindPixelOffsets = 3;  // SSBO
-constexpr unsigned kBindDepthKeys = 4;     // SSBO
-constexpr unsigned kBindPixelCounts = 1;   // image unit
-constexpr unsigned kBindTailAccum = 2;     // texture unit
-constexpr unsigned kBindTailReveal = 3;    // texture unit
+constexpr std::uint64_t kEntryBytes = sizeof(gpu::FragmentEntry);
+constexpr std::uint64_t kNodeBytes = sizeof(gpu::FragmentNode);  // ll's fixed pool
 
-constexpr std::uint64_t kEntryBytes = 20;  // shaders/oit/buffers/entry.glsl
-constexpr std::uint64_t kNodeBytes = 24;   // shaders/oit/abuffer_node.glsl
-constexpr std::uint64_t kCounterBytes = 16;
+// Four atomic counters (uint) a store pass increments; meaning per technique. The shaders
+// address them by byte offset (0, 4, 8, 12) at gpu::BIND_COUNTERS.
+constexpr std::size_t kCounterSlots = 4;
+constexpr std::uint64_t kCounterBytes = kCounterSlots * sizeof(std::uint32_t);
 
-// Four atomic counters (uint) a store pass increments; meaning per technique.
 class Counters {
 public:
     void reset();                    // creates on first use, zeroes
-    void bind() const;               // GL_ATOMIC_COUNTER_BUFFER at bindings::kCounters
-    std::array<std::uint32_t, 4> read() const;  // after the pass and a barrier
+    void bind() const;               // GL_ATOMIC_COUNTER_BUFFER at gpu::BIND_COUNTERS
+    std::array<std::uint32_t, kCounterSlots> read() const;  // after the pass and a barrier
 
 private:
     gl::Buffer buffer_;

@@ -3,9 +3,9 @@
 #include "oit/buffers/buffer_entries.hpp"
 #include "oit/buffers/buffer_support.hpp"
 
+#include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/draw_transparent.hpp"
-#include "render/bindings.hpp"
 
 namespace strata {
 namespace {
@@ -58,8 +58,8 @@ public:
             counters_.bind();
             tailTargets_.bindForStore(frame, tail, true);
             setTransparentDepthState(frame);
-            glBindImageTexture(kBindPixelCounts, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
+            glBindImageTexture(gpu::BIND_PIXEL_COUNTS, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_ENTRIES, entries_.id());
             setUniforms(storeProgram_.id(), frame);
             stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
             TailTargets::endStore();
@@ -69,9 +69,9 @@ public:
         {
             gl::ScopedPass pass(frame.timer, "fab resolve");
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindImageTexture(kBindPixelCounts, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
-            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+            glBindImageTexture(gpu::BIND_PIXEL_COUNTS, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_ENTRIES, entries_.id());
+            glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
             tailTargets_.bindForResolve(frame, tail);
             setUniforms(resolveProgram_.id(), frame);
             glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);

@@ -6,9 +6,9 @@
 #include "oit/buffers/buffer_entries.hpp"
 #include "oit/buffers/buffer_support.hpp"
 
+#include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/draw_transparent.hpp"
-#include "render/bindings.hpp"
 
 namespace strata {
 namespace {
@@ -58,8 +58,8 @@ public:
         glClearNamedBufferData(entries_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &unclaimed);
         counters_.reset();
         counters_.bind();
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindDepthKeys, keys_.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_DEPTH_KEYS, keys_.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_ENTRIES, entries_.id());
         setUniforms(storeProgram_.id(), frame);
         const GLint passLocation = glGetUniformLocation(storeProgram_.id(), "uPass");
         for (int p = 0; p < 2; ++p) {
@@ -76,7 +76,7 @@ public:
         {
             gl::ScopedPass pass(frame.timer, "kbuffer resolve");
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+            glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
             tailTargets_.bindForResolve(frame, tail);
             setUniforms(resolveProgram_.id(), frame);
             glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);

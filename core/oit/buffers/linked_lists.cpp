@@ -4,9 +4,9 @@
 #include "oit/buffers/buffer_entries.hpp"
 #include "oit/buffers/buffer_support.hpp"
 
+#include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/draw_transparent.hpp"
-#include "render/bindings.hpp"
 
 namespace strata {
 namespace {
@@ -60,8 +60,8 @@ public:
             counters_.bind();
             tailTargets_.bindForStore(frame, tail, true);
             setTransparentDepthState(frame);
-            glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
+            glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
             glProgramUniform1ui(storeProgram_.id(), glGetUniformLocation(storeProgram_.id(), "uCapacity"), GLuint(pool));
             stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
             TailTargets::endStore();
@@ -71,9 +71,9 @@ public:
         {
             gl::ScopedPass pass(frame.timer, "ll resolve");
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindImageTexture(bindings::kHeads, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kNodes, nodes_.id());
-            glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+            glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
+            glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
             tailTargets_.bindForResolve(frame, tail);
             glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);
             setDepthOrderUniforms(frame, resolveProgram_.id());

@@ -56,16 +56,16 @@ std::uint32_t PrefixSum::scan(GLuint buffer, std::uint64_t count) {
 
 void PrefixSum::scanLevel(GLuint data, std::size_t level, std::uint64_t count) {
     std::uint64_t groups = blocks(count);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, data);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sums_[level].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_SCAN_DATA, data);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_SCAN_SUMS, sums_[level].id());
     glUseProgram(scan_.id());
     glProgramUniform1ui(scan_.id(), scanCount_, GLuint(count));
     glDispatchCompute(GLuint(groups), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     if (groups <= 1) return;
     scanLevel(sums_[level].id(), level + 1, groups);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, data);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sums_[level].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_SCAN_DATA, data);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_SCAN_SUMS, sums_[level].id());
     glUseProgram(add_.id());
     glProgramUniform1ui(add_.id(), addCount_, GLuint(count));
     glDispatchCompute(GLuint(groups), 1, 1);

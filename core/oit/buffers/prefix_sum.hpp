@@ -1,8 +1,9 @@
 #pragma once
 // In-place exclusive prefix sum of uint32 values in a GL buffer, on the GPU: a work-efficient
-// block scan (shaders/oit/buffers/prefix_scan.comp.glsl, 512 elements per work group) applied
+// block scan (shaders/oit/buffers/prefix_scan.comp.glsl, gpu::SCAN_BLOCK elements per group) applied
 // recursively to the block totals, then the totals added back. Correct for any count >= 1.
 #include "gl/objects.hpp"
+#include "oit/buffers/buffer_bindings.h"
 
 #include <cstdint>
 #include <vector>
@@ -11,7 +12,7 @@ namespace strata::buffers {
 
 class PrefixSum {
 public:
-    static constexpr std::uint64_t kBlock = 512;
+    static constexpr std::uint64_t kBlock = gpu::SCAN_BLOCK;
 
     // Scans the first `count` uints of `buffer` in place; returns their total.
     std::uint32_t scan(GLuint buffer, std::uint64_t count);

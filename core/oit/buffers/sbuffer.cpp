@@ -8,9 +8,9 @@
 #include "oit/buffers/buffer_support.hpp"
 #include "oit/buffers/prefix_sum.hpp"
 
+#include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/draw_transparent.hpp"
-#include "render/bindings.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -56,7 +56,7 @@ public:
             glClearNamedBufferData(offsets_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
             counters_.reset();
             counters_.bind();
-            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindPixelOffsets, offsets_.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_PIXEL_OFFSETS, offsets_.id());
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             setTransparentDepthState(frame);
@@ -93,8 +93,8 @@ public:
             }
             {
                 gl::ScopedPass pass(frame.timer, "sbuffer store");
-                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindPixelOffsets, offsets_.id());
-                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBindEntries, entries_.id());
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_PIXEL_OFFSETS, offsets_.id());
+                glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_ENTRIES, entries_.id());
                 counters_.bind();
                 glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
                 glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -110,7 +110,7 @@ public:
             {
                 gl::ScopedPass pass(frame.timer, "sbuffer resolve");
                 glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-                glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
+                glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
                 tailTargets_.bindForResolve(frame, false);
                 glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uWidth"), GLuint(frame.size.x));
                 glProgramUniform1ui(resolve, glGetUniformLocation(resolve, "uBase"), GLuint(band.base));

@@ -11,10 +11,10 @@
 // dropped = total (counted in pass 2) - captured.
 #include "oit/peeling/bucket_peeling.hpp"
 
+#include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
-#include "oit/peeling/peel_bindings.hpp"
+#include "oit/peeling/peel_bindings.h"
 #include "oit/precision.hpp"
-#include "render/bindings.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -61,8 +61,8 @@ public:
         stats_ = {};
         const GLuint zeros[2] = {0, 0};
         glNamedBufferSubData(counters_.id(), 0, sizeof(zeros), zeros);
-        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counters_.id());
-        glBindTextureUnit(bindings::kOpaqueDepth, frame.targets.depth());
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counters_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
         setBucketUniforms(frame, captureProgram_.id(), buckets);
         setBucketUniforms(frame, colorProgram().id(), buckets);
 
@@ -189,7 +189,7 @@ private:
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        glBindTextureUnit(peel_bindings::kPrevious, range_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, range_.id());
         stats_.objectDraws += drawTransparent(frame, captureProgram_, frame.transparentOrder);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
@@ -201,9 +201,9 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         setTransparentDepthState(frame);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glBindTextureUnit(peel_bindings::kPrevious, range_.id());
-        glBindTextureUnit(peel_bindings::kLayer, bucketDepths_.id());
-        glBindImageTexture(peel_bindings::kBucketColors, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, range_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_LAYER, bucketDepths_.id());
+        glBindImageTexture(gpu::BIND_BUCKET_COLORS, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                            rgbaFloatFormat(settings_.precision));
         stats_.objectDraws += drawTransparent(frame, colorProgram(), frame.transparentOrder);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -217,9 +217,9 @@ private:
         glDisable(GL_BLEND);
         GLuint p = compositeProgram_.id();
         glProgramUniform1i(p, glGetUniformLocation(p, "uBuckets"), buckets);
-        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
-        glBindTextureUnit(peel_bindings::kLayer, bucketDepths_.id());
-        glBindTextureUnit(peel_bindings::kAccum, colors_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        glBindTextureUnit(gpu::BIND_PEEL_LAYER, bucketDepths_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, colors_.id());
         drawFullscreen(frame, p);
         ++stats_.passes;
     }

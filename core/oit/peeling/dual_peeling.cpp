@@ -8,12 +8,12 @@
 // Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
 #include "oit/peeling/dual_peeling.hpp"
 
+#include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
-#include "oit/peeling/peel_bindings.hpp"
+#include "oit/peeling/peel_bindings.h"
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
-#include "render/bindings.hpp"
 
 namespace strata::peeling {
 namespace {
@@ -128,7 +128,7 @@ private:
     void peel(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "dual peel");
         bindPeelTargets(frame, cur, true);
-        glBindTextureUnit(peel_bindings::kPrevious, minMax_[1 - cur].id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
         skipper_.draw(frame, peelProgram_, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
@@ -148,9 +148,9 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);           // under
         glBlendFuncSeparatei(1, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
-        glBindTextureUnit(peel_bindings::kLayer, front_.id());
-        glBindTextureUnit(peel_bindings::kBack, back_.id());
-        glBindTextureUnit(peel_bindings::kPrevious, minMax_[cur].id());
+        glBindTextureUnit(gpu::BIND_PEEL_LAYER, front_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_BACK, back_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[cur].id());
         const GLuint program = blendProgram_.id();
         const GLint step = glGetUniformLocation(program, "uStep");
         auto drawStep = [&](int s, bool front, bool back, GLenum target, GLuint query) {
@@ -182,9 +182,9 @@ private:
         gl::ScopedPass pass(frame.timer, "dual composite");
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         glDisable(GL_BLEND);
-        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
-        glBindTextureUnit(peel_bindings::kAccum, frontAccum_.id());
-        glBindTextureUnit(peel_bindings::kBackAccum, backAccum_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, frontAccum_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
         drawFullscreen(frame, compositeProgram_.id());
         ++stats_.passes;
     }

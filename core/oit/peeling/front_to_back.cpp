@@ -12,12 +12,12 @@
 // it too. max_passes bounds the loop; hitting it is reported as an overflow.
 #include "oit/peeling/front_to_back.hpp"
 
+#include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
-#include "oit/peeling/peel_bindings.hpp"
+#include "oit/peeling/peel_bindings.h"
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
-#include "render/bindings.hpp"
 
 namespace strata::peeling {
 namespace {
@@ -130,9 +130,9 @@ private:
         glDisable(GL_BLEND);
         glDisable(GL_STENCIL_TEST);
         if (twoPass_) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glBindTextureUnit(bindings::kOpaqueDepth, frame.targets.depth());
-        glBindTextureUnit(peel_bindings::kPrevious, depth_[1 - cur].id());
-        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, bindings::kCounters, counter_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[1 - cur].id());
+        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
         glProgramUniform1i(peelProgram_.id(), firstLayerLocation_, layer == 0 ? 1 : 0);
         glBeginQuery(GL_ANY_SAMPLES_PASSED, anyLeft_.id());
         skipper_.draw(frame, peelProgram_, stats_);
@@ -163,8 +163,8 @@ private:
         gl::ScopedPass pass(frame.timer, "f2b blend");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
         underBlending();
-        glBindTextureUnit(peel_bindings::kPrevious, depth_[cur].id());
-        glBindTextureUnit(peel_bindings::kLayer, layerColor_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[cur].id());
+        glBindTextureUnit(gpu::BIND_PEEL_LAYER, layerColor_.id());
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         drawFullscreen(frame, blendProgram_.id());
         glEndQuery(GL_SAMPLES_PASSED);
@@ -200,8 +200,8 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         glDisable(GL_BLEND);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        glBindTextureUnit(bindings::kOpaqueColor, frame.targets.opaqueColor());
-        glBindTextureUnit(peel_bindings::kAccum, accum_.id());
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
         drawFullscreen(frame, compositeProgram_.id());
         ++stats_.passes;
     }

@@ -1,6 +1,6 @@
 #include "oit/peeling/object_skipper.hpp"
 
-#include "oit/peeling/peel_bindings.hpp"
+#include "oit/peeling/peel_bindings.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -111,14 +111,14 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     // The bound's block maxima: one small pass instead of a full-resolution box per object.
     glBindFramebuffer(GL_FRAMEBUFFER, reduceFbo_.id());
     glViewport(0, 0, reducedSize_.x, reducedSize_.y);
-    glBindTextureUnit(peel_bindings::kPrevious, remaining);
+    glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, remaining);
     glUseProgram(reduceProgram_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
     // One rectangle per live object and side, under an occlusion query.
     glBindFramebuffer(GL_FRAMEBUFFER, queryFbo_.id());
-    glBindTextureUnit(peel_bindings::kPrevious, reduced_.id());
+    glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, reduced_.id());
     const GLuint program = rectProgram_.id();
     glUseProgram(program);
     const auto& objects = frame.scene.objects();

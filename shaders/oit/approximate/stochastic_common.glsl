@@ -2,7 +2,7 @@
 // of an r32ui array image per sample holds the depth bits of the nearest fragment that covered
 // it. llvmpipe offers at most 4 MSAA samples, so samples are layers, not MSAA samples.
 #include "surface.glsl"
-#include "approximate_bindings.glsl"
+#include "approximate_bindings.h"
 
 uniform int uSamples;  // S, 1..64
 

@@ -2,8 +2,8 @@
 // Stochastic transparency composite with the paper's alpha correction: the accumulated colour
 // is rescaled so the transparent layers cover exactly (1 - T_total), where T_total is the exact
 // product of (1 - alpha) from the multiplicative target; the opaque colour shows through T_total.
-#include "bindings.glsl"
-#include "approximate_bindings.glsl"
+#include "bindings.h"
+#include "approximate_bindings.h"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_ACCUM) uniform sampler2D uAccum;

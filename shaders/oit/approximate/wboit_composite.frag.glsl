@@ -2,8 +2,8 @@
 // Weighted blended OIT composite: the weighted average colour covers (1 - revealage) of the
 // pixel, the opaque colour shows through the rest. Clamps as in the paper (alpha sum in
 // [1e-4, 5e4], times the accumulation's weight scale) keep the division finite.
-#include "bindings.glsl"
-#include "approximate_bindings.glsl"
+#include "bindings.h"
+#include "approximate_bindings.h"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_ACCUM) uniform sampler2D uAccum;

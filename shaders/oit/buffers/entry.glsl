@@ -1,15 +1,6 @@
-// One stored fragment of the array-based buffers (fab, kbuffer, sbuffer): 20 bytes, std430
-// stride 20. Colour as two half2 pairs like the A-buffer's nodes, so quantisation stays far
-// below 1/255 and the buffers can equal the reference.
-#include "buffer_bindings.glsl"
-
-struct FragmentEntry {
-    float depth;       // window depth, reversed-Z: larger is nearer
-    uint objectId;
-    uint primitiveId;
-    uint colorRG;      // packHalf2x16(r, g)
-    uint colorBA;      // packHalf2x16(b, alpha)
-};
+// The array-based buffers' fragments (fab, kbuffer, sbuffer) as their shaders see them; the
+// storage block lives here, not in buffer_bindings.h, because C++ has no such declaration.
+#include "oit/buffers/buffer_bindings.h"
 
 layout(std430, binding = BIND_ENTRIES) coherent buffer FragmentEntries {
     FragmentEntry entries[];

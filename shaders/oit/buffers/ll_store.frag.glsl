@@ -4,12 +4,11 @@
 // does not grow: fragments past its end are counted (the counter keeps running) and dropped or,
 // with the tail on, blended approximately.
 #include "surface.glsl"
-#include "oit/abuffer_node.glsl"
-#include "buffer_bindings.glsl"
+#include "oit/abuffer_storage.glsl"
+#include "buffer_bindings.h"
 #include "tail_store.glsl"
 
 layout(early_fragment_tests) in;
-layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
 uniform uint uCapacity;  // nodes in the pool
 

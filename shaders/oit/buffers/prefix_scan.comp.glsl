@@ -3,22 +3,23 @@
 // group, in place; each group's total goes to sums[group]. Elements past uCount read as 0 and
 // are not written, so any count works. The host scans `sums` the same way (recursively) and
 // adds it back with prefix_add.comp.glsl.
-layout(local_size_x = 256) in;
-layout(std430, binding = 0) buffer Data { uint data[]; };
-layout(std430, binding = 1) buffer Sums { uint sums[]; };
+#include "buffer_bindings.h"
+
+layout(local_size_x = SCAN_GROUP_SIZE) in;
+layout(std430, binding = BIND_SCAN_DATA) buffer Data { uint data[]; };
+layout(std430, binding = BIND_SCAN_SUMS) buffer Sums { uint sums[]; };
 uniform uint uCount;
 
-const uint kBlock = 512u;
-shared uint temp[kBlock];
+shared uint temp[SCAN_BLOCK];
 
 void main() {
     uint t = gl_LocalInvocationID.x;
-    uint a = gl_WorkGroupID.x * kBlock + 2u * t;
+    uint a = gl_WorkGroupID.x * SCAN_BLOCK + 2u * t;
     temp[2u * t] = a < uCount ? data[a] : 0u;
     temp[2u * t + 1u] = a + 1u < uCount ? data[a + 1u] : 0u;
 
     uint offset = 1u;
-    for (uint d = kBlock >> 1; d > 0u; d >>= 1) {  // up-sweep: partial sums in a tree
+    for (uint d = SCAN_BLOCK >> 1; d > 0u; d >>= 1) {  // up-sweep: partial sums in a tree
         barrier();
         if (t < d) {
             uint ai = offset * (2u * t + 1u) - 1u;
@@ -29,10 +30,10 @@ void main() {
     }
     barrier();
     if (t == 0u) {
-        sums[gl_WorkGroupID.x] = temp[kBlock - 1u];
-        temp[kBlock - 1u] = 0u;
+        sums[gl_WorkGroupID.x] = temp[SCAN_BLOCK - 1u];
+        temp[SCAN_BLOCK - 1u] = 0u;
     }
-    for (uint d = 1u; d < kBlock; d <<= 1) {  // down-sweep: exclusive prefixes
+    for (uint d = 1u; d < SCAN_BLOCK; d <<= 1) {  // down-sweep: exclusive prefixes
         offset >>= 1;
         barrier();
         if (t < d) {

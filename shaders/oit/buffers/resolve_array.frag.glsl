@@ -3,7 +3,7 @@
 // `entries` (fab and kbuffer: K slots at pixel * K; sbuffer: its scanned region). The range is
 // composited over the opaque colour in the exact order of ordered_composite.glsl, like the
 // A-buffer, then the tail (if any) behind it.
-#include "bindings.glsl"
+#include "bindings.h"
 #include "entry.glsl"
 #include "tail_resolve.glsl"
 #include "oit/packed_color.glsl"

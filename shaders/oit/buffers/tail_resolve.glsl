@@ -1,6 +1,8 @@
 // The "tail" of the bounded buffers, resolve side: the overflowed fragments as one layer with
 // their alpha-weighted average colour and the coverage 1 - prod(1 - a), composited behind the
 // sorted fragments. Exact when one fragment overflowed, approximate otherwise.
+#include "oit/buffers/buffer_bindings.h"
+
 layout(binding = BIND_TAIL_ACCUM) uniform sampler2D uTailAccum;
 layout(binding = BIND_TAIL_REVEAL) uniform sampler2D uTailReveal;
 uniform bool uTail;

@@ -4,7 +4,7 @@
 // over each uBlock x uBlock block of pixels. The maximum is the conservative side for both
 // tests in bounds_query.frag.glsl, so an object tested against its screen rectangle here is
 // culled only if a per-pixel test would cull it too, at 1 / uBlock^2 of the fill.
-#include "peel_bindings.glsl"
+#include "peel_bindings.h"
 
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uRemaining;
 uniform int uBlock;

@@ -5,7 +5,7 @@
 // Side 0: what remains is not nearer than r (r <= 0: nothing left); live if the box's farthest
 // depth is at or behind some r. Side 1: what remains is not farther than -g; live if the box's
 // nearest depth is at or in front of some -g.
-#include "peel_bindings.glsl"
+#include "peel_bindings.h"
 
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uReducedBound;
 uniform int uSide;

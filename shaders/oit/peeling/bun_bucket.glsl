@@ -1,8 +1,8 @@
 // Bucket of a fragment: the pixel's depth range split into uBuckets uniform intervals of eye
 // distance (window depth is 1/z-like, so uniform window-depth buckets would crowd the far end).
 // Distance from reversed-Z window depth: d = B / (z + A) with A = P[2][2], B = P[3][2].
-#include "bindings.glsl"
-#include "peel_bindings.glsl"
+#include "bindings.h"
+#include "peel_bindings.h"
 
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uRange;
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;

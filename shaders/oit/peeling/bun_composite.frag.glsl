@@ -1,8 +1,8 @@
 #version 450 core
 // Bucket composite: buckets near to far, each bucket's nearest then (when distinct) farthest
 // fragment, over the opaque colour. Counts the fragments composited.
-#include "bindings.glsl"
-#include "peel_bindings.glsl"
+#include "bindings.h"
+#include "peel_bindings.h"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_PEEL_LAYER) uniform sampler2DArray uBucketDepths;

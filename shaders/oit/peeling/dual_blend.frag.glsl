@@ -7,7 +7,7 @@
 //  2: passes only where fragments are left strictly inside the next range (the peel wrote it;
 //     -2 is the cleared, empty range): GL_ANY_SAMPLES_PASSED says whether to peel again.
 // The host sets the blend function and colour mask of each target per step.
-#include "peel_bindings.glsl"
+#include "peel_bindings.h"
 
 layout(binding = BIND_PEEL_LAYER) uniform sampler2D uFront;
 layout(binding = BIND_PEEL_BACK) uniform sampler2D uBack;

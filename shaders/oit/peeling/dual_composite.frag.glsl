@@ -1,8 +1,8 @@
 #version 450 core
 // Dual peeling composite: front accumulation (colour, transmittance), then the back
 // accumulation (colour, transmittance), then the opaque colour.
-#include "bindings.glsl"
-#include "peel_bindings.glsl"
+#include "bindings.h"
+#include "peel_bindings.h"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_PEEL_ACCUM) uniform sampler2D uFrontAccum;

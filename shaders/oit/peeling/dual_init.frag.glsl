@@ -2,7 +2,6 @@
 // Dual peeling initialisation: with MAX blending into RG32F, (z, -z) leaves the nearest depth in
 // r and minus the farthest in g (reversed-Z: nearer is larger). The host counts the fragments
 // in front of the opaque depth with a GL_SAMPLES_PASSED query (early depth test, no discard).
-#include "bindings.glsl"
 
 layout(early_fragment_tests) in;
 layout(location = 0) out vec2 outMinMax;

@@ -8,7 +8,7 @@
 // Nothing is counted here: an atomic per fragment per pass is a large share of a pass. The blend
 // pass counts the pixels whose next range is not empty, once per pixel.
 #include "surface.glsl"
-#include "peel_bindings.glsl"
+#include "peel_bindings.h"
 
 layout(early_fragment_tests) in;
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;

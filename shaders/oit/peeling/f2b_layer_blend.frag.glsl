@@ -3,8 +3,8 @@
 // rgb = dst.a * src.rgb + dst.rgb and a = (1 - src.a) * dst.a, so the target holds the
 // premultiplied colour so far and the transmittance. Pixels without a layer are discarded, so
 // the samples-passed count of this pass is the number of fragments captured.
-#include "bindings.glsl"
-#include "peel_bindings.glsl"
+#include "bindings.h"
+#include "peel_bindings.h"
 
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uLayerDepth;
 layout(binding = BIND_PEEL_LAYER) uniform sampler2D uLayerColor;

@@ -7,7 +7,7 @@
 // DEPTH_ONLY (f2b2's pre-pass): no colour output, the shading pass follows with GL_EQUAL.
 // No early_fragment_tests: the discards below must happen before the depth write.
 #include "surface.glsl"
-#include "peel_bindings.glsl"
+#include "peel_bindings.h"
 
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uPreviousDepth;

@@ -1,0 +1,23 @@
+// Binding points every family may use; the families' own start above them so that one program
+// can use both sets (ll uses the A-buffer's node pool and heads). Uniforms go by name.
+#ifndef STRATA_COMMON_BINDINGS_H
+#define STRATA_COMMON_BINDINGS_H
+#include "common/host_device.h"
+
+GPU_NAMESPACE_BEGIN
+
+GPU_CONST uint BIND_COUNTERS = 0u;        // atomic counter buffer a pass reports through
+GPU_CONST uint BIND_NODES = 1u;           // SSBO: the A-buffer's node pool (oit/abuffer_node.h)
+GPU_CONST uint BIND_HEADS = 0u;           // image unit: per-pixel list heads (r32ui)
+GPU_CONST uint BIND_OPAQUE_COLOR = 0u;    // texture unit
+GPU_CONST uint BIND_OPAQUE_DEPTH = 1u;    // texture unit
+GPU_CONST uint BIND_RESOLVE_OUTPUT = 3u;  // image unit: compute resolves write the output colour
+GPU_CONST uint BIND_SOURCE = 0u;          // texture unit: the image a full-screen pass warps or presents
+
+// Compute resolves run square groups of this many pixels a side; the host rounds the
+// dispatch up to whole groups.
+GPU_CONST uint RESOLVE_GROUP_SIZE = 8u;
+
+GPU_NAMESPACE_END
+
+#endif

@@ -1,0 +1,374 @@
+// The host and the shaders read the same headers (shaders/**/*.h, common/host_device.h); these
+// tests check that both compilers make the same thing of them: struct offsets, field types and
+// strides against GLSL std430, binding points against what the linked programs report, and
+// compute group sizes against the host's dispatch arithmetic. A header edited for one side only
+// (an #ifdef __cplusplus, a literal binding in a shader) fails here, not as a wrong image.
+#include "gl_test_support.hpp"
+
+#include "common/bindings.h"
+#include "gl/shader_program.hpp"
+#include "oit/abuffer_node.h"
+#include "oit/approximate/approximate_bindings.h"
+#include "oit/buffers/buffer_bindings.h"
+#include "oit/buffers/prefix_sum.hpp"
+#include "oit/peeling/peel_bindings.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include <unistd.h>
+
+using namespace strata;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A compute program from source text whose #includes resolve in the real shader tree.
+gl::Program buildCompute(const std::string& source) {
+    const fs::path dir = fs::temp_directory_path() / ("strata-probe-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "probe.comp.glsl") << source;
+    const gl::PreprocessedSource pre = gl::preprocessShader(dir / "probe.comp.glsl", {}, gl::shaderRoot());
+    fs::remove_all(dir);
+    const char* text = pre.text.c_str();
+    gl::Program program(glCreateShaderProgramv(GL_COMPUTE_SHADER, 1, &text));
+    GLint ok = 0, length = 0;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program.id(), length, nullptr, log.data());
+    INFO(gl::mapShaderLog(log.c_str(), pre.files));
+    REQUIRE(ok);
+    return program;
+}
+
+std::string resourceName(GLuint program, GLenum interface, GLuint index) {
+    GLint length = 0;
+    const GLenum prop = GL_NAME_LENGTH;
+    glGetProgramResourceiv(program, interface, index, 1, &prop, 1, nullptr, &length);
+    std::string name(std::size_t(std::max(length, 1)), '\0');
+    glGetProgramResourceName(program, interface, index, length, nullptr, name.data());
+    return name.c_str();
+}
+
+template <std::size_t N>
+std::array<GLint, N> resourceProps(GLuint program, GLenum interface, GLuint index, const std::array<GLenum, N>& props) {
+    std::array<GLint, N> values{};
+    glGetProgramResourceiv(program, interface, index, GLsizei(N), props.data(), GLsizei(N), nullptr, values.data());
+    return values;
+}
+
+// ---- struct layouts ----
+
+// The GLSL type a C++ field of a shared struct must be; anything else does not compile.
+template <class T>
+constexpr GLenum glslType() {
+    if constexpr (std::is_same_v<T, gpu::uint>) return GL_UNSIGNED_INT;
+    else if constexpr (std::is_same_v<T, int>) return GL_INT;
+    else {
+        static_assert(std::is_same_v<T, float>, "shared structs hold uint, int and float only");
+        return GL_FLOAT;
+    }
+}
+
+struct Field {
+    std::string name;
+    std::size_t offset;
+    GLenum type;
+};
+#define FIELD(S, m) Field{#m, offsetof(S, m), glslType<decltype(S::m)>()}
+
+struct Member {
+    GLint offset, type, stride;
+};
+
+// The members of the struct array in storage block `block`, by field name ("nodes[0].next": next).
+std::map<std::string, Member> blockMembers(GLuint program, const std::string& block) {
+    const GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, block.c_str());
+    REQUIRE(index != GL_INVALID_INDEX);
+    const GLint count = resourceProps<1>(program, GL_SHADER_STORAGE_BLOCK, index, {GL_NUM_ACTIVE_VARIABLES})[0];
+    std::vector<GLint> variables(std::size_t(std::max(count, 0)));
+    const GLenum prop = GL_ACTIVE_VARIABLES;
+    glGetProgramResourceiv(program, GL_SHADER_STORAGE_BLOCK, index, 1, &prop, count, nullptr, variables.data());
+    std::map<std::string, Member> members;
+    for (GLint v : variables) {
+        const std::string name = resourceName(program, GL_BUFFER_VARIABLE, GLuint(v));
+        const auto p = resourceProps<3>(program, GL_BUFFER_VARIABLE, GLuint(v),
+                                        {GL_OFFSET, GL_TYPE, GL_TOP_LEVEL_ARRAY_STRIDE});
+        members[name.substr(name.rfind('.') + 1)] = {p[0], p[1], p[2]};
+    }
+    return members;
+}
+
+template <class S>
+void checkLayout(GLuint program, const std::string& block, const std::vector<Field>& fields) {
+    const auto members = blockMembers(program, block);
+    REQUIRE(!members.empty());
+    {
+        INFO(block, " array stride");
+        CHECK(members.begin()->second.stride == GLint(sizeof(S)));
+    }
+    std::set<std::string> listed;
+    for (const Field& f : fields) {
+        INFO(block, " field ", f.name);
+        listed.insert(f.name);
+        const auto it = members.find(f.name);
+        if (it == members.end()) {
+            FAIL_CHECK("the GLSL block has no such field");
+            continue;
+        }
+        CHECK(it->second.offset == GLint(f.offset));
+        CHECK(it->second.type == GLint(f.type));
+    }
+    for (const auto& [name, member] : members) {
+        INFO(block, " has field ", name, " that the C++ struct (or this test's list) lacks");
+        CHECK(listed.count(name) == 1);
+    }
+}
+
+// ---- binding points ----
+
+enum class Unit { Texture, Image, Storage, Counters };
+
+std::string unitName(Unit u) {
+    switch (u) {
+    case Unit::Texture: return "texture unit";
+    case Unit::Image: return "image unit";
+    case Unit::Storage: return "SSBO binding";
+    case Unit::Counters: return "atomic counter binding";
+    }
+    return "?";
+}
+
+struct Binding {
+    Unit unit;
+    GLuint point;
+};
+
+bool isSampler(GLint type) {
+    switch (type) {
+    case GL_SAMPLER_2D: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_2D_MULTISAMPLE: case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_SAMPLER_BUFFER: case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+        return true;
+    default: return false;
+    }
+}
+
+bool isImage(GLint type) {
+    switch (type) {
+    case GL_IMAGE_2D: case GL_IMAGE_2D_ARRAY: case GL_IMAGE_3D: case GL_IMAGE_BUFFER:
+    case GL_INT_IMAGE_2D: case GL_INT_IMAGE_2D_ARRAY:
+    case GL_UNSIGNED_INT_IMAGE_2D: case GL_UNSIGNED_INT_IMAGE_2D_ARRAY: case GL_UNSIGNED_INT_IMAGE_BUFFER:
+        return true;
+    default: return false;
+    }
+}
+
+// Every texture, image, storage block and atomic counter the linked program uses, by name.
+std::map<std::string, Binding> reportedBindings(GLuint program) {
+    std::map<std::string, Binding> out;
+    GLint uniforms = 0;
+    glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);
+    for (GLuint i = 0; i < GLuint(uniforms); ++i) {
+        const auto p = resourceProps<3>(program, GL_UNIFORM, i, {GL_TYPE, GL_LOCATION, GL_ATOMIC_COUNTER_BUFFER_INDEX});
+        const std::string name = resourceName(program, GL_UNIFORM, i);
+        if (p[0] == GL_UNSIGNED_INT_ATOMIC_COUNTER) {
+            const GLint point = resourceProps<1>(program, GL_ATOMIC_COUNTER_BUFFER, GLuint(p[2]), {GL_BUFFER_BINDING})[0];
+            out[name] = {Unit::Counters, GLuint(point)};
+        } else if (isSampler(p[0]) || isImage(p[0])) {
+            GLint unit = -1;
+            glGetUniformiv(program, p[1], &unit);
+            out[name] = {isSampler(p[0]) ? Unit::Texture : Unit::Image, GLuint(unit)};
+        }
+    }
+    GLint blocks = 0;
+    glGetProgramInterfaceiv(program, GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &blocks);
+    for (GLuint i = 0; i < GLuint(blocks); ++i) {
+        const GLint point = resourceProps<1>(program, GL_SHADER_STORAGE_BLOCK, i, {GL_BUFFER_BINDING})[0];
+        out[resourceName(program, GL_SHADER_STORAGE_BLOCK, i)] = {Unit::Storage, GLuint(point)};
+    }
+    return out;
+}
+
+struct ProgramCase {
+    std::vector<std::string> stages;
+    gl::Defines defines;
+    std::map<std::string, Binding> expected;  // what the host binds for this program
+};
+
+Binding tex(gpu::uint point) { return {Unit::Texture, point}; }
+Binding image(gpu::uint point) { return {Unit::Image, point}; }
+Binding ssbo(gpu::uint point) { return {Unit::Storage, point}; }
+const Binding kCounters{Unit::Counters, gpu::BIND_COUNTERS};
+
+// Each program core/ builds, with the points its C++ binds before drawing with it.
+std::vector<ProgramCase> programCases() {
+    using namespace gpu;
+    const std::string scene = "common/scene.vert.glsl", full = "common/fullscreen.vert.glsl";
+    const std::map<std::string, Binding> tail = {{"uTailAccum", tex(BIND_TAIL_ACCUM)},
+                                                 {"uTailReveal", tex(BIND_TAIL_REVEAL)}};
+    auto with = [](std::map<std::string, Binding> a, const std::map<std::string, Binding>& b) {
+        a.insert(b.begin(), b.end());
+        return a;
+    };
+    const std::map<std::string, Binding> lists = {{"uHeads", image(BIND_HEADS)}, {"FragmentNodes", ssbo(BIND_NODES)}};
+    const std::map<std::string, Binding> listResolve = with(lists, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}});
+    const std::map<std::string, Binding> arrayResolve = with(tail, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)},
+                                                                    {"FragmentEntries", ssbo(BIND_ENTRIES)}});
+    const std::map<std::string, Binding> bucket = {{"uRange", tex(BIND_PEEL_PREVIOUS)},
+                                                   {"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}};
+    return {
+        // frame (core/render)
+        {{scene, "common/opaque.frag.glsl"}, {}, {}},
+        {{scene, "common/count_fragments.frag.glsl"}, {}, {{"uFragmentCount", kCounters}}},
+        {{full, "frame/deflect.frag.glsl"}, {}, {{"uSource", tex(BIND_SOURCE)}, {"uOutside", kCounters}}},
+        {{full, "frame/present.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
+        {{full, "frame/present_region.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
+        {{scene, "oit/blend.frag.glsl"}, {}, {}},
+        // abuffer
+        {{scene, "oit/abuffer_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {}, listResolve},
+        {{"oit/abuffer_resolve.comp.glsl"}, {}, with(listResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
+        // approximate
+        {{scene, "oit/approximate/floor.frag.glsl"}, {}, {}},
+        {{scene, "oit/approximate/wboit_accumulate.frag.glsl"}, {}, {}},
+        {{full, "oit/approximate/wboit_composite.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uAccum", tex(BIND_ACCUM)}, {"uRevealage", tex(BIND_TRANSMITTANCE)}}},
+        {{scene, "oit/approximate/stochastic_depth.frag.glsl"}, {}, {{"uSampleDepths", image(BIND_SAMPLE_DEPTHS)}}},
+        {{scene, "oit/approximate/stochastic_accumulate.frag.glsl"}, {}, {{"uSampleDepths", image(BIND_SAMPLE_DEPTHS)}}},
+        {{full, "oit/approximate/stochastic_composite.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uAccum", tex(BIND_ACCUM)}, {"uTransmittance", tex(BIND_TRANSMITTANCE)}}},
+        // peeling
+        {{scene, "oit/peeling/f2b_peel.frag.glsl"}, {},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uPreviousDepth", tex(BIND_PEEL_PREVIOUS)}, {"uRemaining", kCounters}}},
+        {{scene, "oit/peeling/f2b_peel.frag.glsl"}, {{"DEPTH_ONLY", ""}},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uPreviousDepth", tex(BIND_PEEL_PREVIOUS)}, {"uRemaining", kCounters}}},
+        {{scene, "oit/peeling/f2b2_shade.frag.glsl"}, {}, {}},
+        {{full, "oit/peeling/f2b_layer_blend.frag.glsl"}, {},
+         {{"uLayerDepth", tex(BIND_PEEL_PREVIOUS)}, {"uLayerColor", tex(BIND_PEEL_LAYER)}}},
+        {{full, "oit/peeling/peel_composite.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uAccum", tex(BIND_PEEL_ACCUM)}}},
+        {{scene, "oit/peeling/dual_init.frag.glsl"}, {}, {}},
+        {{scene, "oit/peeling/dual_peel.frag.glsl"}, {}, {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}}},
+        {{full, "oit/peeling/dual_blend.frag.glsl"}, {},
+         {{"uFront", tex(BIND_PEEL_LAYER)}, {"uBack", tex(BIND_PEEL_BACK)}, {"uNextRange", tex(BIND_PEEL_PREVIOUS)}}},
+        {{full, "oit/peeling/dual_composite.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uFrontAccum", tex(BIND_PEEL_ACCUM)},
+          {"uBackAccum", tex(BIND_PEEL_BACK_ACCUM)}}},
+        {{scene, "oit/peeling/bun_range.frag.glsl"}, {}, {}},
+        {{"oit/peeling/bounds.vert.glsl", "oit/peeling/bun_range.frag.glsl"}, {}, {}},
+        {{scene, "oit/peeling/bun_capture.frag.glsl"}, {{"MAX_TARGETS", "8"}}, with(bucket, {{"uTotal", kCounters}})},
+        {{scene, "oit/peeling/bun_color.frag.glsl"}, {{"COLOR_FORMAT", "rgba16f"}},
+         with(bucket, {{"uBucketDepths", tex(BIND_PEEL_LAYER)}, {"uColors", image(BIND_BUCKET_COLORS)}})},
+        {{full, "oit/peeling/bun_composite.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uBucketDepths", tex(BIND_PEEL_LAYER)},
+          {"uColors", tex(BIND_PEEL_ACCUM)}, {"uCaptured", kCounters}}},
+        {{full, "oit/peeling/bound_reduce.frag.glsl"}, {}, {{"uRemaining", tex(BIND_PEEL_PREVIOUS)}}},
+        {{"oit/peeling/bounds_rect.vert.glsl", "oit/peeling/bounds_query.frag.glsl"}, {},
+         {{"uReducedBound", tex(BIND_PEEL_PREVIOUS)}}},
+        // buffers
+        {{scene, "oit/buffers/fab_store.frag.glsl"}, {},
+         {{"uCounts", image(BIND_PIXEL_COUNTS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)},
+          {"uStored", kCounters}, {"uOverflowed", kCounters}}},
+        {{full, "oit/buffers/resolve_array.frag.glsl"}, {{"LAYOUT_FAB", ""}},
+         with(arrayResolve, {{"uCounts", image(BIND_PIXEL_COUNTS)}})},
+        {{scene, "oit/buffers/kbuffer_store.frag.glsl"}, {},
+         {{"DepthKeys", ssbo(BIND_DEPTH_KEYS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)},
+          {"uInserted", kCounters}, {"uDropped", kCounters}}},
+        {{full, "oit/buffers/resolve_array.frag.glsl"}, {{"LAYOUT_KBUFFER", ""}},
+         with(arrayResolve, {{"DepthKeys", ssbo(BIND_DEPTH_KEYS)}})},
+        {{scene, "oit/buffers/sbuffer_store.frag.glsl"}, {},
+         {{"PixelOffsets", ssbo(BIND_PIXEL_OFFSETS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)}, {"uDropped", kCounters}}},
+        {{full, "oit/buffers/resolve_array.frag.glsl"}, {{"LAYOUT_SBUFFER", ""}},
+         with(arrayResolve, {{"PixelOffsets", ssbo(BIND_PIXEL_OFFSETS)}})},
+        {{scene, "oit/buffers/ll_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}}, with(listResolve, tail)},
+        {{"oit/buffers/prefix_scan.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
+        {{"oit/buffers/prefix_add.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
+    };
+}
+
+// "x y z" of a compute program's work group.
+std::string workGroupSize(const std::string& stage) {
+    gl::Program program = gl::buildProgram({stage});
+    std::array<GLint, 3> size{};
+    glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, size.data());
+    return std::to_string(size[0]) + " " + std::to_string(size[1]) + " " + std::to_string(size[2]);
+}
+
+}  // namespace
+
+TEST_CASE("shared structs: C++ offsets, field types and sizes equal the GLSL std430 layout") {
+    test::glContext();
+    // The real storage blocks, every field read so that every member is active.
+    gl::Program probe = buildCompute(R"(#version 450 core
+#include "oit/abuffer_storage.glsl"
+#include "oit/buffers/entry.glsl"
+layout(local_size_x = 1) in;
+void main() {
+    nodes[0] = nodes[1];
+    entries[0] = entries[1];
+}
+)");
+    using gpu::FragmentEntry;
+    using gpu::FragmentNode;
+    checkLayout<FragmentNode>(probe.id(), "FragmentNodes",
+                              {FIELD(FragmentNode, next), FIELD(FragmentNode, depth), FIELD(FragmentNode, objectId),
+                               FIELD(FragmentNode, primitiveId), FIELD(FragmentNode, colorRG),
+                               FIELD(FragmentNode, colorBA)});
+    checkLayout<FragmentEntry>(probe.id(), "FragmentEntries",
+                               {FIELD(FragmentEntry, depth), FIELD(FragmentEntry, objectId),
+                                FIELD(FragmentEntry, primitiveId), FIELD(FragmentEntry, colorRG),
+                                FIELD(FragmentEntry, colorBA)});
+    gl::takeErrors();
+}
+
+TEST_CASE("every binding point the host binds is the one the linked program reports") {
+    test::glContext();
+    for (const ProgramCase& c : programCases()) {
+        std::string label;
+        for (const auto& s : c.stages) label += (label.empty() ? "" : " + ") + s;
+        for (const auto& [name, value] : c.defines) label += " -D" + name;
+        INFO(label);
+        gl::Program program = gl::buildProgram(c.stages, c.defines);
+        const auto reported = reportedBindings(program.id());
+        for (const auto& [name, want] : c.expected) {
+            INFO(name, ": the host binds ", unitName(want.unit), " ", want.point);
+            const auto it = reported.find(name);
+            if (it == reported.end()) {
+                FAIL_CHECK("the program does not use it");
+                continue;
+            }
+            CHECK(unitName(it->second.unit) == unitName(want.unit));
+            CHECK(it->second.point == want.point);
+        }
+        for (const auto& [name, got] : reported) {
+            INFO(name, " at ", unitName(got.unit), " ", got.point, " is used by the program but not bound by the host");
+            CHECK(c.expected.count(name) == 1);
+        }
+    }
+    gl::takeErrors();
+}
+
+TEST_CASE("compute group sizes equal the host's dispatch arithmetic") {
+    test::glContext();
+    const std::string resolve = std::to_string(gpu::RESOLVE_GROUP_SIZE);
+    CHECK(workGroupSize("oit/abuffer_resolve.comp.glsl") == resolve + " " + resolve + " 1");
+    // Each scan invocation takes two elements: the host's block is twice the group.
+    const std::string scan = std::to_string(buffers::PrefixSum::kBlock / 2) + " 1 1";
+    CHECK(workGroupSize("oit/buffers/prefix_scan.comp.glsl") == scan);
+    CHECK(workGroupSize("oit/buffers/prefix_add.comp.glsl") == scan);
+    gl::takeErrors();
+}
