@@ -3,106 +3,79 @@
 // atomics instead of a lock: a depth-key insertion pass (a chain of atomicMax, lock-free, cannot
 // hang), then an attribute pass in which each kept fragment claims its slot by atomicCompSwap;
 // see shaders/oit/buffers/kbuffer_store.frag.glsl. Then the shared sort-and-composite resolve.
+#include "oit/buffers/bounded_buffer.hpp"
 #include "oit/buffers/buffer_entries.hpp"
-#include "oit/buffers/buffer_support.hpp"
 
 #include "common/bindings.h"
-#include "gl/shader_program.hpp"
-#include "oit/draw_transparent.hpp"
 
 namespace strata {
 namespace {
 
 using namespace buffers;
 
-struct KBufferSettings {
-    int capacity = 8;
-    bool tail = false;
-    int tailPrecision = 32;
-    static const SettingsSchema<KBufferSettings>& schema() {
-        static const SettingsSchema<KBufferSettings> s{
-            integerSetting(&KBufferSettings::capacity, "capacity", 1, 64, SettingChange::Reallocate,
-                           "slots per pixel (K): the K nearest fragments are kept"),
-            tailSetting(&KBufferSettings::tail),
-            tailPrecisionSetting(&KBufferSettings::tailPrecision),
-        };
-        return s;
-    }
+struct KBufferCapacity {
+    // Bounded like the hardware k-buffer: each fragment walks the K slots in its insertion.
+    static constexpr int kMax = 64;
+    static constexpr const char* kHelp = "slots per pixel (K): the K nearest fragments are kept";
 };
 
-class KBuffer final : public TechniqueWithSettings<KBufferSettings> {
+class KBuffer final : public BoundedBuffer<KBufferCapacity> {
 public:
-    // Per entry: the 4-byte depth key and the 20-byte attributes.
+    using BoundedBuffer::BoundedBuffer;
+
+private:
+    // Per slot: the 4-byte depth key and the attributes.
     static constexpr std::uint64_t kBytesPerSlot = 4 + kEntryBytes;
 
-    using TechniqueWithSettings::TechniqueWithSettings;
+    Shaders shaders() const override {
+        return {"oit/buffers/kbuffer_store.frag.glsl",
+                {"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
+                {{"LAYOUT_KBUFFER", ""}}};
+    }
 
-    void render(const FrameContext& frame) override {
-        if (!storeProgram_.program) {
-            storeProgram_ = buildSceneProgram("oit/buffers/kbuffer_store.frag.glsl");
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
-                                               {{"LAYOUT_KBUFFER", ""}});
-        }
-        const auto k = std::uint64_t(settings_.capacity);
-        const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
-        const bool tail = settings_.tail;
-        tailTargets_.setPrecision(settings_.tailPrecision);
-        if (slots_ != pixels * k) {
-            gl::allocateBuffer(keys_, pixels * k * 4, GL_DYNAMIC_COPY, "kbuffer depth keys");
-            gl::allocateBuffer(entries_, pixels * k * kEntryBytes, GL_DYNAMIC_COPY, "kbuffer entries");
-            slots_ = pixels * k;
-        }
-        stats_ = {};
+    void allocate(const FrameContext& frame, int capacity) override {
+        const std::uint64_t slots = pixelCount(frame) * std::uint64_t(capacity);
+        if (slots_ == slots) return;
+        gl::allocateBuffer(keys_, slots * 4, GL_DYNAMIC_COPY, "kbuffer depth keys");
+        gl::allocateBuffer(entries_, slots * kEntryBytes, GL_DYNAMIC_COPY, "kbuffer entries");
+        slots_ = slots;
+    }
+
+    void clear() override {
         GLuint zero = 0, unclaimed = 0xFFFFFFFFu;
         glClearNamedBufferData(keys_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
         glClearNamedBufferData(entries_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &unclaimed);
-        counters_.reset();
-        counters_.bind();
+    }
+
+    void bindStorage() override {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_DEPTH_KEYS, keys_.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_ENTRIES, entries_.id());
-        setUniforms(storeProgram_.id(), frame);
-        const GLint passLocation = glGetUniformLocation(storeProgram_.id(), "uPass");
-        for (int p = 0; p < 2; ++p) {
-            gl::ScopedPass pass(frame.timer, p == 0 ? "kbuffer depth keys" : "kbuffer attributes");
-            // The tail is written in the attribute pass only, where a fragment knows it was not kept.
-            tailTargets_.bindForStore(frame, tail && p == 1, true);
-            setTransparentDepthState(frame);
-            glProgramUniform1i(storeProgram_.id(), passLocation, p);
-            stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
-            TailTargets::endStore();
-            storeBarrier();
-            ++stats_.passes;
-        }
-        {
-            gl::ScopedPass pass(frame.timer, "kbuffer resolve");
-            glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-            glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
-            tailTargets_.bindForResolve(frame, tail);
-            setUniforms(resolveProgram_.id(), frame);
-            glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uTail"), tail);
-            setDepthOrderUniforms(frame, resolveProgram_.id());
-            drawFullscreen(frame, resolveProgram_.id());
-            ++stats_.passes;
-        }
-        auto c = counters_.read();  // [0] inserted, [1] pushed past the K-th slot
-        stats_.fragmentsCaptured = c[0] - c[1];
-        stats_.overflowed = c[1] > 0;
-        (tail ? stats_.fragmentsTail : stats_.fragmentsDropped) = c[1];
-        stats_.bytes = pixels * k * kBytesPerSlot + kCounterBytes + tailTargets_.bytes(tail, frame.size);
     }
 
-private:
-    void setUniforms(GLuint program, const FrameContext& frame) const {
+    void setUniforms(GLuint program, const FrameContext& frame, int capacity) const override {
         glProgramUniform1ui(program, glGetUniformLocation(program, "uWidth"), GLuint(frame.size.x));
-        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(settings_.capacity));
+        glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity));
     }
 
-    SceneProgram storeProgram_;
-    gl::Program resolveProgram_;
+    int storePasses() const override { return 2; }
+    std::string storePassName(int pass) const override { return pass == 0 ? "kbuffer depth keys" : "kbuffer attributes"; }
+    void beginStorePass(int pass) override {
+        glProgramUniform1i(storeProgram_.id(), glGetUniformLocation(storeProgram_.id(), "uPass"), pass);
+    }
+    // The tail is written in the attribute pass only, where a fragment knows it was not kept.
+    bool storePassWritesTail(int pass) const override { return pass == 1; }
+
+    // [0] inserted, [1] pushed past the K-th slot.
+    StoreCounts counts(const std::array<std::uint32_t, 4>& c, const FrameContext&, int) const override {
+        return {c[0] - c[1], c[1]};
+    }
+
+    std::uint64_t storageBytes(const FrameContext& frame, int capacity) const override {
+        return pixelCount(frame) * std::uint64_t(capacity) * kBytesPerSlot + kCounterBytes;
+    }
+
     gl::Buffer keys_, entries_;
     std::uint64_t slots_ = 0;
-    Counters counters_;
-    TailTargets tailTargets_;
 };
 
 }  // namespace

@@ -1,0 +1,55 @@
+#include "oit/buffers/bounded_buffer.hpp"
+
+#include "common/bindings.h"
+
+namespace strata::buffers {
+
+std::string BoundedBufferFrame::storePassName(int /*pass*/) const { return id_ + " store"; }
+
+void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::string& id, const Bounds& bounds,
+                                     TechniqueStats& stats) {
+    id_ = id;
+    if (!storeProgram_.program) {
+        const Shaders s = shaders();
+        storeProgram_ = buildSceneProgram(s.store);
+        resolveProgram_ = gl::buildProgram(s.resolve, s.resolveDefines);
+    }
+    tailTargets_.setPrecision(bounds.tailPrecision);
+    allocate(frame, bounds.capacity);
+    stats = {};
+    clear();
+    counters_.reset();
+    counters_.bind();
+    bindStorage();
+    setUniforms(storeProgram_.id(), frame, bounds.capacity);
+    for (int p = 0; p < storePasses(); ++p) {
+        gl::ScopedPass pass(frame.timer, storePassName(p));
+        tailTargets_.bindForStore(frame, bounds.tail && storePassWritesTail(p), true);
+        setTransparentDepthState(frame);
+        beginStorePass(p);
+        stats.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+        TailTargets::endStore();
+        storeBarrier();
+        ++stats.passes;
+    }
+    {
+        gl::ScopedPass pass(frame.timer, id + " resolve");
+        const GLuint program = resolveProgram_.id();
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        bindStorage();
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        tailTargets_.bindForResolve(frame, bounds.tail);
+        setUniforms(program, frame, bounds.capacity);
+        glProgramUniform1i(program, glGetUniformLocation(program, "uTail"), bounds.tail);
+        setDepthOrderUniforms(frame, program);
+        drawFullscreen(frame, program);
+        ++stats.passes;
+    }
+    const StoreCounts c = counts(counters_.read(), frame, bounds.capacity);
+    stats.fragmentsCaptured = c.captured;
+    stats.overflowed = c.overflow > 0;
+    (bounds.tail ? stats.fragmentsTail : stats.fragmentsDropped) = c.overflow;
+    stats.bytes = storageBytes(frame, bounds.capacity) + tailTargets_.bytes(bounds.tail, frame.size);
+}
+
+}  // namespace strata::buffers
