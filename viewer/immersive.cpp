@@ -17,6 +17,7 @@ int runImmersive(const ViewOptions&, Scene) {
 #else
 
 #include "panel.hpp"
+#include "presenter.hpp"
 #include "window_capture.hpp"
 #include "window_session.hpp"
 
@@ -39,6 +40,7 @@ int runImmersive(const ViewOptions&, Scene) {
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -141,8 +143,6 @@ public:
         stereo_ = options.stereo;
         ipdMm_ = float(options.ipdMm);
         extraLatencyMs_ = float(options.extraLatencyMs);
-        present_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present_region.frag.glsl"});
-        emptyVertexArray_ = gl::VertexArray::create();
         history_.resize(tracking::predictorNames().size() * kDeflects.size());
     }
 
@@ -291,29 +291,9 @@ private:
     }
 
     void present(glm::ivec2 size, glm::ivec2 eyeSize, int eyes) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, size.x, size.y);
-        glDisable(GL_FRAMEBUFFER_SRGB);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_SCISSOR_TEST);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-        glClearNamedFramebufferfv(0, GL_COLOR, 0, black);
-        glUseProgram(present_.id());
-        glBindVertexArray(emptyVertexArray_.id());
-        const GLint originLocation = glGetUniformLocation(present_.id(), "uOrigin");
-        for (int e = 0; e < eyes; ++e) {
-            const glm::ivec2 origin(e * eyeSize.x, 0);
-            glViewport(origin.x, origin.y, eyeSize.x, eyeSize.y);
-            glProgramUniform2i(present_.id(), originLocation, origin.x, origin.y);
-            glBindTextureUnit(0, eyes_[e].warp.outputColor());
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
-        glViewport(0, 0, size.x, size.y);
-        glBindVertexArray(0);
-        glUseProgram(0);
+        std::array<PresentRegion, 2> regions;
+        for (int e = 0; e < eyes; ++e) regions[e] = {eyes_[e].warp.outputColor(), {e * eyeSize.x, 0}, eyeSize};
+        presenter_.present(size, std::span(regions.data(), std::size_t(eyes)));
     }
 
     void score(const std::vector<tracking::PoseSample>& first, const std::vector<tracking::PoseSample>& second,
@@ -380,8 +360,7 @@ private:
     Camera base_;
     glm::vec3 firstPosition_{0.0f};
     std::unique_ptr<Technique> technique_;
-    gl::Program present_;
-    gl::VertexArray emptyVertexArray_;
+    Presenter presenter_;
     std::array<Eye, 2> eyes_;
     FrameResult frame_;
     // Choices (the panel edits them).
@@ -511,16 +490,12 @@ int runImmersive(const ViewOptions& options, Scene scene) {
                 measured.size(), measured.back().t - measured.front().t, truthLabel.c_str());
     const glm::vec3 firstPosition = tracking::toGlm(measured.front().p);
 
-    GlfwLibrary glfw;
-    WindowPtr window = openWindow(options.width, options.height, "Strata immersive - " + options.scene);
-    glfwSwapInterval(1);
-    gl::installDebugCallback();
-    gl::requireCoreFeatures();
-    ImGuiSession imgui(window.get());
+    WindowSession session(options.width, options.height, "Strata immersive - " + options.scene);
     int status = 0;
     {
         // GL objects die before the context does.
-        Immersive immersive(options, std::move(scene), std::move(measured), std::move(truth), truthLabel, window.get());
+        Immersive immersive(options, std::move(scene), std::move(measured), std::move(truth), truthLabel,
+                            session.window());
         immersive.setFirstPosition(firstPosition);
         status = immersive.run();
     }

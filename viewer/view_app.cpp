@@ -6,6 +6,7 @@
 #include "camera_controls.hpp"
 #include "immersive.hpp"
 #include "panel.hpp"
+#include "presenter.hpp"
 #include "window_capture.hpp"
 #include "window_session.hpp"
 
@@ -54,7 +55,6 @@ public:
         techniqueSettings_ = options.settings;
         technique_ = createConfiguredTechnique(techniqueId_, techniqueSettings_);
         settings_.technique = technique_->settings();
-        present_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present.frag.glsl"});
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
             path_ = CameraPath::read(*options.playPath);
@@ -164,10 +164,9 @@ private:
     void reload() {
         try {
             auto next = createConfiguredTechnique(techniqueId_, techniqueSettings_);
-            gl::Program present = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present.frag.glsl"});
+            presenter_.reload();
             technique_ = std::move(next);
             renderer_ = std::make_unique<FrameRenderer>();
-            present_ = std::move(present);
             lastError_.clear();
             lastSaved_ = "shaders reloaded";
             std::printf("shaders reloaded\n");
@@ -248,20 +247,8 @@ private:
     }
 
     void present(glm::ivec2 size) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, size.x, size.y);
-        glDisable(GL_FRAMEBUFFER_SRGB);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_SCISSOR_TEST);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glUseProgram(present_.id());
-        glBindTextureUnit(0, renderer_->targets().outputColor());
-        glBindVertexArray(renderer_->targets().emptyVertexArray());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindVertexArray(0);
-        glUseProgram(0);
+        const PresentRegion output{renderer_->targets().outputColor(), {0, 0}, size};
+        presenter_.present(size, {&output, 1});
     }
 
     void drawImGui(const Camera& camera, glm::ivec2 size) {
@@ -351,7 +338,7 @@ private:
     std::unique_ptr<FrameRenderer> renderer_ = std::make_unique<FrameRenderer>();
     std::unique_ptr<Technique> technique_;
     std::string techniqueId_;
-    gl::Program present_;
+    Presenter presenter_;
     FrameResult frame_;
     FrameHistory history_;
     std::optional<FragmentCount> count_;
@@ -384,16 +371,11 @@ int runViewer(const ViewOptions& options) {
     Scene scene = openScene(options.scene);                          // bad input fails before a window opens
     if (options.immersive) return runImmersive(options, std::move(scene));  // viewer/immersive.cpp
 
-    GlfwLibrary glfw;
-    WindowPtr window = openWindow(options.width, options.height, "Strata - " + options.scene);
-    glfwSwapInterval(1);
-    gl::installDebugCallback();
-    gl::requireCoreFeatures();
-    ImGuiSession imgui(window.get());
+    WindowSession session(options.width, options.height, "Strata - " + options.scene);
     int status = 0;
     {
         // GL objects die before the context does.
-        Viewer viewer(options, std::move(scene), window.get());
+        Viewer viewer(options, std::move(scene), session.window());
         status = viewer.run();
     }
     std::fflush(stdout);
