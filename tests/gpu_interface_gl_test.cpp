@@ -235,7 +235,6 @@ std::vector<ProgramCase> programCases() {
         {{scene, "common/count_fragments.frag.glsl"}, {}, {{"uFragmentCount", kCounters}}},
         {{full, "frame/deflect.frag.glsl"}, {}, {{"uSource", tex(BIND_SOURCE)}, {"uOutside", kCounters}}},
         {{full, "frame/present.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
-        {{full, "frame/present_region.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
         {{scene, "oit/blend.frag.glsl"}, {}, {}},
         // abuffer
         {{scene, "oit/abuffer_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},

@@ -16,14 +16,16 @@
 // file exists, else the measured trace interpolated (then the error shows prediction only).
 // Side-by-side stereo: two eyes IPD apart along the head's right axis, each in half the window.
 #include "view_app.hpp"
+#include "window_loop.hpp"
 
 #include "scene/scene.hpp"
 
 namespace strata {
 
-// Opens the window and runs until it closes (or --exit-after-frames). Throws
-// std::runtime_error without --trace, on a malformed trace (file:line) and when the tracking
-// library was not built.
-int runImmersive(const ViewOptions& options, Scene scene);
+// Reads and checks the traces and the immersive choices, before any window opens, and returns what
+// makes the immersive mode of the window loop (viewer/window_loop.hpp) once the window exists.
+// Throws std::runtime_error without --trace, on a malformed trace (file:line), on an unknown
+// predictor or deflection, and when the tracking library was not built.
+WindowModeFactory immersiveMode(const ViewOptions& options, Scene scene);
 
 }  // namespace strata

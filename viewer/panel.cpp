@@ -1,6 +1,6 @@
 #include "panel.hpp"
 
-#include "gl/debug.hpp"
+#include "panel_widgets.hpp"
 #include "settings_panel.hpp"
 
 #include <imgui.h>
@@ -12,25 +12,6 @@
 #include <string>
 
 namespace strata {
-
-void FrameHistory::push(float gpuMs) {
-    values_[std::size_t(next_)] = gpuMs;
-    next_ = (next_ + 1) % kFrames;
-    count_ = std::min(count_ + 1, kFrames);
-}
-
-float FrameHistory::max() const {
-    float m = 0.0f;
-    for (int i = 0; i < count_; ++i) m = std::max(m, values_[std::size_t(i)]);
-    return m;
-}
-
-float FrameHistory::mean() const {
-    if (count_ == 0) return 0.0f;
-    double s = 0.0;
-    for (int i = 0; i < count_; ++i) s += values_[std::size_t(i)];
-    return float(s / count_);
-}
 
 namespace {
 
@@ -48,10 +29,6 @@ std::string techniqueLabel(const TechniqueInfo& info) {
     if (info.robust) label += ", robust";
     if (info.handlesCoplanarity) label += ", coplanarity";
     return label + "]";
-}
-
-void helpTooltip(const std::string& text) {
-    if (!text.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
 }
 
 void drawTechnique(const PanelState& state, PanelSettings& settings, PanelRequests& requests) {
@@ -131,7 +108,7 @@ void drawFragments(const PanelState& state, PanelSettings& settings) {
     ImVec4 ratioColour = ratio >= 1.0 ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f);
     ImGui::TextColored(ratioColour, "robustness ratio %.4f", ratio);
     ImGui::SameLine();
-    if (c.stats.overflowed) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "OVERFLOWED");
+    if (c.stats.overflowed) ImGui::TextColored(kErrorColour, "OVERFLOWED");
     else ImGui::TextUnformatted("no overflow");
     ImGui::Text("regrows %d   tiles %d", c.stats.regrows, c.stats.tiles);
 }
@@ -199,11 +176,7 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(state, requests);
     if (ImGui::Checkbox("vsync", &settings.vsync)) requests.vsyncChanged = true;
     ImGui::SameLine();
-    std::size_t errors = gl::errorCount();
-    if (errors) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "GL errors: %zu", errors);
-    else ImGui::Text("GL errors: 0");
-    if (!state.lastGlError.empty()) ImGui::TextWrapped("last GL error: %s", state.lastGlError.c_str());
-    if (!state.lastError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", state.lastError.c_str());
+    drawErrorLines(state.lastGlError, state.lastError);
     if (!state.lastSaved.empty()) ImGui::TextWrapped("%s", state.lastSaved.c_str());
     ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
     ImGui::End();

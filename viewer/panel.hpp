@@ -3,6 +3,8 @@
 // plot of recent frames, fragment counts and memory, GL errors, scene and camera state, and the
 // walkthrough keys. It reads a snapshot of the viewer's state and returns what the user asked
 // for; the viewer applies the requests between frames (never while the panel is drawing).
+#include "frame_history.hpp"
+
 #include "gl/context.hpp"
 #include "oit/technique.hpp"
 #include "frame/frame_renderer.hpp"
@@ -10,30 +12,11 @@
 
 #include <glm/glm.hpp>
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 
 namespace strata {
-
-// Total GPU ms of the last frames, oldest first when read through `ordered()`.
-class FrameHistory {
-public:
-    static constexpr int kFrames = 240;
-    void push(float gpuMs);
-    int count() const { return count_; }
-    // Values for ImGui::PlotLines: the ring buffer and the offset of its oldest entry.
-    const float* data() const { return values_.data(); }
-    int offset() const { return count_ < kFrames ? 0 : next_; }
-    float max() const;
-    float mean() const;
-
-private:
-    std::array<float, kFrames> values_{};
-    int next_ = 0;
-    int count_ = 0;
-};
 
 // The last frame on which every transparent fragment was counted.
 struct FragmentCount {
@@ -48,7 +31,7 @@ struct PanelState {
     Technique* technique = nullptr;            // null only when creation failed
     std::string techniqueId;
     const FrameResult* frame = nullptr;
-    const FrameHistory* history = nullptr;
+    const FrameHistory* history = nullptr;     // GPU ms
     std::optional<FragmentCount> count;
     std::uint64_t frameIndex = 0;
     glm::ivec2 size{0};

@@ -1,24 +1,20 @@
-// `strata view`: a GLFW window over the same frame pipeline the headless commands use. Each
-// frame renders the scene with the chosen technique at the framebuffer size, presents the linear
-// output sRGB-encoded, and draws the ImGui panel on top.
+// `strata view`: the walkthrough mode of the window loop (viewer/window_loop.hpp) over the same
+// frame pipeline the headless commands use. Each frame renders the scene with the chosen
+// technique at the framebuffer size, presents the linear output, and draws the panel on top.
 #include "view_app.hpp"
 
 #include "camera_controls.hpp"
 #include "immersive.hpp"
 #include "panel.hpp"
 #include "window_capture.hpp"
-#include "window_session.hpp"
+#include "window_loop.hpp"
 
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
-#include "gl/debug.hpp"
-#include "gl/shader_program.hpp"
 #include "frame/frame_renderer.hpp"
 #include "scene/scene_source.hpp"
 
 #include <imgui.h>
-#include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cmath>
 #include <cstdio>
@@ -44,9 +40,9 @@ std::string timestampedName(const char* prefix, const char* extension) {
     return name;
 }
 
-class Viewer {
+class WalkthroughMode final : public WindowMode {
 public:
-    Viewer(const ViewOptions& options, Scene scene, GLFWwindow* window)
+    WalkthroughMode(const ViewOptions& options, Scene scene, GLFWwindow* window)
         : options_(options), window_(window), scene_(std::move(scene)),
           controls_(defaultCamera(scene_.scene(), scene_.objects()), scene_.bounds()) {
         device_ = gl::currentDeviceInfo();
@@ -54,7 +50,6 @@ public:
         techniqueSettings_ = options.settings;
         technique_ = createConfiguredTechnique(techniqueId_, techniqueSettings_);
         settings_.technique = technique_->settings();
-        present_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present.frag.glsl"});
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
             path_ = CameraPath::read(*options.playPath);
@@ -63,50 +58,62 @@ public:
         baseCamera_ = defaultCamera(scene_.scene(), scene_.objects());
     }
 
-    int run() {
-        double last = glfwGetTime();
-        playOrigin_ = last;
-        while (!glfwWindowShouldClose(window_)) {
-            glfwPollEvents();
-            double now = glfwGetTime();
-            double dt = now - last;
-            last = now;
-            handleKeys();
-            applyRequests(now);
-            glm::ivec2 size;
-            glfwGetFramebufferSize(window_, &size.x, &size.y);
-            if (size.x <= 0 || size.y <= 0) {  // minimised
-                glfwWaitEvents();
-                continue;
-            }
-            Camera camera = updateCamera(now, dt);
-            if (recording_) recorded_.add(now - recordStart_, camera.position, camera.orientation);
-            renderFrame(camera, size);
-            present(size);
-            if (requests_.screenshot) saveOutput();
-            requests_ = {};
+    void start(double now) override { playOrigin_ = now; }
 
-            bool finalFrame = smokeTest() && frameIndex_ >= std::uint64_t(options_.exitAfterFrames);
-            WindowPixels scenePixels;
-            if (finalFrame && options_.screenshot) scenePixels = readWindow(size);
-            drawImGui(camera, size);
-            if (finalFrame) {
-                gl::checkGl("view: end of the last frame");
-                if (options_.screenshot) saveWindow(*options_.screenshot, scenePixels, size);
-                break;
-            }
-            glfwSwapBuffers(window_);
-        }
+    void update(double now, double dt, const CallbackInput& input) override {
+        handleKeys(input.pressed);
+        applyRequests(now);
+        camera_ = updateCamera(now, dt, input.scroll);
+        if (recording_) recorded_.add(now - recordStart_, camera_.position, camera_.orientation);
+    }
+
+    void render(glm::ivec2 size, Presenter& presenter) override {
+        if (requests_.reload) reload(presenter);
+        renderFrame(size);
+        const PresentRegion output{renderer_->targets().outputColor(), {0, 0}, size};
+        presenter.present(size, {&output, 1});
+        if (requests_.screenshot) saveOutput();
+        requests_ = {};
+    }
+
+    void drawPanel(glm::ivec2 size, const std::string& lastGlError) override {
+        PanelState state;
+        state.scene = &scene_;
+        state.device = &device_;
+        state.technique = technique_.get();
+        state.techniqueId = techniqueId_;
+        state.frame = &frame_;
+        state.history = &history_;
+        state.count = count_;
+        state.frameIndex = frameIndex_;
+        state.size = size;
+        state.navigation = playing_ ? "camera path" : controls_.modeName();
+        state.cameraPosition = camera_.position;
+        state.nearPlane = camera_.nearPlane;
+        state.farPlane = camera_.farPlane;
+        state.recording = recording_;
+        state.recordedSamples = recorded_.samples().size();
+        state.recordPath = recordPath_.string();
+        state.hasPath = !path_.empty();
+        state.playing = playing_;
+        state.pathTime = pathTime_;
+        state.pathDuration = path_.duration();
+        state.lastError = lastError_;
+        state.lastGlError = lastGlError;
+        state.lastSaved = lastSaved_;
+        strata::drawPanel(state, settings_, requests_);
+    }
+
+    void stop() override {
         if (recording_) stopRecording();
-        return 0;
     }
 
 private:
     bool smokeTest() const { return options_.exitAfterFrames > 0; }
 
-    void handleKeys() {
+    void handleKeys(const std::vector<int>& pressed) {
         ImGuiIO& io = ImGui::GetIO();
-        for (int key : callbackInput().pressed) {
+        for (int key : pressed) {
             bool typing = io.WantTextInput;
             switch (key) {
             case GLFW_KEY_F12: requests_.screenshot = true; break;
@@ -118,12 +125,10 @@ private:
             default: break;
             }
         }
-        callbackInput().pressed.clear();
     }
 
     void applyRequests(double now) {
         if (requests_.technique) switchTechnique(*requests_.technique);
-        if (requests_.reload) reload();
         if (requests_.toggleNavigation) controls_.toggleMode();
         if (requests_.vsyncChanged) glfwSwapInterval(settings_.vsync ? 1 : 0);
         if (requests_.toggleRecording) {
@@ -143,7 +148,7 @@ private:
                 playing_ = true;
             }
         }
-        // A screenshot waits until this frame is rendered; run() clears the requests then.
+        // A reload and a screenshot wait for render(), which clears the requests.
     }
 
     void switchTechnique(const std::string& id) {
@@ -159,15 +164,14 @@ private:
         }
     }
 
-    // F5: new technique and renderer, so every program is rebuilt from the files on disk; the
-    // technique keeps its settings.
-    void reload() {
+    // F5: new technique, renderer and present program, so every program is rebuilt from the
+    // files on disk; the technique keeps its settings. Nothing changes when one fails to build.
+    void reload(Presenter& presenter) {
         try {
             auto next = createConfiguredTechnique(techniqueId_, techniqueSettings_);
-            gl::Program present = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/present.frag.glsl"});
+            presenter.reload();
             technique_ = std::move(next);
             renderer_ = std::make_unique<FrameRenderer>();
-            present_ = std::move(present);
             lastError_.clear();
             lastSaved_ = "shaders reloaded";
             std::printf("shaders reloaded\n");
@@ -177,7 +181,7 @@ private:
         }
     }
 
-    Camera updateCamera(double now, double dt) {
+    Camera updateCamera(double now, double dt, float scroll) {
         ImGuiIO& io = ImGui::GetIO();
         NavigationInput input;
         input.dt = dt;
@@ -195,8 +199,7 @@ private:
         };
         if (dragging(GLFW_MOUSE_BUTTON_LEFT, dragLeft_)) input.dragOrbit = delta;
         if (dragging(GLFW_MOUSE_BUTTON_RIGHT, dragRight_)) input.dragLook = delta;
-        if (!io.WantCaptureMouse) input.scroll = callbackInput().scroll;
-        callbackInput().scroll = 0.0f;
+        if (!io.WantCaptureMouse) input.scroll = scroll;
         if (!io.WantCaptureKeyboard) {
             auto held = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS ? 1.0f : 0.0f; };
             input.move = {held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q),
@@ -219,7 +222,7 @@ private:
         return controls_.camera();
     }
 
-    void renderFrame(const Camera& camera, glm::ivec2 size) {
+    void renderFrame(glm::ivec2 size) {
         FrameOptions frameOptions;
         frameOptions.timePasses = true;
         frameOptions.countFragments =
@@ -231,7 +234,7 @@ private:
             techniqueSettings_[techniqueId_] = settings_.technique;
         }
         try {
-            frame_ = renderer_->render(scene_, camera, size, technique_.get(), frameOptions);
+            frame_ = renderer_->render(scene_, camera_, size, technique_.get(), frameOptions);
             if (frame_.fragmentsTotal) count_ = FragmentCount{frameIndex_, *frame_.fragmentsTotal, frame_.stats};
         } catch (const std::exception& e) {
             if (smokeTest()) throw;
@@ -240,62 +243,6 @@ private:
         }
         history_.push(float(frame_.gpuMs));
         ++frameIndex_;
-        auto errors = gl::takeErrors();
-        if (!errors.empty()) {
-            if (smokeTest()) throw std::runtime_error("view: GL error while rendering: " + errors.front());
-            lastGlError_ = errors.back();
-        }
-    }
-
-    void present(glm::ivec2 size) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glViewport(0, 0, size.x, size.y);
-        glDisable(GL_FRAMEBUFFER_SRGB);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_BLEND);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_SCISSOR_TEST);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glUseProgram(present_.id());
-        glBindTextureUnit(0, renderer_->targets().outputColor());
-        glBindVertexArray(renderer_->targets().emptyVertexArray());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glBindVertexArray(0);
-        glUseProgram(0);
-    }
-
-    void drawImGui(const Camera& camera, glm::ivec2 size) {
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        PanelState state;
-        state.scene = &scene_;
-        state.device = &device_;
-        state.technique = technique_.get();
-        state.techniqueId = techniqueId_;
-        state.frame = &frame_;
-        state.history = &history_;
-        state.count = count_;
-        state.frameIndex = frameIndex_;
-        state.size = size;
-        state.navigation = playing_ ? "camera path" : controls_.modeName();
-        state.cameraPosition = camera.position;
-        state.nearPlane = camera.nearPlane;
-        state.farPlane = camera.farPlane;
-        state.recording = recording_;
-        state.recordedSamples = recorded_.samples().size();
-        state.recordPath = recordPath_.string();
-        state.hasPath = !path_.empty();
-        state.playing = playing_;
-        state.pathTime = pathTime_;
-        state.pathDuration = path_.duration();
-        state.lastError = lastError_;
-        state.lastGlError = lastGlError_;
-        state.lastSaved = lastSaved_;
-        drawPanel(state, settings_, requests_);
-        ImGui::Render();
-        glViewport(0, 0, size.x, size.y);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
 
     // F12/P: the final output (linear RGB, sRGB-encoded PNG), without the panel.
@@ -309,15 +256,6 @@ private:
         } catch (const std::exception& e) {
             reportError(e.what());
         }
-    }
-
-    // --screenshot with --exit-after-frames: the whole window as shown, panel included.
-    void saveWindow(const std::filesystem::path& path, const WindowPixels& scene, glm::ivec2 size) {
-        WindowPixels window = readWindow(size);
-        writeWindowPng(path, window);
-        std::printf("screenshot: %s %dx%d distinct_colors=%zu scene_colors=%zu panel_pixels=%zu\n",
-                    path.string().c_str(), window.width, window.height, distinctColors(window),
-                    distinctColors(scene), changedPixels(scene, window));
     }
 
     void stopRecording() {
@@ -351,7 +289,7 @@ private:
     std::unique_ptr<FrameRenderer> renderer_ = std::make_unique<FrameRenderer>();
     std::unique_ptr<Technique> technique_;
     std::string techniqueId_;
-    gl::Program present_;
+    Camera camera_;  // this frame's, from update()
     FrameResult frame_;
     FrameHistory history_;
     std::optional<FragmentCount> count_;
@@ -370,8 +308,14 @@ private:
     double recordStart_ = 0.0;
     std::filesystem::path recordPath_;
     // Messages for the panel.
-    std::string lastError_, lastGlError_, lastSaved_;
+    std::string lastError_, lastSaved_;
 };
+
+WindowModeFactory walkthroughMode(const ViewOptions& options, Scene scene) {
+    return [&options, scene = std::move(scene)](GLFWwindow* window) mutable {
+        return std::make_unique<WalkthroughMode>(options, std::move(scene), window);
+    };
+}
 
 }  // namespace
 
@@ -382,22 +326,16 @@ int runViewer(const ViewOptions& options) {
                                  std::to_string(options.height) + " is not positive");
     if (!findTechnique(options.mode)) createTechnique(options.mode);  // throws, listing the known ids
     Scene scene = openScene(options.scene);                          // bad input fails before a window opens
-    if (options.immersive) return runImmersive(options, std::move(scene));  // viewer/immersive.cpp
-
-    GlfwLibrary glfw;
-    WindowPtr window = openWindow(options.width, options.height, "Strata - " + options.scene);
-    glfwSwapInterval(1);
-    gl::installDebugCallback();
-    gl::requireCoreFeatures();
-    ImGuiSession imgui(window.get());
-    int status = 0;
-    {
-        // GL objects die before the context does.
-        Viewer viewer(options, std::move(scene), window.get());
-        status = viewer.run();
-    }
-    std::fflush(stdout);
-    return status;
+    const bool immersive = options.immersive;
+    WindowModeFactory makeMode = immersive ? immersiveMode(options, std::move(scene))  // viewer/immersive.cpp
+                                           : walkthroughMode(options, std::move(scene));
+    WindowLoopOptions loop{.width = options.width,
+                           .height = options.height,
+                           .title = (immersive ? "Strata immersive - " : "Strata - ") + options.scene,
+                           .name = immersive ? "view --immersive" : "view",
+                           .exitAfterFrames = options.exitAfterFrames,
+                           .screenshot = options.screenshot};
+    return runWindowLoop(loop, makeMode);
 }
 
 bool displayAvailable() { return glfwUsable(); }

@@ -30,7 +30,9 @@ struct ViewOptions {
     int width = 1280, height = 800;
 };
 
-// Runs until the window closes. Throws std::runtime_error when no window can be opened.
+// Runs the window loop (viewer/window_loop.hpp) in the walkthrough mode, or with `immersive` in
+// the head-tracked mode (viewer/immersive.hpp), until the window closes or the smoke test is
+// done. Bad input throws before a window opens; so does a missing window (std::runtime_error).
 int runViewer(const ViewOptions& options);
 
 // True when a display is reachable (DISPLAY or WAYLAND_DISPLAY set and GLFW initialises).

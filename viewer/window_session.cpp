@@ -1,5 +1,8 @@
 #include "window_session.hpp"
 
+#include "gl/context.hpp"
+#include "gl/debug.hpp"
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -60,6 +63,9 @@ WindowPtr openWindow(int width, int height, const std::string& title) {
     if (!window)
         throw std::runtime_error("view: cannot create a window with an OpenGL 4.5 core context: " + g_glfwError);
     glfwMakeContextCurrent(window.get());
+    glfwSwapInterval(1);
+    gl::installDebugCallback();
+    gl::requireCoreFeatures();
     glfwSetScrollCallback(window.get(), onScroll);
     glfwSetKeyCallback(window.get(), onKey);
     return window;
