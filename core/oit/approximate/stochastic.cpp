@@ -42,7 +42,8 @@ public:
         if (!depthProgram_.program) {
             depthProgram_ = buildSceneProgram("oit/approximate/stochastic_depth.frag.glsl");
             accumulateProgram_ = buildSceneProgram("oit/approximate/stochastic_accumulate.frag.glsl");
-            compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/approximate/stochastic_composite.frag.glsl"});
+            compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/approximate/accumulation_composite.frag.glsl"},
+                                                {{"ALPHA_CORRECTED", ""}});
             query_ = gl::createQuery(GL_SAMPLES_PASSED);
         }
         const int samples = settings_.samples;

@@ -45,7 +45,8 @@ public:
     void render(const FrameContext& frame) override {
         if (!accumulateProgram_.program) {
             accumulateProgram_ = buildSceneProgram("oit/approximate/wboit_accumulate.frag.glsl");
-            compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/approximate/wboit_composite.frag.glsl"});
+            compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/approximate/accumulation_composite.frag.glsl"},
+                                                {{"WEIGHTED_AVERAGE", ""}});
             samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         }
         stats_ = {};

@@ -60,7 +60,7 @@ private:
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         peelProgram_ = buildSceneProgram("oit/peeling/dual_peel.frag.glsl");
         blendProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_blend.frag.glsl"});
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_composite.frag.glsl"});
+        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"}, {{"DUAL", ""}});
         frontLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
         backLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
         interiorLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);

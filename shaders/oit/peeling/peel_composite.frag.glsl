@@ -1,15 +1,23 @@
 #version 450 core
-// Final composite of front-to-back peeling: accumulated colour plus transmittance times the
-// opaque colour.
+// Final composite of depth peeling: the front accumulation (premultiplied colour, transmittance),
+// then with DUAL the back accumulation behind it, then the opaque colour.
 #include "bindings.h"
 #include "peel_bindings.h"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_PEEL_ACCUM) uniform sampler2D uAccum;
+#ifdef DUAL
+layout(binding = BIND_PEEL_BACK_ACCUM) uniform sampler2D uBackAccum;
+#endif
 layout(location = 0) out vec4 outColor;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec4 accum = texelFetch(uAccum, pixel, 0);
-    outColor = vec4(accum.rgb + accum.a * texelFetch(uOpaqueColor, pixel, 0).rgb, 1.0);
+    vec4 front = texelFetch(uAccum, pixel, 0);
+    vec3 behind = texelFetch(uOpaqueColor, pixel, 0).rgb;
+#ifdef DUAL
+    vec4 back = texelFetch(uBackAccum, pixel, 0);
+    behind = back.rgb + back.a * behind;
+#endif
+    outColor = vec4(front.rgb + front.a * behind, 1.0);
 }
