@@ -9,7 +9,7 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
 #include "oit/scratch_target.hpp"
-#include "oit/technique_families.hpp"
+#include "oit/technique.hpp"
 
 
 namespace strata {
@@ -68,6 +68,8 @@ private:
     ScratchTarget scratch_;
 };
 
+}  // namespace
+
 TechniqueEntry blendUnsortedEntry() {
     TechniqueInfo info{"blend-unsorted", "baseline", false, false, "1",
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
@@ -81,9 +83,5 @@ TechniqueEntry blendSortedEntry() {
                        "alpha blending with objects sorted back to front by bounds centre"};
     return techniqueEntry<BlendTechnique>(info, true);
 }
-
-}  // namespace
-
-std::vector<TechniqueEntry> baselineEntries() { return {blendUnsortedEntry(), blendSortedEntry()}; }
 
 }  // namespace strata

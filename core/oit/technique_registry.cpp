@@ -1,26 +1,20 @@
-#include "oit/abuffer.hpp"
 #include "oit/technique.hpp"
-#include "oit/technique_families.hpp"
 
 #include <stdexcept>
 
 namespace strata {
 
+#define STRATA_TECHNIQUE(entry) TechniqueEntry entry();
+#include "oit/technique_list.inc"
+#undef STRATA_TECHNIQUE
+
 const std::vector<TechniqueEntry>& techniqueRegistry() {
-    // Explicit list (not static self-registration, which a static library's linker drops).
-    // Each family adds one line here (see technique_families.hpp).
-    static const std::vector<TechniqueEntry> registry = [] {
-        std::vector<TechniqueEntry> all;
-        auto add = [&all](std::vector<TechniqueEntry> family) {
-            for (auto& e : family) all.push_back(std::move(e));
-        };
-        add(baselineEntries());
-        add(peelingEntries());
-        add({abufferEntry()});
-        add(bufferEntries());
-        add(approximateEntries());
-        return all;
-    }();
+    // An explicit list (not static self-registration, which a static library's linker drops).
+    static const std::vector<TechniqueEntry> registry = {
+#define STRATA_TECHNIQUE(entry) entry(),
+#include "oit/technique_list.inc"
+#undef STRATA_TECHNIQUE
+    };
     return registry;
 }
 

@@ -15,7 +15,7 @@
 //
 // Its image is the opaque image (the output is left as the frame renderer copied it): the
 // floor composites nothing, and its error columns are those of ignoring transparency.
-#include "oit/approximate/approximate_entries.hpp"
+#include "oit/technique.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/scratch_target.hpp"
 
@@ -58,12 +58,15 @@ private:
 };
 
 }  // namespace
+}  // namespace strata::approximate
+
+namespace strata {
 
 TechniqueEntry floorEntry() {
     TechniqueInfo info{"floor", "floor", false, false, "1", "w*h*1 (R8 scratch colour, never read)",
                        "lower bound, not OIT: every fragment rasterized and shaded once into an R8 scratch "
                        "target, no blending; its image is the opaque image"};
-    return techniqueEntry<Floor>(info);
+    return techniqueEntry<approximate::Floor>(info);
 }
 
-}  // namespace strata::approximate
+}  // namespace strata

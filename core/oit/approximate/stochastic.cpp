@@ -14,7 +14,7 @@
 #include "common/bindings.h"
 #include "oit/approximate/accumulation_targets.hpp"
 #include "oit/approximate/approximate_bindings.h"
-#include "oit/approximate/approximate_entries.hpp"
+#include "oit/technique.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
 
@@ -102,11 +102,14 @@ private:
 };
 
 }  // namespace
+}  // namespace strata::approximate
+
+namespace strata {
 
 TechniqueEntry stochasticEntry() {
     TechniqueInfo info{"stochastic", "approximate", false, false, "3", "w*h*(S*4 + 20)",
                        "stochastic transparency (Enderton 2010), S virtual samples, alpha-corrected"};
-    return techniqueEntry<Stochastic>(info);
+    return techniqueEntry<approximate::Stochastic>(info);
 }
 
-}  // namespace strata::approximate
+}  // namespace strata

@@ -16,7 +16,7 @@
 // 1.5e-3 of it at 0.25).
 #include "common/bindings.h"
 #include "oit/approximate/accumulation_targets.hpp"
-#include "oit/approximate/approximate_entries.hpp"
+#include "oit/technique.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
 
@@ -88,11 +88,14 @@ private:
 };
 
 }  // namespace
+}  // namespace strata::approximate
+
+namespace strata {
 
 TechniqueEntry wboitEntry() {
     TechniqueInfo info{"wboit", "approximate", false, false, "2", "w*h*10 at precision=16 (RGBA16F accumulation + R16F revealage); w*h*20 at 32 (RGBA32F + R32F)",
                        "weighted blended OIT (McGuire-Bavoil 2013): depth-weighted average colour, exact coverage"};
-    return techniqueEntry<Wboit>(info);
+    return techniqueEntry<approximate::Wboit>(info);
 }
 
-}  // namespace strata::approximate
+}  // namespace strata

@@ -1,7 +1,7 @@
 // FAB: fixed-size per-pixel arrays (FreePipe's A-buffer in OpenGL). One geometry pass stores
 // up to K fragments per pixel; a full-screen pass sorts and composites them.
 #include "oit/buffers/bounded_buffer.hpp"
-#include "oit/buffers/buffer_entries.hpp"
+#include "oit/technique.hpp"
 
 #include "common/bindings.h"
 

@@ -4,7 +4,7 @@
 // hang), then an attribute pass in which each kept fragment claims its slot by atomicCompSwap;
 // see shaders/oit/buffers/kbuffer_store.frag.glsl. Then the shared sort-and-composite resolve.
 #include "oit/buffers/bounded_buffer.hpp"
-#include "oit/buffers/buffer_entries.hpp"
+#include "oit/technique.hpp"
 
 #include "common/bindings.h"
 

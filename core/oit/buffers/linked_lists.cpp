@@ -2,7 +2,7 @@
 // abuffer reference, but the pool is a setting (average nodes per pixel) and never grows:
 // what does not fit is counted and dropped, or blended approximately with tail=1.
 #include "oit/buffers/bounded_buffer.hpp"
-#include "oit/buffers/buffer_entries.hpp"
+#include "oit/technique.hpp"
 
 #include "common/bindings.h"
 

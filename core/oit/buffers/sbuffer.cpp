@@ -4,7 +4,7 @@
 // the store and resolve run in bands of rows, each within one block (the count and the scan
 // still run once): robust at any depth complexity, like the A-buffer's tiles. Only a single row
 // holding more fragments than a block could lose fragments, and those are counted as dropped.
-#include "oit/buffers/buffer_entries.hpp"
+#include "oit/technique.hpp"
 #include "oit/buffers/buffer_support.hpp"
 #include "oit/buffers/prefix_sum.hpp"
 

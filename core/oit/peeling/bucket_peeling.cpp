@@ -9,7 +9,7 @@
 // A bucket holding more than two fragments loses the ones between its extremes; coincident
 // fragments race for one slot. Both are counted: captured is what the composite used,
 // dropped = total (counted in pass 2) - captured.
-#include "oit/peeling/bucket_peeling.hpp"
+#include "oit/technique.hpp"
 
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
@@ -238,13 +238,16 @@ private:
 };
 
 }  // namespace
+}  // namespace strata::peeling
+
+namespace strata {
 
 TechniqueEntry bunEntry() {
     TechniqueInfo info{"bun", "peeling", false, false, "4 (range + capture + colour + composite)",
                        "w*h*(8 + 16*ceil(B/2) + 16*B) B at precision=16: range, bucket depths, two RGBA16F colours "
                        "per bucket; w*h*(8 + 16*ceil(B/2) + 32*B) B at 32 (RGBA32F colours)",
                        "uniform bucket peeling: B depth buckets keep their nearest and farthest fragment in one pass"};
-    return techniqueEntry<BucketPeeling>(info);
+    return techniqueEntry<peeling::BucketPeeling>(info);
 }
 
-}  // namespace strata::peeling
+}  // namespace strata

@@ -6,7 +6,7 @@
 // the back layer over the back accumulation. ceil(D/2) peel passes: the peel pass counts the
 // fragments strictly inside the range, and when there are none the next pass is not issued.
 // Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
-#include "oit/peeling/dual_peeling.hpp"
+#include "oit/technique.hpp"
 
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
@@ -200,13 +200,16 @@ private:
 };
 
 }  // namespace
+}  // namespace strata::peeling
+
+namespace strata {
 
 TechniqueEntry dualEntry() {
     TechniqueInfo info{"dual", "peeling", true, false, "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many blends + composite)",
                        "w*h*48 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
                        "(8 each); w*h*80 B at 32 (RGBA32F, 16 each); Table 1: 6 words",
                        "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
-    return techniqueEntry<DualPeeling>(info);
+    return techniqueEntry<peeling::DualPeeling>(info);
 }
 
-}  // namespace strata::peeling
+}  // namespace strata

@@ -10,7 +10,7 @@
 // lies behind this layer and no further pass is issued, so D layers cost exactly D peels; a
 // pass that finds nothing (only coincident leftovers, which a strict test never peels) stops
 // it too. max_passes bounds the loop; hitting it is reported as an overflow.
-#include "oit/peeling/front_to_back.hpp"
+#include "oit/technique.hpp"
 
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
@@ -220,13 +220,16 @@ private:
 };
 
 }  // namespace
+}  // namespace strata::peeling
+
+namespace strata {
 
 TechniqueEntry f2bEntry() {
     TechniqueInfo info{"f2b", "peeling", true, false, "2D+1 (D peels + D layer blends + composite)",
                        "w*h*24 B at precision=16: 2 depth (4) + layer and accumulation RGBA16F (8 each); "
                        "w*h*40 B at 32 (RGBA32F, 16 each); Table 1: 3 words",
                        "front-to-back depth peeling, one layer per pass, strict depth test; skips peeled objects"};
-    return techniqueEntry<FrontToBack>(info, false);
+    return techniqueEntry<peeling::FrontToBack>(info, false);
 }
 
 TechniqueEntry f2b2Entry() {
@@ -234,7 +237,7 @@ TechniqueEntry f2b2Entry() {
                        "w*h*24 B at precision=16: 2 depth-stencil (8) + accumulation RGBA16F (8); w*h*32 B at 32 "
                        "(RGBA32F accumulation, 16)",
                        "front-to-back peeling with a depth-only pre-pass and early-z GL_EQUAL shading per layer"};
-    return techniqueEntry<FrontToBack>(info, true);
+    return techniqueEntry<peeling::FrontToBack>(info, true);
 }
 
-}  // namespace strata::peeling
+}  // namespace strata

@@ -1,8 +1,0 @@
-#include "oit/buffers/buffer_entries.hpp"
-#include "oit/technique_families.hpp"
-
-namespace strata {
-
-std::vector<TechniqueEntry> bufferEntries() { return {kbufferEntry(), fabEntry(), llEntry(), sbufferEntry()}; }
-
-}  // namespace strata
