@@ -4,6 +4,27 @@
 
 namespace strata::buffers {
 
+void PixelImage::ensure(glm::ivec2 size) {
+    if (size == size_) return;
+    texture_ = gl::createTexture2D(GL_R32UI, size.x, size.y);
+    size_ = size;
+}
+
+void PixelImage::clear() const {
+    GLuint zero = 0;
+    glClearTexImage(texture_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+void PixelImage::bind(unsigned unit) const {
+    glBindImageTexture(unit, texture_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+}
+
+void SizedBuffer::ensure(std::uint64_t count, std::uint64_t elementBytes, const char* label) {
+    if (count == count_) return;
+    gl::allocateBuffer(buffer_, count * elementBytes, GL_DYNAMIC_COPY, label);
+    count_ = count;
+}
+
 std::string BoundedBufferFrame::storePassName(int /*pass*/) const { return id_ + " store"; }
 
 void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::string& id, const Bounds& bounds,

@@ -36,6 +36,30 @@ struct BoundedSettings {
     }
 };
 
+// A per-pixel r32ui image (fab's counts, ll's heads), reallocated with the frame's size,
+// cleared to zero before each store.
+class PixelImage {
+public:
+    void ensure(glm::ivec2 size);
+    void clear() const;
+    void bind(unsigned unit) const;  // read-write image unit
+
+private:
+    gl::Texture texture_;
+    glm::ivec2 size_{0, 0};
+};
+
+// A storage buffer of `count` elements of `elementBytes`, reallocated when the count changes.
+class SizedBuffer {
+public:
+    void ensure(std::uint64_t count, std::uint64_t elementBytes, const char* label);
+    GLuint id() const { return buffer_.id(); }
+
+private:
+    gl::Buffer buffer_;
+    std::uint64_t count_ = 0;
+};
+
 // What the store passes kept and what did not fit, read from the counters.
 struct StoreCounts {
     std::uint64_t captured = 0;

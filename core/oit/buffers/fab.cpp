@@ -27,24 +27,14 @@ private:
     }
 
     void allocate(const FrameContext& frame, int capacity) override {
-        if (frame.size != countsSize_) {
-            counts_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
-            countsSize_ = frame.size;
-        }
-        const std::uint64_t entries = pixelCount(frame) * std::uint64_t(capacity);
-        if (entriesSize_ != entries) {
-            gl::allocateBuffer(entries_, entries * kEntryBytes, GL_DYNAMIC_COPY, "fab entries");
-            entriesSize_ = entries;
-        }
+        counts_.ensure(frame.size);
+        entries_.ensure(pixelCount(frame) * std::uint64_t(capacity), kEntryBytes, "fab entries");
     }
 
-    void clear() override {
-        GLuint zero = 0;
-        glClearTexImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    }
+    void clear() override { counts_.clear(); }
 
     void bindStorage() override {
-        glBindImageTexture(gpu::BIND_PIXEL_COUNTS, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        counts_.bind(gpu::BIND_PIXEL_COUNTS);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_ENTRIES, entries_.id());
     }
 
@@ -63,10 +53,8 @@ private:
         return pixelCount(frame) * (std::uint64_t(capacity) * kEntryBytes + 4) + kCounterBytes;
     }
 
-    gl::Texture counts_;
-    glm::ivec2 countsSize_{0, 0};
-    gl::Buffer entries_;
-    std::uint64_t entriesSize_ = 0;
+    PixelImage counts_;
+    SizedBuffer entries_;
 };
 
 }  // namespace

@@ -35,10 +35,8 @@ private:
 
     void allocate(const FrameContext& frame, int capacity) override {
         const std::uint64_t slots = pixelCount(frame) * std::uint64_t(capacity);
-        if (slots_ == slots) return;
-        gl::allocateBuffer(keys_, slots * 4, GL_DYNAMIC_COPY, "kbuffer depth keys");
-        gl::allocateBuffer(entries_, slots * kEntryBytes, GL_DYNAMIC_COPY, "kbuffer entries");
-        slots_ = slots;
+        keys_.ensure(slots, 4, "kbuffer depth keys");
+        entries_.ensure(slots, kEntryBytes, "kbuffer entries");
     }
 
     void clear() override {
@@ -74,8 +72,7 @@ private:
         return pixelCount(frame) * std::uint64_t(capacity) * kBytesPerSlot + kCounterBytes;
     }
 
-    gl::Buffer keys_, entries_;
-    std::uint64_t slots_ = 0;
+    SizedBuffer keys_, entries_;
 };
 
 }  // namespace

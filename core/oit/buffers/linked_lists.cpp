@@ -37,23 +37,14 @@ private:
         const std::uint64_t pool = poolNodes(frame, capacity);
         if (pool > 0xFFFFFFFEull)
             throw std::runtime_error("ll: node pool of " + std::to_string(pool) + " nodes exceeds 32-bit indices");
-        if (frame.size != headsSize_) {
-            heads_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
-            headsSize_ = frame.size;
-        }
-        if (allocatedNodes_ != pool) {
-            gl::allocateBuffer(nodes_, pool * kNodeBytes, GL_DYNAMIC_COPY, "ll node pool");
-            allocatedNodes_ = pool;
-        }
+        heads_.ensure(frame.size);
+        nodes_.ensure(pool, kNodeBytes, "ll node pool");
     }
 
-    void clear() override {
-        GLuint zero = 0;
-        glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    }
+    void clear() override { heads_.clear(); }
 
     void bindStorage() override {
-        glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+        heads_.bind(gpu::BIND_HEADS);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
     }
 
@@ -72,10 +63,8 @@ private:
         return poolNodes(frame, capacity) * kNodeBytes + pixelCount(frame) * 4 + kCounterBytes;
     }
 
-    gl::Texture heads_;
-    glm::ivec2 headsSize_{0, 0};
-    gl::Buffer nodes_;
-    std::uint64_t allocatedNodes_ = 0;
+    PixelImage heads_;
+    SizedBuffer nodes_;
 };
 
 }  // namespace
