@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# The command line's contract: bad input gives one line on stderr naming the input, a non-zero
-# exit and no output file; good input writes what it says. Usage: cli_test.sh STRATA_BINARY
+# The command line's contract: bad input, of any kind (a bad file, a bad value, an output that
+# cannot be written), gives exactly one line on stderr naming the input, exit status 1, and
+# leaves the output folder as it was: no output file and no temporary of any kind. Good input
+# writes what it says. Usage: cli_test.sh STRATA_BINARY
 set -uo pipefail
 strata=$1
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
+work=$tmp/work      # every output of every command goes here
+mkdir -p "$work/a-folder"
 passed=0
 failed=0
 models=/usr/share/assimp/models/glTF2
@@ -14,52 +18,84 @@ shared=$(cd "$(dirname "$0")/../.." && pwd)/shared/scenes-data
 ok() { passed=$((passed + 1)); }
 bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
 
-# expect_error "what stderr must contain" ARGS... (the output file $tmp/out.png must not appear)
+snapshot() { (cd "$work" && find . | sort); }
+
+# expect_error "what stderr must contain" ARGS...
 expect_error() {
   local want=$1; shift
-  rm -f "$tmp/out.png"
+  local before
+  before=$(snapshot)
   "$strata" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
   local rc=$?
   local lines
   lines=$(wc -l <"$tmp/stderr")
-  if [ $rc -eq 0 ]; then bad "exit 0 for: $*"; return; fi
   if [ $rc -ge 128 ]; then bad "crashed (status $rc) for: $*"; return; fi
+  if [ $rc -ne 1 ]; then bad "status $rc, not 1, for: $* -> $(cat "$tmp/stderr")"; return; fi
   if [ "$lines" -ne 1 ]; then bad "$lines lines on stderr for: $* -> $(cat "$tmp/stderr")"; return; fi
   if ! grep -qF -- "$want" "$tmp/stderr"; then bad "stderr lacks '$want' for: $* -> $(cat "$tmp/stderr")"; return; fi
-  if [ -e "$tmp/out.png" ] || ls "$tmp"/*.partial* >/dev/null 2>&1; then bad "output written for: $*"; return; fi
+  if [ "$(snapshot)" != "$before" ]; then
+    bad "files left behind for: $* -> $(diff <(echo "$before") <(snapshot) | grep '^>' | tr '\n' ' ')"; return
+  fi
   ok
 }
 
-expect_error "no such file" render "$tmp/missing.glb" --out "$tmp/out.png"
-expect_error "unknown builtin scene" render builtin:nothing --out "$tmp/out.png"
-expect_error "must be an integer" render builtin:layers:x --out "$tmp/out.png"
-expect_error "unknown technique 'nope'" render builtin:layers:2 --mode nope --out "$tmp/out.png"
-expect_error "has no parameter 'foo'" render builtin:layers:2 --set foo=1 --out "$tmp/out.png"
-expect_error "is not WxH" render builtin:layers:2 --size 12 --out "$tmp/out.png"
-expect_error "unsupported image type" render builtin:layers:2 --out "$tmp/out.jpg"
-expect_error "does not exist" render builtin:layers:2 --out "$tmp/no/such/folder/out.png"
+# Bad input files and values.
+expect_error "no such file" render "$tmp/missing.glb" --out "$work/out.png"
+expect_error "unknown builtin scene" render builtin:nothing --out "$work/out.png"
+expect_error "must be an integer" render builtin:layers:x --out "$work/out.png"
+expect_error "unknown technique 'nope'" render builtin:layers:2 --mode nope --out "$work/out.png"
+expect_error "has no parameter 'foo'" render builtin:layers:2 --set foo=1 --out "$work/out.png"
+expect_error "is not WxH" render builtin:layers:2 --size 12 --out "$work/out.png"
+expect_error "unsupported image type" render builtin:layers:2 --out "$work/out.jpg"
 printf '0 0 0 0 0 0 0 1\n1 0 0\n' >"$tmp/path.txt"
-expect_error "path.txt:2: expected 8 numbers" render builtin:layers:2 --camera-path "$tmp/path.txt" --out "$tmp/out.png"
-expect_error "unknown technique" bench builtin:layers:2 --modes abuffer,nope --json "$tmp/out.png"
+expect_error "path.txt:2: expected 8 numbers" render builtin:layers:2 --camera-path "$tmp/path.txt" --out "$work/out.png"
+expect_error "unknown technique" bench builtin:layers:2 --modes abuffer,nope --json "$work/out.json"
+
+# Outputs that cannot be written: refused before the work, nothing left behind.
+expect_error "a-folder: is a folder" render builtin:layers:2 --size 8x8 --out "$work/a-folder"
+expect_error "a-folder: is a folder" render builtin:layers:2 --size 8x8 --out "$work/ok.png" --heatmap "$work/a-folder"
+expect_error "does not exist" render builtin:layers:2 --out "$work/no/such/folder/out.png"
+expect_error "a-folder: is a folder" bench builtin:layers:2 --size 8x8 --frames 1 --json "$work/a-folder"
+expect_error "does not exist" bench builtin:layers:2 --size 8x8 --frames 1 --csv "$work/missing/b.csv"
+if [ "$(id -u)" -ne 0 ]; then  # root writes into read-only folders
+  mkdir -p "$work/locked" && chmod a-w "$work/locked"
+  expect_error "cannot write in" render builtin:layers:2 --size 8x8 --out "$work/locked/out.png"
+  chmod u+w "$work/locked" && rmdir "$work/locked"
+fi
+# A write that fails half-way (the file-size limit makes the write itself fail, after the
+# temporary was created): the temporary is removed and nothing else appears.
+expect_file_too_large() {
+  (trap '' XFSZ; ulimit -f 1; expect_error "$@"; echo "$passed $failed" >"$tmp/counts")
+  read -r passed failed <"$tmp/counts"
+}
+expect_file_too_large "big.exr: cannot write image" render builtin:shells:3 --size 96x96 --out "$work/big.exr"
+if "$strata" track --help >/dev/null 2>&1; then
+  expect_error "a-folder: is a folder" track --synthetic 1 --json "$work/a-folder"
+  expect_file_too_large "t.json: write failed: File too large" track --synthetic 2 --json "$work/t.json"
+fi
+
 if [ -d "$models" ]; then
-  expect_error "IndexOutOfRange.gltf: " render "$models/IndexOutOfRange/IndexOutOfRange.gltf" --out "$tmp/out.png"
-  expect_error "RecursiveNodes.gltf: " render "$models/RecursiveNodes/RecursiveNodes.gltf" --out "$tmp/out.png"
-  expect_error "MissingBin" render "$models/MissingBin/BoxTextured.gltf" --out "$tmp/out.png"
-  expect_error "non-finite POSITION" render "$models/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb" --out "$tmp/out.png"
+  expect_error "IndexOutOfRange.gltf: " render "$models/IndexOutOfRange/IndexOutOfRange.gltf" --out "$work/out.png"
+  expect_error "RecursiveNodes.gltf: " render "$models/RecursiveNodes/RecursiveNodes.gltf" --out "$work/out.png"
+  expect_error "MissingBin" render "$models/MissingBin/BoxTextured.gltf" --out "$work/out.png"
+  expect_error "non-finite POSITION" render "$models/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb" --out "$work/out.png"
 else
   echo "skipped: $models absent (apt-get install assimp-testmodels)"
 fi
 
 # Good input: a PNG from a real model, and bench JSON that parses.
 if [ -f "$shared/fandisk.glb" ]; then
-  if "$strata" render "$shared/fandisk.glb" --size 64x48 --out "$tmp/fandisk.png" >/dev/null 2>"$tmp/stderr" &&
-     [ -s "$tmp/fandisk.png" ]; then ok; else bad "render of fandisk.glb: $(cat "$tmp/stderr")"; fi
+  if "$strata" render "$shared/fandisk.glb" --size 64x48 --out "$work/fandisk.png" >/dev/null 2>"$tmp/stderr" &&
+     [ -s "$work/fandisk.png" ]; then ok; else bad "render of fandisk.glb: $(cat "$tmp/stderr")"; fi
 else
   echo "skipped: $shared absent, no real model to render"
 fi
-if "$strata" bench builtin:layers:3 --size 32x32 --frames 2 --json "$tmp/bench.json" --csv "$tmp/bench.csv" \
-     >"$tmp/table" 2>/dev/null && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['modes'] and all(m['id'] for m in d['modes'])" "$tmp/bench.json" &&
-   grep -q "abuffer" "$tmp/table" && [ "$(wc -l <"$tmp/bench.csv")" -ge 2 ]; then ok; else bad "bench JSON/CSV/table"; fi
+if "$strata" bench builtin:layers:3 --size 32x32 --frames 2 --json "$work/bench.json" --csv "$work/bench.csv" \
+     >"$tmp/table" 2>/dev/null && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['modes'] and all(m['id'] for m in d['modes'])" "$work/bench.json" &&
+   grep -q "abuffer" "$tmp/table" && [ "$(wc -l <"$work/bench.csv")" -ge 2 ]; then ok; else bad "bench JSON/CSV/table"; fi
+# A successful run leaves its outputs and nothing else.
+leftover=$(cd "$work" && find . -mindepth 1 | sort | grep -vxF -e ./a-folder -e ./fandisk.png -e ./bench.json -e ./bench.csv)
+if [ -z "$leftover" ]; then ok; else bad "left in the output folder: $leftover"; fi
 if "$strata" modes | grep -q "^abuffer "; then ok; else bad "modes lists abuffer"; fi
 
 echo "$passed passed, $failed failed"

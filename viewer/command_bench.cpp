@@ -3,6 +3,7 @@
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
+#include "io/atomic_file.hpp"
 #include "scene/scene_source.hpp"
 
 #include <cstdio>
@@ -35,6 +36,9 @@ std::vector<std::string> splitModes(const std::string& text) {
 }
 
 void run(const BenchArgs& a) {
+    // Outputs are written after the whole run: refuse an unwritable one before it starts.
+    for (const std::string& out : {a.json, a.csv})
+        if (!out.empty()) checkWritable(out);
     BenchOptions options;
     options.sceneName = a.scene;
     options.modes = splitModes(a.modes);

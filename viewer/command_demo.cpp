@@ -4,6 +4,7 @@
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
+#include "io/atomic_file.hpp"
 #include "scene/scene_source.hpp"
 #include "view_app.hpp"
 

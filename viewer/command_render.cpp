@@ -4,6 +4,7 @@
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
 #include "gl/debug.hpp"
+#include "io/atomic_file.hpp"
 #include "oit/technique.hpp"
 #include "reference/raycast.hpp"
 #include "render/frame_renderer.hpp"
@@ -44,6 +45,9 @@ Image coplanarityHeatmap(const GpuScene& scene, const Camera& camera, const Imag
 
 void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
+    // Images are written after the frame: refuse an unwritable destination before rendering.
+    checkWritable(a.out);
+    if (!a.heatmap.empty()) checkWritable(a.heatmap);
     Scene scene = openScene(a.scene);
     gl::HeadlessContext context;
     GpuScene gpu(std::move(scene));

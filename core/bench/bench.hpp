@@ -75,7 +75,4 @@ nlohmann::json benchToJson(const BenchReport& report);
 std::string benchToTable(const BenchReport& report);
 std::string benchToCsv(const BenchReport& report);
 
-// Writes text to `path` through a temporary file and a rename: never half-written.
-void writeTextFile(const std::filesystem::path& path, const std::string& text);
-
 }  // namespace strata
