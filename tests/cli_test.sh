@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The command line's contract: bad input, of any kind (a bad file, a bad value, an output that
-# cannot be written), gives exactly one line on stderr naming the input, exit status 1, and
-# leaves the output folder as it was: no output file and no temporary of any kind. Good input
-# writes what it says. Usage: cli_test.sh STRATA_BINARY
+# The command line's contract: bad input, of any kind (a bad file, a rejected option value, a
+# missing or unknown option, an output that cannot be written), gives exactly one line on stderr
+# naming the input, exit status 1, and leaves the output folder as it was: no output file and no
+# temporary of any kind. Good input writes what it says. Usage: cli_test.sh STRATA_BINARY
 set -uo pipefail
 strata=$1
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
@@ -50,6 +50,25 @@ expect_error "unsupported image type" render builtin:layers:2 --out "$work/out.j
 printf '0 0 0 0 0 0 0 1\n1 0 0\n' >"$tmp/path.txt"
 expect_error "path.txt:2: expected 8 numbers" render builtin:layers:2 --camera-path "$tmp/path.txt" --out "$work/out.png"
 expect_error "unknown technique" bench builtin:layers:2 --modes abuffer,nope --json "$work/out.json"
+
+# Rejected by the argument parser: the same one line and status 1 as any other bad input (CLI11
+# on its own prints two lines and exits 105, 106, 109...), named by the command.
+expect_error "strata bench: --frames: Value 0 not in range" bench builtin:layers:4 --frames 0
+expect_error "strata bench: --warmup: Value -1 not in range" bench builtin:layers:4 --warmup -1
+expect_error "strata render: --out is required" render builtin:layers:2
+expect_error "strata render: scene is required" render --out "$work/out.png"
+expect_error "--bogus" render builtin:layers:2 --out "$work/out.png" --bogus
+expect_error "strata render: Could not convert: --time = abc" render builtin:layers:2 --out "$work/out.png" --time abc
+expect_error "strata: A subcommand is required" 
+expect_error "strata: unknown command 'nosuch'" nosuch
+if "$strata" track --help >/dev/null 2>&1; then
+  expect_error "strata track: --trace excludes --synthetic" track --trace "$tmp/path.txt" --synthetic 1
+  expect_error "strata track: --display-hz" track --synthetic 1 --display-hz -5
+fi
+# Help is not a rejection: it prints and exits 0.
+if "$strata" bench --help >"$tmp/stdout" 2>"$tmp/stderr" && grep -q -- "--frames" "$tmp/stdout" && [ ! -s "$tmp/stderr" ]
+then ok; else bad "strata bench --help: status or output"; fi
+if "$strata" --help >"$tmp/stdout" 2>&1 && grep -q "render" "$tmp/stdout"; then ok; else bad "strata --help"; fi
 
 # Outputs that cannot be written: refused before the work, nothing left behind.
 expect_error "a-folder: is a folder" render builtin:layers:2 --size 8x8 --out "$work/a-folder"
