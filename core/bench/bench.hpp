@@ -31,6 +31,10 @@ struct BenchOptions {
     std::vector<std::string> parameters;    // "id.name=value" or "name=value" (applies to every mode having it)
     std::optional<std::filesystem::path> imagesDir;  // first frame of each mode as PNG
     std::function<void(const std::string&)> progress;  // one line per step, may be empty
+    // Sees every reference frame the techniques are compared against, with its frame index, as
+    // soon as it is read back; may be empty. The reference is what every error figure rests on,
+    // so tests check these frames against the CPU ray cast (tests/bench_gl_test.cpp).
+    std::function<void(int frame, const Image& reference)> referenceFrame;
 };
 
 struct BenchMode {
