@@ -151,6 +151,9 @@ TEST_CASE("scene description: errors name the file and the problem") {
         {"shorttranslate", obj(R"(, "translate": [1, 2])"), "object 0: translate: expected an array of 3 numbers"},
         {"badmode", obj(R"(, "material": {"alpha_mode": "GLASS"})"), "object 0: material.alpha_mode: unknown mode 'GLASS'"},
         {"badalpha", obj(R"(, "material": {"alpha": 2})"), "object 0: material.alpha: must be in [0, 1]"},
+        // 1e39 is a finite JSON number but an infinite float: tau must stay finite for the shaders.
+        {"hugetau", obj(R"(, "material": {"tau": [1, 1e39, 1]})"), "object 0: material.tau: components must be in [0, 10000]"},
+        {"negativetau", obj(R"(, "material": {"tau": [-1, 0, 0]})"), "object 0: material.tau: components must be in [0, 10000]"},
         {"badscale", obj(R"(, "scale": 0)"), "object 0: scale: must not be zero"},
         {"tworotations", obj(R"(, "rotate_deg": [0, 0, 0], "rotate_axis_angle": [0, 1, 0, 90])"), "not both"},
         {"badcamera", R"({"camera": {"position": [0, 0, 0], "target": [0, 0, 0]}, "objects": []})", "camera: position and target coincide"},

@@ -60,9 +60,6 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
     return true;
 }
 
-// Very large tau is "opaque within a micrometre"; a finite clamp keeps exp(-tau d) and its
-// derivatives well defined in the shaders (attenuationColor 0 would give +inf).
-constexpr float kMaxTau = 1.0e4f;
 // An accessor without a bufferView is all zeros (plus sparse values); its count is not bounded
 // by any buffer, so cap it to keep a hostile file from asking for a huge allocation.
 constexpr std::size_t kMaxCountWithoutView = std::size_t(1) << 24;
@@ -385,7 +382,9 @@ struct Converter {
                 for (int k = 0; k < 3; ++k) {
                     double tau = 0.0;  // infinite distance: no attenuation (spec default)
                     if (std::isfinite(distance)) {
-                        // Colour 0 means "nothing gets through"; colours above 1 cannot amplify.
+                        // Colour 0 means "nothing gets through" (tau clamped to kMaxTau, scene.hpp, so
+                        // volumeTransmittance in shaders/common/surface.glsl stays finite); colours
+                        // above 1 cannot amplify.
                         double c = std::clamp(color[k], 0.0, 1.0);
                         tau = c > 0.0 ? -std::log(c) / distance : double(kMaxTau);
                     }

@@ -89,7 +89,9 @@ Material parseMaterial(const json& m, const std::string& where) {
     }
     if (m.contains("tau")) {
         mat.tau = vector<3>(m["tau"], w + "tau");
-        if (mat.tau.x < 0.0f || mat.tau.y < 0.0f || mat.tau.z < 0.0f) fail(w + "tau: must be >= 0");
+        for (int k = 0; k < 3; ++k)
+            if (!(mat.tau[k] >= 0.0f && mat.tau[k] <= kMaxTau))  // 1e300 is finite JSON but an infinite float
+                fail(w + "tau: components must be in [0, " + std::to_string(int(kMaxTau)) + "] per metre");
     }
     if (m.contains("albedo")) mat.albedo = unitRange3(m["albedo"], w + "albedo");
     if (m.contains("double_sided")) {
