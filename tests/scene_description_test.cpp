@@ -182,3 +182,21 @@ TEST_CASE("scene description: errors name the file and the problem") {
     CHECK(error.find("broken.json: object 1: ") != std::string::npos);
     CHECK(error.find("broken-model.gltf: mesh 0 primitive 0: index 9 out of range (4 vertices)") != std::string::npos);
 }
+
+TEST_CASE("scene description: what the glTF loader ignored in its models is passed on, once per line") {
+    GltfBuilder b;
+    int pos = b.positions(kQuadPositions);
+    int uv = b.accessor(b.view(std::vector<float>(8, 0.5f)), kFloat, 4, "VEC2");
+    int idx = b.accessor(b.view(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3}), kUByte, 6, "SCALAR");
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}, {"TEXCOORD_1", uv}}}, {"indices", idx}}}));
+    auto model = b.writeGltf("desc-gap");
+    // The same model placed twice: its warning is one line, naming the model file.
+    auto path = writeDescription("gap", R"({"objects": [{"model": "desc-gap.gltf"}, {"model": "desc-gap.gltf",
+                                            "translate": [2, 0, 0]}]})");
+    std::vector<std::string> warnings;
+    Scene s = loadSceneDescription(path, &warnings);
+    CHECK(flatten(s).size() == 2);
+    CHECK(warnings == std::vector<std::string>{
+        model.string() + ": TEXCOORD_1 without TEXCOORD_0: attribute set is not contiguous, ignored (mesh 0 primitive 0)"});
+    CHECK_NOTHROW(loadSceneDescription(path));  // callers that do not ask are not told
+}

@@ -1,10 +1,10 @@
 // `strata bench`: every requested technique against the exact reference on the same frames.
 #include "commands.hpp"
+#include "open_scene.hpp"
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
 #include "io/atomic_file.hpp"
-#include "scene/scene_source.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -53,7 +53,7 @@ void run(const BenchArgs& a) {
     }
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
-    Scene scene = openScene(a.scene);
+    Scene scene = openSceneAndWarn(a.scene);
     gl::HeadlessContext context;
     GpuScene gpu(std::move(scene));
     BenchReport report = runBench(gpu, options);

@@ -1,5 +1,6 @@
 // `strata render`: one frame of a scene with one technique, headless, to PNG or EXR.
 #include "commands.hpp"
+#include "open_scene.hpp"
 
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
@@ -8,7 +9,6 @@
 #include "oit/technique.hpp"
 #include "reference/raycast.hpp"
 #include "render/frame_renderer.hpp"
-#include "scene/scene_source.hpp"
 
 #include <cstdio>
 #include <optional>
@@ -48,7 +48,7 @@ void run(const RenderArgs& a) {
     // Images are written after the frame: refuse an unwritable destination before rendering.
     checkWritable(a.out);
     if (!a.heatmap.empty()) checkWritable(a.heatmap);
-    Scene scene = openScene(a.scene);
+    Scene scene = openSceneAndWarn(a.scene);
     gl::HeadlessContext context;
     GpuScene gpu(std::move(scene));
     auto technique = createTechnique(a.mode);

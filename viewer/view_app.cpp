@@ -5,6 +5,7 @@
 
 #include "camera_controls.hpp"
 #include "immersive.hpp"
+#include "open_scene.hpp"
 #include "panel.hpp"
 #include "window_capture.hpp"
 #include "window_session.hpp"
@@ -14,7 +15,6 @@
 #include "gl/debug.hpp"
 #include "gl/shader_program.hpp"
 #include "render/frame_renderer.hpp"
-#include "scene/scene_source.hpp"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -399,7 +399,7 @@ int runViewer(const ViewOptions& options) {
         throw std::runtime_error("view: window size " + std::to_string(options.width) + "x" +
                                  std::to_string(options.height) + " is not positive");
     if (!findTechnique(options.mode)) createTechnique(options.mode);  // throws, listing the known ids
-    Scene scene = openScene(options.scene);                          // bad input fails before a window opens
+    Scene scene = openSceneAndWarn(options.scene);                   // bad input fails before a window opens
     if (options.immersive) return runImmersive(options, std::move(scene));  // viewer/immersive.cpp
 
     GlfwLibrary glfw;
