@@ -151,6 +151,9 @@ TEST_CASE("scene description: errors name the file and the problem") {
         {"shorttranslate", obj(R"(, "translate": [1, 2])"), "object 0: translate: expected an array of 3 numbers"},
         {"badmode", obj(R"(, "material": {"alpha_mode": "GLASS"})"), "object 0: material.alpha_mode: unknown mode 'GLASS'"},
         {"badalpha", obj(R"(, "material": {"alpha": 2})"), "object 0: material.alpha: must be in [0, 1]"},
+        // 1e39 is a finite JSON number but an infinite float: tau must stay finite for the shaders.
+        {"hugetau", obj(R"(, "material": {"tau": [1, 1e39, 1]})"), "object 0: material.tau: components must be in [0, 10000]"},
+        {"negativetau", obj(R"(, "material": {"tau": [-1, 0, 0]})"), "object 0: material.tau: components must be in [0, 10000]"},
         {"badscale", obj(R"(, "scale": 0)"), "object 0: scale: must not be zero"},
         {"tworotations", obj(R"(, "rotate_deg": [0, 0, 0], "rotate_axis_angle": [0, 1, 0, 90])"), "not both"},
         {"badcamera", R"({"camera": {"position": [0, 0, 0], "target": [0, 0, 0]}, "objects": []})", "camera: position and target coincide"},
@@ -178,4 +181,22 @@ TEST_CASE("scene description: errors name the file and the problem") {
                                                           R"("}, {"model": "broken-model.gltf"}]})"));
     CHECK(error.find("broken.json: object 1: ") != std::string::npos);
     CHECK(error.find("broken-model.gltf: mesh 0 primitive 0: index 9 out of range (4 vertices)") != std::string::npos);
+}
+
+TEST_CASE("scene description: what the glTF loader ignored in its models is passed on, once per line") {
+    GltfBuilder b;
+    int pos = b.positions(kQuadPositions);
+    int uv = b.accessor(b.view(std::vector<float>(8, 0.5f)), kFloat, 4, "VEC2");
+    int idx = b.accessor(b.view(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3}), kUByte, 6, "SCALAR");
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}, {"TEXCOORD_1", uv}}}, {"indices", idx}}}));
+    auto model = b.writeGltf("desc-gap");
+    // The same model placed twice: its warning is one line, naming the model file.
+    auto path = writeDescription("gap", R"({"objects": [{"model": "desc-gap.gltf"}, {"model": "desc-gap.gltf",
+                                            "translate": [2, 0, 0]}]})");
+    std::vector<std::string> warnings;
+    Scene s = loadSceneDescription(path, &warnings);
+    CHECK(flatten(s).size() == 2);
+    CHECK(warnings == std::vector<std::string>{
+        model.string() + ": TEXCOORD_1 without TEXCOORD_0: attribute set is not contiguous, ignored (mesh 0 primitive 0)"});
+    CHECK_NOTHROW(loadSceneDescription(path));  // callers that do not ask are not told
 }

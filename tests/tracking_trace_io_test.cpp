@@ -46,10 +46,11 @@ TEST_CASE("animation path: comments, blank lines, renormalisation and round trip
     CHECK(t[1].p.z() == doctest::Approx(3.5));
     CHECK(t[1].q.norm() == doctest::Approx(1.0).epsilon(1e-15));
 
-    const std::string path = tempPath("roundtrip.path");
-    writeAnimationPath(path, t, "two\nlines");
-    const Trace back = readAnimationPath(path);
-    std::filesystem::remove(path);
+    const std::string text = formatAnimationPath(t, "two\nlines");
+    CHECK(text.rfind("# strata animation path", 0) == 0);
+    CHECK(text.find("\n# two\n# lines\n") != std::string::npos);
+    std::istringstream written(text);
+    const Trace back = parseAnimationPath(written, "written");
     REQUIRE(back.size() == t.size());
     for (std::size_t i = 0; i < t.size(); ++i) {
         CHECK(back[i].t == doctest::Approx(t[i].t).epsilon(1e-9));

@@ -140,35 +140,29 @@ Trace readAnimationPath(const std::string& path) {
     return parseAnimationPath(f, path);
 }
 
-void writeAnimationPath(const std::string& path, const Trace& trace, const std::string& comment) {
-    // Write to a temporary and rename so a failure never leaves half a file behind.
-    const std::string tmp = path + ".tmp";
-    {
-        std::FILE* f = std::fopen(tmp.c_str(), "w");
-        if (!f) throw TraceError(path, 0, "cannot open for writing");
-        std::fprintf(f, "# strata animation path: time px py pz qx qy qz qw (s, m, unit quaternion)\n");
-        if (!comment.empty()) {
-            std::size_t start = 0;
-            while (start <= comment.size()) {
-                const auto nl = comment.find('\n', start);
-                std::fprintf(f, "# %s\n", comment.substr(start, nl == std::string::npos ? std::string::npos : nl - start).c_str());
-                if (nl == std::string::npos) break;
-                start = nl + 1;
-            }
-        }
-        for (const auto& s : trace)
-            std::fprintf(f, "%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", s.t, s.p.x(), s.p.y(), s.p.z(), s.q.x(),
-                         s.q.y(), s.q.z(), s.q.w());
-        const bool ok = std::ferror(f) == 0;
-        if (std::fclose(f) != 0 || !ok) {
-            std::remove(tmp.c_str());
-            throw TraceError(path, 0, "write failed");
+std::string formatAnimationPath(const Trace& trace, const std::string& comment) {
+    std::string out = "# strata animation path: time px py pz qx qy qz qw (s, m, unit quaternion)\n";
+    if (!comment.empty()) {
+        std::size_t start = 0;
+        while (start <= comment.size()) {
+            const auto nl = comment.find('\n', start);
+            out += "# " + comment.substr(start, nl == std::string::npos ? std::string::npos : nl - start) + "\n";
+            if (nl == std::string::npos) break;
+            start = nl + 1;
         }
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw TraceError(path, 0, "cannot rename temporary file into place");
+    for (const auto& s : trace) {
+        // Sized by a first call: %f of a large coordinate has no length bound.
+        auto print = [&](char* to, std::size_t n) {
+            return std::snprintf(to, n, "%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", s.t, s.p.x(), s.p.y(), s.p.z(),
+                                 s.q.x(), s.q.y(), s.q.z(), s.q.w());
+        };
+        std::size_t at = out.size(), n = std::size_t(print(nullptr, 0));
+        out.resize(at + n + 1);
+        print(out.data() + at, n + 1);
+        out.resize(at + n);
     }
+    return out;
 }
 
 Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {

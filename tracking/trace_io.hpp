@@ -49,9 +49,11 @@ using strata::TraceError;
 // `name` is used in error messages only.
 Trace parseAnimationPath(std::istream& in, const std::string& name);
 Trace readAnimationPath(const std::string& path);
-// Writes a header comment, then one sample a line (microsecond time, micrometre position,
-// 1e-9 quaternion). Throws TraceError when the file cannot be written.
-void writeAnimationPath(const std::string& path, const Trace& trace, const std::string& comment = {});
+// The text of an animation-path file: a header comment (each line of `comment` as one more
+// comment line), then one sample a line (microsecond time, micrometre position, 1e-9
+// quaternion). Writing it is the caller's: this library does no file output, so the one
+// atomic writer (strata_core's io/atomic_file.hpp) stays the only one.
+std::string formatAnimationPath(const Trace& trace, const std::string& comment = {});
 
 Trace parseHeadMovementCsv(std::istream& in, const std::string& name);
 Trace readHeadMovementCsv(const std::string& path);

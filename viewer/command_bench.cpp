@@ -1,9 +1,10 @@
 // `strata bench`: every requested technique against the exact reference on the same frames.
 #include "commands.hpp"
+#include "open_scene.hpp"
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
-#include "scene/scene_source.hpp"
+#include "io/atomic_file.hpp"
 #include "settings_options.hpp"
 
 #include <cstdio>
@@ -36,6 +37,9 @@ std::vector<std::string> splitModes(const std::string& text) {
 }
 
 void run(const BenchArgs& a) {
+    // Outputs are written after the whole run: refuse an unwritable one before it starts.
+    for (const std::string& out : {a.json, a.csv})
+        if (!out.empty()) checkWritable(out);
     BenchOptions options;
     options.sceneName = a.scene;
     options.modes = splitModes(a.modes);
@@ -51,7 +55,7 @@ void run(const BenchArgs& a) {
     }
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
-    Scene scene = openScene(a.scene);
+    Scene scene = openSceneAndWarn(a.scene);
     gl::HeadlessContext context;
     GpuScene gpu(std::move(scene));
     BenchReport report = runBench(gpu, options);

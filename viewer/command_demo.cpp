@@ -1,10 +1,11 @@
 // `strata demo`: the main job on the built-in default scene. With a display it opens the
 // viewer; without one it benchmarks every technique and writes a short report to a folder.
 #include "commands.hpp"
+#include "open_scene.hpp"
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
-#include "scene/scene_source.hpp"
+#include "io/atomic_file.hpp"
 #include "view_app.hpp"
 
 #include <cstdio>
@@ -33,7 +34,7 @@ void writeReport(const DemoArgs& a) {
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
     gl::HeadlessContext context;
-    GpuScene gpu(openScene(options.sceneName));
+    GpuScene gpu(openSceneAndWarn(options.sceneName));
     BenchReport report = runBench(gpu, options);
     std::string table = benchToTable(report);
     writeTextFile(dir / "bench.json", benchToJson(report).dump(2) + "\n");

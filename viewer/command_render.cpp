@@ -1,14 +1,15 @@
 // `strata render`: one frame of a scene with one technique, headless, to PNG or EXR.
 #include "commands.hpp"
+#include "open_scene.hpp"
 
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
 #include "gl/debug.hpp"
+#include "io/atomic_file.hpp"
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
 #include "reference/raycast.hpp"
 #include "frame/frame_renderer.hpp"
-#include "scene/scene_source.hpp"
 #include "settings_options.hpp"
 
 #include <cstdio>
@@ -48,7 +49,10 @@ void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
     const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
-    Scene scene = openScene(a.scene);
+    // Images are written after the frame: refuse an unwritable destination before rendering.
+    checkWritable(a.out);
+    if (!a.heatmap.empty()) checkWritable(a.heatmap);
+    Scene scene = openSceneAndWarn(a.scene);
     gl::HeadlessContext context;
     GpuScene gpu(std::move(scene));
     auto technique = createConfiguredTechnique(a.mode, settings);

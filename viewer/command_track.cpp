@@ -1,6 +1,7 @@
 // `strata track`: replays a head-pose trace through the predictors with two-step prediction and
 // image deflection, and reports the viewing error each combination leaves and what an update
 // costs. No GL: everything here runs on the CPU (tracking/ library).
+#include "io/atomic_file.hpp"
 #include "tracking/predictor.hpp"
 #include "tracking/synthetic.hpp"
 #include "tracking/trace_io.hpp"
@@ -10,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -75,25 +75,6 @@ Intrinsics parseIntrinsics(const std::string& size, double fovDeg) {
     return Intrinsics::fromFov(w, h, fovDeg);
 }
 
-// Writes through a temporary and renames, so a failed run never leaves half a file.
-void writeFileAtomically(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary);
-        if (!f) throw std::runtime_error(path + ": cannot open for writing");
-        f << text;
-        f.flush();
-        if (!f) {
-            std::remove(tmp.c_str());
-            throw std::runtime_error(path + ": write failed");
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw std::runtime_error(path + ": cannot move temporary file into place");
-    }
-}
-
 struct Row {
     std::string predictor;
     Deflect deflect;
@@ -131,6 +112,10 @@ void runTrack(const TrackOptions& o) {
         throw std::runtime_error("track: give exactly one of --trace FILE or --synthetic SECONDS");
     if (o.latencyMs < 0.0 || o.rereadMs < 0.0) throw std::runtime_error("track: latency and reread must be >= 0");
     const Intrinsics k = parseIntrinsics(o.size, o.fovDeg);
+    // Outputs are written last; a folder that is not there is noticed before the work.
+    for (const std::string& out : {o.json, o.sweepCsv})
+        if (!out.empty()) checkWritable(out);
+    if (!o.writeTraces.empty()) checkWritable(o.writeTraces + "-measured.path");
     auto predictors = selectPredictors(o.predictors);
     const auto deflects = selectDeflects(o.deflects);
 
@@ -146,12 +131,13 @@ void runTrack(const TrackOptions& o) {
         source = HeadMotionModel(params).describe();
         truthSource = "the noise-free model sampled at 1000 Hz";
         if (!o.writeTraces.empty()) {
-            writeAnimationPath(o.writeTraces + "-measured.path", measured, "measured (noisy) trace; " + source);
+            writeTextFile(o.writeTraces + "-measured.path",
+                          formatAnimationPath(measured, "measured (noisy) trace; " + source));
             // Truth at 240 Hz keeps the shipped file small; slerp between samples 4 ms apart is
             // within 0.01 deg of the model on min-jerk turns.
             Trace truth240;
             for (double t = 0.0; t <= params.duration + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
-            writeAnimationPath(o.writeTraces + "-truth.path", truth240, "truth trace (240 Hz); " + source);
+            writeTextFile(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
         }
     } else {
         measured = readTrace(o.trace);
@@ -210,9 +196,9 @@ void runTrack(const TrackOptions& o) {
                                  {"max_deg", r.stats.maxDeg},
                                  {"mean_mm", r.stats.meanMm},
                                  {"update_ns", r.updateNs}});
-        writeFileAtomically(o.json, j.dump(2) + "\n");
+        writeTextFile(o.json, j.dump(2) + "\n");
     }
-    if (!o.sweepCsv.empty()) writeFileAtomically(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
+    if (!o.sweepCsv.empty()) writeTextFile(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
 }
 
 }  // namespace

@@ -3,6 +3,37 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
+
+namespace {
+
+// CLI11 messages are one line today, but the contract must not depend on that.
+std::string oneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
+// "strata bench" when the rejection came while parsing a subcommand's arguments, else "strata".
+std::string commandName(const CLI::App& app) {
+    std::string name = "strata";
+    for (const CLI::App* sub : app.get_subcommands()) name += " " + sub->get_name();
+    return name;
+}
+
+// CLI11 calls `strata nosuch` "A subcommand is required"; say what is wrong instead.
+std::string unknownCommand(const CLI::App& app, int argc, char** argv) {
+    if (argc < 2 || argv[1][0] == '-') return {};
+    std::string known;
+    const auto all = app.get_subcommands([](const CLI::App*) { return true; });
+    for (const CLI::App* sub : all) {
+        if (sub->check_name(argv[1])) return {};
+        known += (known.empty() ? "" : ", ") + sub->get_name();
+    }
+    return std::string("unknown command '") + argv[1] + "' (known: " + known + ")";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"Strata: order-independent transparency and multi-fragment rendering, measured"};
@@ -18,9 +49,21 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help is a ParseError with status 0: CLI11 prints the help and that is success.
+        if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+        // Every rejection of the command line (a value out of range, a missing or unknown option,
+        // a value of the wrong type) is the same contract as any other bad input: one line on
+        // stderr naming what is wrong, status 1. CLI11's own exit() would print two lines and
+        // return its per-kind codes (105 for a range).
+        if (std::string unknown = unknownCommand(app, argc, argv); !unknown.empty()) {
+            std::fprintf(stderr, "strata: %s\n", oneLine(unknown).c_str());
+            return 1;
+        }
+        std::string name = commandName(app);
+        std::fprintf(stderr, "%s: %s (see %s --help)\n", name.c_str(), oneLine(e.what()).c_str(), name.c_str());
+        return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "strata: %s\n", e.what());
+        std::fprintf(stderr, "strata: %s\n", oneLine(e.what()).c_str());
         return 1;
     }
     return 0;

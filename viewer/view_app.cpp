@@ -5,6 +5,7 @@
 
 #include "camera_controls.hpp"
 #include "immersive.hpp"
+#include "open_scene.hpp"
 #include "panel.hpp"
 #include "window_capture.hpp"
 #include "window_loop.hpp"
@@ -325,7 +326,7 @@ int runViewer(const ViewOptions& options) {
         throw std::runtime_error("view: window size " + std::to_string(options.width) + "x" +
                                  std::to_string(options.height) + " is not positive");
     if (!findTechnique(options.mode)) createTechnique(options.mode);  // throws, listing the known ids
-    Scene scene = openScene(options.scene);                          // bad input fails before a window opens
+    Scene scene = openSceneAndWarn(options.scene);                          // bad input fails before a window opens
     const bool immersive = options.immersive;
     WindowModeFactory makeMode = immersive ? immersiveMode(options, std::move(scene))  // viewer/immersive.cpp
                                            : walkthroughMode(options, std::move(scene));

@@ -1,6 +1,7 @@
 #include "window_capture.hpp"
 
 #include "image/image.hpp"
+#include "io/atomic_file.hpp"
 
 #include <epoxy/gl.h>
 #include <OpenImageIO/imageio.h>
@@ -27,28 +28,18 @@ void writeWindowPng(const std::filesystem::path& path, const WindowPixels& pixel
     // Written with OpenImageIO directly: the bytes are already what the screen shows, so they
     // must not pass through a float image and a second encoding.
     if (path.extension() != ".png") throw std::runtime_error(path.string() + ": screenshots are written as .png");
-    if (path.has_parent_path() && !std::filesystem::exists(path.parent_path()))
-        throw std::runtime_error(path.string() + ": folder " + path.parent_path().string() + " does not exist");
-    std::filesystem::path tmp = path;
-    tmp += ".partial.png";
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) throw std::runtime_error(path.string() + ": no PNG writer: " + OIIO::geterror());
-    OIIO::ImageSpec spec(pixels.width, pixels.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    // RGB of the RGBA rows, last (top) row first: a negative y stride flips without a copy.
-    const std::ptrdiff_t row = std::ptrdiff_t(pixels.width) * 4;
-    const std::uint8_t* top = pixels.rgba.data() + row * (pixels.height - 1);
-    bool ok = out->open(tmp.string(), spec) &&
-              out->write_image(OIIO::TypeDesc::UINT8, top, 4, -row, OIIO::AutoStride) && out->close();
-    if (!ok) {
-        std::string why = out->geterror();
-        out.reset();
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        throw std::runtime_error(path.string() + ": cannot write screenshot: " + why);
-    }
-    out.reset();
-    std::filesystem::rename(tmp, path);
+    writeFileAtomically(path, [&](const std::filesystem::path& temporary) {
+        auto out = OIIO::ImageOutput::create(temporary.string());
+        if (!out) throw std::runtime_error("no PNG writer: " + OIIO::geterror());
+        OIIO::ImageSpec spec(pixels.width, pixels.height, 3, OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:ColorSpace", "sRGB");
+        // RGB of the RGBA rows, last (top) row first: a negative y stride flips without a copy.
+        const std::ptrdiff_t row = std::ptrdiff_t(pixels.width) * 4;
+        const std::uint8_t* top = pixels.rgba.data() + row * (pixels.height - 1);
+        bool ok = out->open(temporary.string(), spec) &&
+                  out->write_image(OIIO::TypeDesc::UINT8, top, 4, -row, OIIO::AutoStride) && out->close();
+        if (!ok) throw std::runtime_error("cannot write screenshot: " + out->geterror());
+    });
 }
 
 WindowPixels encodeSrgb(const Image& image) {

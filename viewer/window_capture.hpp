@@ -21,8 +21,8 @@ struct WindowPixels {
 // glReadPixels of the default framebuffer's back buffer (call before swapping).
 WindowPixels readWindow(glm::ivec2 size);
 
-// Writes the bytes as they are (no second sRGB encoding) to an 8-bit RGB PNG, top row first, through
-// a temporary name renamed into place. Throws std::runtime_error naming the file.
+// Writes the bytes as they are (no second sRGB encoding) to an 8-bit RGB PNG, top row first,
+// through writeFileAtomically (io/atomic_file.hpp). Throws std::runtime_error naming the file.
 void writeWindowPng(const std::filesystem::path& path, const WindowPixels& pixels);
 
 // A linear-RGB frame (FrameRenderer::readOutput) encoded to sRGB bytes, rounded to nearest.

@@ -95,6 +95,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             gl::checkGl("bench reference frame");
             referenceImage = renderer.readOutput();
             referenceKey = keyOf(f);
+            if (options.referenceFrame) options.referenceFrame(f, referenceImage);
         }
         return referenceImage;
     };
@@ -156,6 +157,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 error.add(image, image);
                 referenceImage = std::move(image);
                 referenceKey = keyOf(f);
+                if (options.referenceFrame) options.referenceFrame(f, referenceImage);
                 if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), referenceImage);
             } else {
                 error.add(image, referenceImage);

@@ -32,6 +32,10 @@ struct BenchOptions {
     SettingsById settings;                  // from resolveSettings(benchModeIds(modes), ...); defaults where absent
     std::optional<std::filesystem::path> imagesDir;  // first frame of each mode as PNG
     std::function<void(const std::string&)> progress;  // one line per step, may be empty
+    // Sees every reference frame the techniques are compared against, with its frame index, as
+    // soon as it is read back; may be empty. The reference is what every error figure rests on,
+    // so tests check these frames against the CPU ray cast (tests/bench_gl_test.cpp).
+    std::function<void(int frame, const Image& reference)> referenceFrame;
 };
 
 struct BenchMode {
@@ -81,8 +85,5 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options);
 nlohmann::json benchToJson(const BenchReport& report);
 std::string benchToTable(const BenchReport& report);
 std::string benchToCsv(const BenchReport& report);
-
-// Writes text to `path` through a temporary file and a rename: never half-written.
-void writeTextFile(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace strata

@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <sstream>
 
@@ -124,18 +123,6 @@ std::string benchToCsv(const BenchReport& r) {
         out << '\n';
     }
     return out.str();
-}
-
-void writeTextFile(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::path tmp = path;
-    tmp += ".partial";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
-        out << text;
-        if (!out.flush()) throw std::runtime_error(path.string() + ": write failed");
-    }
-    std::filesystem::rename(tmp, path);
 }
 
 }  // namespace strata

@@ -1,5 +1,6 @@
 #include "camera/camera_path.hpp"
 
+#include "io/atomic_file.hpp"
 #include "scene/load_error.hpp"
 
 #include <glm/gtc/constants.hpp>
@@ -9,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -111,31 +113,15 @@ CameraPath CameraPath::read(const std::filesystem::path& path) {
 }
 
 void CameraPath::write(const std::filesystem::path& path) const {
-    const std::filesystem::path temp = path.string() + ".tmp";
-    {
-        std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(path.string() + ": cannot write camera path");
-        out << "# strata camera path (OpenSceneGraph animation-path layout)\n"
-            << "# time px py pz qx qy qz qw\n";
-        for (const auto& s : samples_) {
-            out << shortest(s.time) << ' ' << shortest(s.position.x) << ' ' << shortest(s.position.y) << ' '
-                << shortest(s.position.z) << ' ' << shortest(s.orientation.x) << ' ' << shortest(s.orientation.y)
-                << ' ' << shortest(s.orientation.z) << ' ' << shortest(s.orientation.w) << '\n';
-        }
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temp, ignored);
-            throw std::runtime_error(path.string() + ": error while writing camera path");
-        }
+    std::ostringstream out;
+    out << "# strata camera path (OpenSceneGraph animation-path layout)\n"
+        << "# time px py pz qx qy qz qw\n";
+    for (const auto& s : samples_) {
+        out << shortest(s.time) << ' ' << shortest(s.position.x) << ' ' << shortest(s.position.y) << ' '
+            << shortest(s.position.z) << ' ' << shortest(s.orientation.x) << ' ' << shortest(s.orientation.y)
+            << ' ' << shortest(s.orientation.z) << ' ' << shortest(s.orientation.w) << '\n';
     }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(temp, ignored);
-        throw std::runtime_error(path.string() + ": cannot replace camera path: " + ec.message());
-    }
+    writeTextFile(path, out.str());
 }
 
 void CameraPath::add(const PathSample& s) {

@@ -35,8 +35,8 @@ class CameraPath {
 public:
     // Throws LoadError (bad content, missing file) naming the file and, for content, the line.
     static CameraPath read(const std::filesystem::path& path);
-    // Writes every sample with round-trip precision to a temporary name and renames it into
-    // place, so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
+    // Writes every sample with round-trip precision through writeTextFile (io/atomic_file.hpp),
+    // so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
     void write(const std::filesystem::path& path) const;
 
     // Position lerped, orientation slerped along the shorter arc; clamped to the first/last

@@ -50,10 +50,6 @@ struct ProgramTraits {
 struct ShaderTraits {
     static void destroy(GLuint n) { glDeleteShader(n); }
 };
-struct SamplerTraits {
-    static GLuint create() { GLuint n = 0; glCreateSamplers(1, &n); return n; }
-    static void destroy(GLuint n) { glDeleteSamplers(1, &n); }
-};
 struct TextureTraits {
     static void destroy(GLuint n) { glDeleteTextures(1, &n); }
 };
@@ -66,7 +62,6 @@ using VertexArray = Handle<VertexArrayTraits>;
 using Framebuffer = Handle<FramebufferTraits>;
 using Program = Handle<ProgramTraits>;
 using Shader = Handle<ShaderTraits>;
-using Sampler = Handle<SamplerTraits>;
 using Texture = Handle<TextureTraits>;
 using Query = Handle<QueryTraits>;
 

@@ -1,5 +1,7 @@
 #include "image/image.hpp"
 
+#include "io/atomic_file.hpp"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -81,8 +83,6 @@ void writeImage(const fs::path& path, const Image& image) {
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext != ".png" && ext != ".exr")
         throw std::runtime_error(path.string() + ": unsupported image type (use .png or .exr)");
-    if (path.has_parent_path() && !fs::is_directory(path.parent_path()))
-        throw std::runtime_error(path.string() + ": folder " + path.parent_path().string() + " does not exist");
     if (image.width <= 0 || image.height <= 0) throw std::runtime_error(path.string() + ": empty image");
 
     // Top row first for the file; PNG holds sRGB-encoded 8-bit colour, EXR linear half floats.
@@ -100,23 +100,18 @@ void writeImage(const fs::path& path, const Image& image) {
         }
     }
 
-    fs::path tmp = path;
-    tmp += ".partial" + ext;
-    auto fail = [&](const std::string& why) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        throw std::runtime_error(path.string() + ": cannot write image: " + why);
-    };
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out) fail(OIIO::geterror());
-    OIIO::ImageSpec spec(image.width, image.height, 4, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
-    spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
-    if (!out->open(tmp.string(), spec)) fail(out->geterror());
-    bool ok = png ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data())
-                  : out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
-    if (!ok) fail(out->geterror());
-    if (!out->close()) fail(out->geterror());
-    fs::rename(tmp, path);
+    writeFileAtomically(path, [&](const fs::path& temporary) {
+        auto fail = [](const std::string& why) { throw std::runtime_error("cannot write image: " + why); };
+        auto out = OIIO::ImageOutput::create(temporary.string());
+        if (!out) fail(OIIO::geterror());
+        OIIO::ImageSpec spec(image.width, image.height, 4, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF);
+        spec.attribute("oiio:ColorSpace", png ? "sRGB" : "Linear");
+        if (!out->open(temporary.string(), spec)) fail(out->geterror());
+        bool ok = png ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data())
+                      : out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
+        if (!ok) fail(out->geterror());
+        if (!out->close()) fail(out->geterror());
+    });
 }
 
 Image readImage(const fs::path& path) {

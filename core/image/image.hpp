@@ -57,7 +57,7 @@ private:
     double maxAbsError_ = 0.0;
 };
 
-// Writes .png (sRGB 8-bit) or .exr (linear half). Writes to a temporary name and renames,
+// Writes .png (sRGB 8-bit) or .exr (linear half) through writeFileAtomically (io/atomic_file.hpp),
 // so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
 void writeImage(const std::filesystem::path& path, const Image& image);
 Image readImage(const std::filesystem::path& path);  // .exr linear; .png decoded from sRGB

@@ -62,6 +62,8 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex) const {
     glProgramUniform1f(program, p.alpha, m.alpha);
     glProgramUniform1ui(program, p.objectId, GLuint(o.id));
     glProgramUniform1f(program, p.alphaCutoff, m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f);
+    glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
+    glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
     const GpuMesh& mesh = meshes_[o.mesh];
     if (mesh.indexCount == 0) return;
     glBindVertexArray(mesh.vertexArray.id());

@@ -30,8 +30,8 @@ public:
     const Bounds& bounds() const { return bounds_; }
     std::size_t triangleCount() const { return triangles_; }
 
-    // Sets the per-object uniforms (model, normal matrix, material, id) on `program`, which
-    // must be bound, and draws the object's triangles.
+    // Sets the per-object uniforms (model, normal matrix, material with its volume parameters
+    // tau and albedo, id) on `program`, which must be bound, and draws the object's triangles.
     void draw(const SceneProgram& program, int objectIndex) const;
 
     // Uniforms every scene program shares for a frame.

@@ -14,6 +14,8 @@ SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defin
     p.objectId = glGetUniformLocation(id, "uObjectId");
     p.lightDir = glGetUniformLocation(id, "uLightDir");
     p.alphaCutoff = glGetUniformLocation(id, "uAlphaCutoff");
+    p.tau = glGetUniformLocation(id, "uTau");
+    p.albedo = glGetUniformLocation(id, "uAlbedo");
     return p;
 }
 

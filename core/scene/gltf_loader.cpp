@@ -1,5 +1,6 @@
 #include "scene/gltf_loader.hpp"
 
+#include "scene/gltf_ignored.hpp"
 #include "scene/gltf_schema.hpp"
 
 // The Debian package ships libtinygltf.so with the implementation (and its own JSON parser),
@@ -60,9 +61,6 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
     return true;
 }
 
-// Very large tau is "opaque within a micrometre"; a finite clamp keeps exp(-tau d) and its
-// derivatives well defined in the shaders (attenuationColor 0 would give +inf).
-constexpr float kMaxTau = 1.0e4f;
 // An accessor without a bufferView is all zeros (plus sparse values); its count is not bounded
 // by any buffer, so cap it to keep a hostile file from asking for a huge allocation.
 constexpr std::size_t kMaxCountWithoutView = std::size_t(1) << 24;
@@ -326,6 +324,7 @@ bool normalizeNormals(std::vector<glm::vec3>& normals) {
 struct Converter {
     const tinygltf::Model& model;
     GltfLoadReport& report;
+    detail::IgnoredLog& ignored;  // what the file holds that is not drawn as given, said once per kind
     Scene scene;
     std::vector<std::vector<int>> meshMap;  // glTF mesh -> strata meshes (one per triangle primitive)
 
@@ -347,10 +346,13 @@ struct Converter {
             const auto& f = g.pbrMetallicRoughness.baseColorFactor;
             if (!f.empty()) {
                 if (f.size() != 4) fail(what + ": baseColorFactor must have 4 components");
+                bool clamped = false;
                 for (int c = 0; c < 4; ++c) {
                     if (!std::isfinite(f[std::size_t(c)])) fail(what + ": non-finite baseColorFactor");
                     factor[c] = std::clamp(float(f[std::size_t(c)]), 0.0f, 1.0f);
+                    clamped = clamped || f[std::size_t(c)] < 0.0 || f[std::size_t(c)] > 1.0;
                 }
+                if (clamped) ignored.note("baseColorFactor range", "baseColorFactor outside [0, 1] clamped", what);
             }
             m.baseColor = glm::vec3(factor);
             m.alpha = factor.a;
@@ -382,15 +384,21 @@ struct Converter {
                         color[k] = ck.GetNumberAsDouble();
                     }
                 }
+                bool clamped = false;
                 for (int k = 0; k < 3; ++k) {
                     double tau = 0.0;  // infinite distance: no attenuation (spec default)
                     if (std::isfinite(distance)) {
-                        // Colour 0 means "nothing gets through"; colours above 1 cannot amplify.
+                        // Colour 0 means "nothing gets through" (tau clamped to kMaxTau, scene.hpp, so
+                        // volumeTransmittance in shaders/common/surface.glsl stays finite); colours
+                        // above 1 cannot amplify.
                         double c = std::clamp(color[k], 0.0, 1.0);
+                        clamped = clamped || c != color[k];
                         tau = c > 0.0 ? -std::log(c) / distance : double(kMaxTau);
                     }
                     m.tau[k] = float(std::clamp(tau, 0.0, double(kMaxTau)));
                 }
+                if (clamped)
+                    ignored.note("attenuationColor range", "KHR_materials_volume attenuationColor outside [0, 1] clamped", what);
                 m.albedo = m.baseColor;
             }
             scene.materials.push_back(std::move(m));
@@ -411,10 +419,12 @@ struct Converter {
 
     int convertPrimitive(const tinygltf::Mesh& gm, std::size_t pi, const std::string& what) {
         const tinygltf::Primitive& p = gm.primitives[pi];
+        detail::noteIgnoredAttributes(p, what, ignored);
         int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
         if (mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE ||
             mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP) {
             ++report.skippedPrimitives;  // not surfaces: nothing for a transparency technique to do
+            ignored.note("points and lines", "point and line primitives skipped: only triangles are drawn", what);
             return -1;
         }
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -445,7 +455,7 @@ struct Converter {
         }
         mesh.indices = toTriangleList(mode, idx, p.indices >= 0, what);
         if (mesh.indices.empty()) {
-            report.warnings.push_back(what + ": no triangles, skipped");
+            ignored.note("no triangles", "primitive with fewer than 3 vertices skipped: no triangles", what);
             return -1;
         }
 
@@ -462,7 +472,7 @@ struct Converter {
             if (mesh.normals.size() != vertexCount)
                 fail(what + ": NORMAL has " + str(mesh.normals.size()) + " elements, POSITION " + str(vertexCount));
             flat = !normalizeNormals(mesh.normals);
-            if (flat) report.warnings.push_back(what + ": zero-length NORMAL, using flat normals");
+            if (flat) ignored.note("zero-length normals", "zero-length NORMAL: flat normals used instead", what);
         }
         if (flat) {
             makeFlatNormals(mesh);
@@ -471,7 +481,7 @@ struct Converter {
         return scene.addMesh(std::move(mesh));
     }
 
-    static glm::mat4 localTransform(const tinygltf::Node& n, const std::string& what) {
+    glm::mat4 localTransform(const tinygltf::Node& n, const std::string& what) {
         auto finite = [&](const std::vector<double>& v) {
             for (double x : v)
                 if (!std::isfinite(x)) fail(what + ": non-finite transform");
@@ -498,6 +508,9 @@ struct Converter {
             q = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
             float len = glm::length(q);
             if (!(len > 1e-6f)) fail(what + ": rotation is a zero quaternion");
+            // Beyond float round-off of a written unit quaternion (validator: ROTATION_NON_UNIT).
+            if (std::abs(len - 1.0f) > 1e-3f)
+                ignored.note("rotation not unit", "rotation is not a unit quaternion: normalized", what);
             q = q / len;
         }
         if (!n.scale.empty()) {
@@ -599,12 +612,12 @@ struct Converter {
     }
 };
 
-tinygltf::Model parseFile(const std::filesystem::path& file, GltfLoadReport& report) {
+tinygltf::Model parseFile(const std::filesystem::path& file, GltfLoadReport& report, detail::IgnoredLog& ignored) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) fail("file not found");
     if (!std::filesystem::is_regular_file(file, ec)) fail("not a regular file");
     // tinygltf replaces mistyped properties by defaults; refuse them instead (see gltf_schema.hpp).
-    if (std::string problem = detail::checkGltfSchema(file); !problem.empty()) fail(problem);
+    if (std::string problem = detail::checkGltfSchema(file, &ignored); !problem.empty()) fail(problem);
     // The container is decided by the magic bytes, not the extension (.glb renamed .gltf happens).
     char magic[4] = {0, 0, 0, 0};
     {
@@ -621,7 +634,7 @@ tinygltf::Model parseFile(const std::filesystem::path& file, GltfLoadReport& rep
     bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
                      : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
     if (!ok) fail(err.empty() ? std::string("not a valid glTF file") : oneLine(err));
-    if (!warn.empty()) report.warnings.push_back(oneLine(warn));
+    if (!warn.empty()) report.warnings.push_back(file.string() + ": " + printable(oneLine(warn)));
     return model;
 }
 
@@ -634,17 +647,20 @@ Scene loadGltf(const std::filesystem::path& file) {
 
 Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report) {
     try {
-        tinygltf::Model model = parseFile(file, report);
-        Converter conv{model, report, {}, {}};
+        detail::IgnoredLog ignored;
+        tinygltf::Model model = parseFile(file, report, ignored);
+        Converter conv{model, report, ignored, {}, {}};
         conv.scene.name = file.stem().string();
         conv.convertMaterials();
         conv.convertMeshes();
         conv.convertNodes();
+        detail::noteIgnoredFeatures(model, ignored);
         if (conv.reachableTriangles() == 0) {
             std::string skipped = report.skippedPrimitives
                 ? " (" + std::to_string(report.skippedPrimitives) + " point/line primitives skipped)" : "";
             fail("no triangle geometry" + skipped);
         }
+        for (std::string& line : ignored.lines(file.string())) report.warnings.push_back(printable(std::move(line)));
         return std::move(conv.scene);
     } catch (const Bad& e) {
         throw LoadError(file.string() + ": " + printable(e.what()));

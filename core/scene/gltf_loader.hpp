@@ -10,11 +10,15 @@
 
 namespace strata {
 
-// What the loader dropped on purpose, for callers that want to tell the user.
+// What the loader dropped, ignored or repaired in a file it could still draw. The commands print
+// `warnings` on stderr: a file the Khronos validator rejects, or one whose skins, vertex colours
+// or textures are not drawn, never loads in silence.
 struct GltfLoadReport {
     int skippedPrimitives = 0;           // POINTS and LINES* primitives (not drawable as surfaces)
     int flatNormalMeshes = 0;            // meshes without (usable) NORMAL that got flat normals
-    std::vector<std::string> warnings;   // tinygltf's warnings, one line each
+    // One line each, "<file>: <what was ignored> (<first place>, and N more)": one line per kind
+    // of thing however many primitives show it (gltf_ignored.hpp); tinygltf's own warnings too.
+    std::vector<std::string> warnings;
 };
 
 // Loads a glTF file. Scene::name is the file stem; materials[0] is a default material and

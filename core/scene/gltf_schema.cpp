@@ -1,5 +1,7 @@
 #include "scene/gltf_schema.hpp"
 
+#include "scene/gltf_ignored.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -110,7 +112,7 @@ bool supportedRequiredExtension(const std::string& name) {
            name == "KHR_texture_basisu" || name == "EXT_texture_webp";
 }
 
-void checkDocument(const json& doc) {
+void checkDocument(const json& doc, IgnoredLog* ignored) {
     object(doc, "document");
     uintKey(doc, "scene", "");
     for (const char* key : {"extensionsUsed", "extensionsRequired"}) {
@@ -173,10 +175,16 @@ void checkDocument(const json& doc) {
         });
         numbersKey(m, "weights", p);
     });
-    eachObject(doc, "nodes", "", [](const json& n, const std::string& p) {
+    std::size_t nodeIndex = 0;
+    eachObject(doc, "nodes", "", [&](const json& n, const std::string& p) {
         uintsKey(n, "children", p);
         for (const char* k : {"camera", "skin", "mesh"}) uintKey(n, k, p);
         for (const char* k : {"matrix", "rotation", "scale", "translation", "weights"}) numbersKey(n, k, p);
+        // glTF forbids both (validator: NODE_MATRIX_TRS); tinygltf keeps the matrix and drops the rest.
+        if (ignored && member(n, "matrix") && (member(n, "translation") || member(n, "rotation") || member(n, "scale")))
+            ignored->note("matrix and TRS", "node has both matrix and translation/rotation/scale: TRS ignored",
+                          "node " + std::to_string(nodeIndex));
+        ++nodeIndex;
     });
     eachObject(doc, "scenes", "", [](const json& s, const std::string& p) { uintsKey(s, "nodes", p); });
     eachObject(doc, "textures", "", [](const json& t, const std::string& p) {
@@ -250,14 +258,14 @@ constexpr int kMaxDepth = 64;
 
 }  // namespace
 
-std::string checkGltfSchema(const std::filesystem::path& file) {
+std::string checkGltfSchema(const std::filesystem::path& file, IgnoredLog* ignored) {
     try {
         std::string text = jsonText(file);
         json doc = json::parse(text, [](int depth, json::parse_event_t, json&) {
             if (depth > kMaxDepth) throw Problem("JSON nested deeper than " + std::to_string(kMaxDepth) + " levels");
             return true;
         });
-        checkDocument(doc);
+        checkDocument(doc, ignored);
         checkNamesAndExtensions(doc);
         return {};
     } catch (const Problem& p) {

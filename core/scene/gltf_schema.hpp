@@ -10,8 +10,12 @@
 
 namespace strata::detail {
 
+class IgnoredLog;
+
 // Returns "" when the JSON (of a .gltf, or the JSON chunk of a .glb) passes, otherwise one line
-// saying what is wrong, e.g. "materials[0].pbrMetallicRoughness: expected an object".
-std::string checkGltfSchema(const std::filesystem::path& file);
+// saying what is wrong, e.g. "materials[0].pbrMetallicRoughness: expected an object". What only
+// the JSON shows and tinygltf then drops without a word (a node's translation, rotation and scale
+// beside its matrix) is noted in `ignored` when given.
+std::string checkGltfSchema(const std::filesystem::path& file, IgnoredLog* ignored = nullptr);
 
 }  // namespace strata::detail

@@ -14,6 +14,11 @@ namespace strata {
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// The largest attenuation a material holds, per metre: "opaque within a micrometre". Loaders clamp
+// or refuse larger values, so the shaders' exp(-tau d) and its derivatives stay finite and
+// defined at d = 0 (an infinite tau, from a glTF attenuationColor of 0, would give NaN there).
+constexpr float kMaxTau = 1.0e4f;
+
 const char* to_string(AlphaMode mode);
 
 struct Material {
@@ -24,7 +29,8 @@ struct Material {
     float alphaCutoff = 0.5f;        // MASK: fragments with alpha < cutoff are discarded
     // Volumetric model (Barta & Kovacs): attenuation per metre for each colour channel and the
     // single-scattering albedo. tau = -ln(attenuationColor) / attenuationDistance for glTF
-    // KHR_materials_volume; zero means "a thin surface" for the surface techniques.
+    // KHR_materials_volume; zero means "a thin surface" for the surface techniques. Both reach
+    // the shaders as uTau and uAlbedo (shaders/common/surface.glsl). tau is in [0, kMaxTau].
     glm::vec3 tau{0.0f};
     glm::vec3 albedo{0.0f};
     bool doubleSided = true;

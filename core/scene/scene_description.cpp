@@ -89,7 +89,9 @@ Material parseMaterial(const json& m, const std::string& where) {
     }
     if (m.contains("tau")) {
         mat.tau = vector<3>(m["tau"], w + "tau");
-        if (mat.tau.x < 0.0f || mat.tau.y < 0.0f || mat.tau.z < 0.0f) fail(w + "tau: must be >= 0");
+        for (int k = 0; k < 3; ++k)
+            if (!(mat.tau[k] >= 0.0f && mat.tau[k] <= kMaxTau))  // 1e300 is finite JSON but an infinite float
+                fail(w + "tau: components must be in [0, " + std::to_string(int(kMaxTau)) + "] per metre");
     }
     if (m.contains("albedo")) mat.albedo = unitRange3(m["albedo"], w + "albedo");
     if (m.contains("double_sided")) {
@@ -180,7 +182,7 @@ void parseCamera(Scene& scene, const json& c) {
     scene.camera = pose;
 }
 
-Scene parse(const json& doc, const std::filesystem::path& jsonFile) {
+Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<std::string>* warnings) {
     if (!doc.is_object()) fail("expected a JSON object at the top level");
     onlyKeys(doc, {"name", "camera", "light_direction", "background", "objects"}, "");
     Scene scene;
@@ -230,11 +232,15 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile) {
         }
 
         Scene loaded;
+        GltfLoadReport report;
         try {
-            loaded = loadGltf(model);
+            loaded = loadGltf(model, report);
         } catch (const LoadError& e) {
             fail("object " + std::to_string(i) + ": " + e.what());
         }
+        if (warnings)
+            for (const std::string& line : report.warnings)
+                if (std::find(warnings->begin(), warnings->end(), line) == warnings->end()) warnings->push_back(line);
         if (fit > 0.0f) node.local = node.local * fitTransform(loaded, fit);
         if (override) node.materialOverride = scene.addMaterial(std::move(*override));
         merge(scene, std::move(loaded), std::move(node));
@@ -244,7 +250,7 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile) {
 
 }  // namespace
 
-Scene loadSceneDescription(const std::filesystem::path& jsonFile) {
+Scene loadSceneDescription(const std::filesystem::path& jsonFile, std::vector<std::string>* warnings) {
     std::string prefix = jsonFile.string() + ": ";
     std::ifstream in(jsonFile, std::ios::binary);
     if (!in) throw LoadError(prefix + (std::filesystem::exists(jsonFile) ? "cannot open file" : "file not found"));
@@ -263,7 +269,7 @@ Scene loadSceneDescription(const std::filesystem::path& jsonFile) {
         throw LoadError(prefix + "JSON " + what);
     }
     try {
-        return parse(doc, jsonFile);
+        return parse(doc, jsonFile, warnings);
     } catch (const Bad& e) {
         throw LoadError(prefix + e.what());
     } catch (const std::runtime_error& e) {  // flatten() on a loaded model (cannot happen for checked graphs)

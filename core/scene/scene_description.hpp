@@ -29,11 +29,15 @@
 #include "scene/scene.hpp"
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace strata {
 
 // Throws LoadError("<json file>: <what is wrong>"); a model that fails to load gives
-// "<json file>: object N: <the loader's message>".
-Scene loadSceneDescription(const std::filesystem::path& jsonFile);
+// "<json file>: object N: <the loader's message>". The glTF loader's warnings for the models
+// (GltfLoadReport::warnings, each naming its model file) are appended to `warnings` when given,
+// each line once however many objects place that model.
+Scene loadSceneDescription(const std::filesystem::path& jsonFile, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace strata

@@ -4,10 +4,14 @@
 #include "scene/scene.hpp"
 
 #include <string>
+#include <vector>
 
 namespace strata {
 
 // Throws LoadError (bad file) or std::invalid_argument (bad builtin spec), one line each.
-Scene openScene(const std::string& spec);
+// What a glTF file holds that is not drawn as given (GltfLoadReport::warnings, one line each,
+// each naming its file, no line twice) is appended to `warnings` when given, for the caller to
+// print; nothing is printed here.
+Scene openScene(const std::string& spec, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace strata

@@ -7,9 +7,20 @@ uniform float uAlpha;
 uniform uint uObjectId;
 uniform vec3 uLightDir;
 uniform float uAlphaCutoff;
+// The volumetric model (Barta & Kovacs; Material::tau and albedo): attenuation per metre for
+// each channel and the single-scattering albedo, both zero for a thin surface.
+uniform vec3 uTau;
+uniform vec3 uAlbedo;
 
 in vec3 vWorldNormal;
 
 vec4 surfaceColor() {
     return vec4(shadeSurface(uBaseColor, vWorldNormal, uLightDir), uAlpha);
+}
+
+// What `distance` metres of this object's medium let through, per channel: exp(-tau d). Finite,
+// and 1 at d = 0, because the loaders keep tau finite (kMaxTau in core/scene/scene.hpp): an
+// infinite tau would give inf * 0 = NaN for a zero-length segment.
+vec3 volumeTransmittance(float distance) {
+    return exp(-uTau * distance);
 }

@@ -1,0 +1,112 @@
+#include "io/atomic_file.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace strata {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::runtime_error failure(const fs::path& path, const std::string& what) {
+    return std::runtime_error(path.string() + ": " + what);
+}
+
+std::string errnoText(int error) { return std::generic_category().message(error); }
+
+fs::path folderOf(const fs::path& path) { return path.has_parent_path() ? path.parent_path() : fs::path("."); }
+
+// The checks that need no write: the folder is there and is a folder, and `path` is not
+// something a rename would replace wrongly (a folder, or a device such as /dev/null).
+void checkPlace(const fs::path& path) {
+    if (path.filename().empty()) throw failure(path, "names a folder, not a file");
+    std::error_code ec;
+    const fs::path folder = folderOf(path);
+    auto folderStatus = fs::status(folder, ec);
+    if (!fs::exists(folderStatus)) throw failure(path, "folder " + folder.string() + " does not exist");
+    if (!fs::is_directory(folderStatus)) throw failure(path, folder.string() + " is not a folder");
+    auto status = fs::status(path, ec);
+    if (fs::is_directory(status)) throw failure(path, "is a folder");
+    if (fs::exists(status) && !fs::is_regular_file(status)) throw failure(path, "exists and is not a regular file");
+}
+
+// A name no other writer (thread or process) uses: the destination's name, a marker, this
+// process and a counter, and the destination's extension last.
+fs::path temporaryName(const fs::path& path) {
+    static std::atomic<unsigned> counter{0};
+    std::string name = path.filename().string() + ".partial-" + std::to_string(::getpid()) + "-" +
+                       std::to_string(counter++) + path.extension().string();
+    return folderOf(path) / name;
+}
+
+// Flushes the finished temporary to disk before the rename, so a crash or power cut after the
+// rename cannot leave the destination's name on an empty or partial file.
+void syncToDisk(const fs::path& file) {
+    int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error("cannot reopen the written file: " + errnoText(errno));
+    int rc = ::fsync(fd);
+    int error = errno;
+    ::close(fd);
+    if (rc != 0) throw std::runtime_error("cannot flush to disk: " + errnoText(error));
+}
+
+}  // namespace
+
+void checkWritable(const fs::path& path) {
+    checkPlace(path);
+    const fs::path folder = folderOf(path);
+    if (::access(folder.c_str(), W_OK) != 0) throw failure(path, "cannot write in " + folder.string() + ": " + errnoText(errno));
+}
+
+void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
+    checkPlace(path);
+    const fs::path temporary = temporaryName(path);
+    // O_EXCL: the name is ours alone; an existing file of that name is never overwritten.
+    int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) throw failure(path, "cannot write: " + errnoText(errno));
+    ::close(fd);
+    auto removeTemporary = [&] {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+    };
+    try {
+        write(temporary);
+        syncToDisk(temporary);
+    } catch (const std::exception& e) {
+        removeTemporary();
+        throw failure(path, e.what());
+    } catch (...) {
+        removeTemporary();
+        throw;
+    }
+    if (::rename(temporary.c_str(), path.c_str()) != 0) {
+        int error = errno;
+        removeTemporary();
+        // A folder or file put in the destination's place since checkPlace.
+        throw failure(path, error == EISDIR ? std::string("is a folder") : "cannot move into place: " + errnoText(error));
+    }
+}
+
+void writeTextFile(const fs::path& path, std::string_view text) {
+    writeFileAtomically(path, [&](const fs::path& temporary) {
+        std::FILE* f = std::fopen(temporary.c_str(), "wb");
+        if (!f) throw std::runtime_error("cannot write: " + errnoText(errno));
+        bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        int error = errno;
+        if (std::fclose(f) != 0 && ok) {
+            ok = false;
+            error = errno;
+        }
+        if (!ok) throw std::runtime_error("write failed: " + errnoText(error));
+    });
+}
+
+}  // namespace strata

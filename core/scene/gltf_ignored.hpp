@@ -1,0 +1,40 @@
+#pragma once
+// What the glTF loader ignores, drops or repairs in a file it can still draw, said once per kind
+// of thing (DESIGN.md: never silently wrong). A file the Khronos validator rejects, such as one
+// with TEXCOORD_1 but no TEXCOORD_0, must not load in silence; neither may a valid file whose
+// skins, morph targets, vertex colours or base-colour textures Strata does not draw.
+// Internal to the loader (gltf_loader.cpp); the lines reach callers through GltfLoadReport.
+#include <tiny_gltf.h>
+
+#include <string>
+#include <vector>
+
+namespace strata::detail {
+
+// One line per kind however often it occurs: a model of 500 primitives with the same gap in its
+// TEXCOORD sets gives one line naming the first place and how many more, not 500.
+class IgnoredLog {
+public:
+    // `kind` groups occurrences; the first occurrence's `message` and `place` are kept.
+    void note(const std::string& kind, const std::string& message, const std::string& place = {});
+    // "<file>: <message> (<place>, and N more)", in the order kinds were first seen.
+    std::vector<std::string> lines(const std::string& file) const;
+
+private:
+    struct Entry {
+        std::string kind, message, place;
+        int more = 0;
+    };
+    std::vector<Entry> entries_;
+};
+
+// The attributes of a triangle primitive Strata does not read, and the broken ones: an indexed
+// set (TEXCOORD_n, COLOR_n, JOINTS_n, WEIGHTS_n) with a gap, an unknown semantic, vertex
+// colours, morph targets.
+void noteIgnoredAttributes(const tinygltf::Primitive& primitive, const std::string& place, IgnoredLog& log);
+
+// Whole-document features Strata does not draw: extensions it does not implement, skins,
+// animations, base-colour textures.
+void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log);
+
+}  // namespace strata::detail

@@ -1,0 +1,129 @@
+// writeFileAtomically: the destination is complete or untouched, never half-written, and no
+// temporary is left behind whichever way the write fails.
+#include "io/atomic_file.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <functional>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using namespace strata;
+
+namespace {
+
+struct TempDir {
+    fs::path dir;
+    TempDir() {
+        dir = fs::temp_directory_path() / ("strata-atomic-" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(dir, ec);
+    }
+};
+
+std::set<std::string> listing(const fs::path& dir) {
+    std::set<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) names.insert(fs::relative(e.path(), dir).string());
+    return names;
+}
+
+std::string contents(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string errorOf(const std::function<void()>& write) {
+    try {
+        write();
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("atomic file: writes the whole text and leaves only the destination") {
+    TempDir tmp;
+    fs::path file = tmp.dir / "report.json";
+    writeTextFile(file, "{\"a\": 1}\n");
+    CHECK(contents(file) == "{\"a\": 1}\n");
+    writeTextFile(file, "replaced");
+    CHECK(contents(file) == "replaced");
+    CHECK(listing(tmp.dir) == std::set<std::string>{"report.json"});
+    // Writers that choose the format by the extension (OpenImageIO) see the destination's.
+    writeFileAtomically(tmp.dir / "image.exr", [&](const fs::path& temporary) {
+        CHECK(temporary.extension() == ".exr");
+        CHECK(temporary.parent_path() == tmp.dir);
+        CHECK(fs::exists(temporary));
+        std::ofstream(temporary) << "x";
+    });
+    CHECK(listing(tmp.dir) == std::set<std::string>{"report.json", "image.exr"});
+}
+
+TEST_CASE("atomic file: a failing writer leaves the old file and no temporary") {
+    TempDir tmp;
+    fs::path file = tmp.dir / "bench.csv";
+    writeTextFile(file, "old");
+    fs::path seen;
+    std::string error = errorOf([&] {
+        writeFileAtomically(file, [&](const fs::path& temporary) {
+            seen = temporary;
+            std::ofstream(temporary) << "half of the new conte";
+            throw std::runtime_error("disk on fire");
+        });
+    });
+    CHECK(error == file.string() + ": disk on fire");
+    CHECK(seen.parent_path() == tmp.dir);  // the temporary was in the destination's folder...
+    CHECK_FALSE(fs::exists(seen));         // ...and is gone
+    CHECK(contents(file) == "old");
+    CHECK(listing(tmp.dir) == std::set<std::string>{"bench.csv"});
+}
+
+TEST_CASE("atomic file: destinations that cannot be written are refused, naming the file, leaving nothing") {
+    TempDir tmp;
+    fs::create_directories(tmp.dir / "folder");
+    ::mkfifo((tmp.dir / "fifo").c_str(), 0600);
+    const std::set<std::string> before = listing(tmp.dir);
+    struct Case {
+        fs::path path;
+        std::string message;
+    };
+    const Case cases[] = {
+        {tmp.dir / "folder", ": is a folder"},
+        {tmp.dir / "missing" / "out.png", ": folder " + (tmp.dir / "missing").string() + " does not exist"},
+        {tmp.dir / "fifo" / "out.png", ": " + (tmp.dir / "fifo").string() + " is not a folder"},
+        {tmp.dir / "fifo", ": exists and is not a regular file"},
+        {tmp.dir / "folder" / "", ": names a folder, not a file"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.path);
+        CHECK(errorOf([&] { checkWritable(c.path); }) == c.path.string() + c.message);
+        CHECK(errorOf([&] { writeTextFile(c.path, "text"); }) == c.path.string() + c.message);
+        CHECK(listing(tmp.dir) == before);
+    }
+    // A folder without write permission (root writes anyway, so only checked for other users).
+    if (::geteuid() != 0) {
+        fs::create_directories(tmp.dir / "locked");
+        fs::permissions(tmp.dir / "locked", fs::perms::owner_read | fs::perms::owner_exec);
+        fs::path file = tmp.dir / "locked" / "out.txt";
+        CHECK(errorOf([&] { writeTextFile(file, "text"); }).rfind(file.string() + ": cannot write", 0) == 0);
+        CHECK(errorOf([&] { checkWritable(file); }).rfind(file.string() + ": cannot write in", 0) == 0);
+        CHECK(fs::is_empty(tmp.dir / "locked"));
+    }
+}
