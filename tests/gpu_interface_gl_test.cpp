@@ -236,6 +236,8 @@ std::vector<ProgramCase> programCases() {
         {{full, "frame/deflect.frag.glsl"}, {}, {{"uSource", tex(BIND_SOURCE)}, {"uOutside", kCounters}}},
         {{full, "frame/present.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
         {{scene, "oit/blend.frag.glsl"}, {}, {}},
+        // screen-door family
+        {{scene, "oit/screendoor/crow.frag.glsl"}, {}, {}},
         // abuffer
         {{scene, "oit/abuffer_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {}, listResolve},
