@@ -12,6 +12,7 @@
 #include "oit/buffers/buffer_bindings.h"
 #include "oit/buffers/prefix_sum.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/screendoor/screendoor_bindings.h"
 
 #include <doctest/doctest.h>
 
@@ -238,6 +239,12 @@ std::vector<ProgramCase> programCases() {
         {{scene, "oit/blend.frag.glsl"}, {}, {}},
         // screen-door family
         {{scene, "oit/screendoor/crow.frag.glsl"}, {}, {}},
+        {{full, "oit/screendoor/supersample_fill.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}}},
+        {{full, "oit/screendoor/box_average.frag.glsl"}, {}, {{"uSource", tex(BIND_DOWNSAMPLE_SOURCE)}}},
+        {{scene, "oit/screendoor/screendoor_image.frag.glsl"}, {}, {{"uAlphaMasks", tex(BIND_ALPHA_MASKS)}}},
+        {{scene, "oit/screendoor/object_mask.geom.glsl", "oit/screendoor/screendoor_object.frag.glsl"}, {},
+         {{"uAlphaMasks", tex(BIND_ALPHA_MASKS)}}},
         // abuffer
         {{scene, "oit/abuffer_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {}, listResolve},

@@ -91,3 +91,130 @@ TEST_CASE("crow matches its formula on a sphere") {
     // moves (1 - alpha)^2 by < 0.01 at p = 3; 8-bit nothing here (RGBA32F targets).
     CHECK(maxError < 0.01);
 }
+
+namespace {
+
+const char* const kScreenDoorIds[] = {"screendoor", "screendoor-object"};
+
+// One quad of `alpha` facing the camera and filling the view, over a white background.
+Scene facingQuadScene(glm::vec3 color, float alpha) {
+    Scene s = emptyTestScene();
+    place(s, makeQuad(8.0f, 8.0f), transparentMaterial(color, alpha), at({0, 0, -2}));
+    return s;
+}
+
+// Two overlapping quads and a sphere that crosses both: every pixel has 1 to 4 layers.
+Scene overlappingScene() {
+    Scene s = emptyTestScene();
+    place(s, makeQuad(3.0f, 3.0f), transparentMaterial({0.9f, 0.2f, 0.1f}, 0.6f), at({-0.4f, 0.1f, -3.0f}));
+    place(s, makeQuad(3.0f, 3.0f), transparentMaterial({0.1f, 0.3f, 0.9f}, 0.35f), at({0.5f, -0.2f, -3.6f}));
+    place(s, makeSphere(0.9f, 32, 16), transparentMaterial({0.2f, 0.9f, 0.3f}, 0.5f), at({0.0f, 0.0f, -3.3f}));
+    return s;
+}
+
+bool bitwiseEqual(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
+}
+
+double meanRed(const Image& image) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) sum += image.at(x, y).r;
+    return sum / (double(image.width) * image.height);
+}
+
+}  // namespace
+
+TEST_CASE("screen-door techniques are registered as order-independent baselines") {
+    for (const std::string id : {"crow", "screendoor", "screendoor-object"}) {
+        CAPTURE(id);
+        const TechniqueEntry* e = findTechnique(id);
+        REQUIRE(e != nullptr);
+        CHECK(e->info.family == "baseline");
+        CHECK_FALSE(e->info.robust);
+    }
+    for (const char* id : kScreenDoorIds)
+        for (const char* name : {"supersampling", "mask_size", "seed"}) CHECK(test::hasSetting(id, name));
+}
+
+TEST_CASE("screen-door: mean opacity of a facing quad is its alpha at 16x16 supersampling") {
+    // A black quad over white: each output pixel is 1 - (kept samples) / 256. The 16x16 output
+    // at n = 16 holds K = 65536 samples. Each sample keeps or rejects by one mask texel, and
+    // texels are independent Bernoulli(alpha') draws, alpha' = round(255 alpha) / 255. The 256^2
+    // mask holds as many texels as there are samples: image space maps samples to texels one to
+    // one; object space may land up to 4 samples on one texel (texels slightly larger than
+    // samples off-axis, and the quad's two triangles share the mask), so the variance of the
+    // mean is at most 4 alpha(1 - alpha) / K. Tolerance: 5 standard deviations of that,
+    // sqrt(4 * 0.25 / 65536) * 5 = 0.0195 at alpha 0.5, plus the 8-bit quantization 0.5 / 255.
+    // The images are deterministic (seeded), so the test is not flaky; 5 sigma makes a seed
+    // that fails it a one-in-a-million draw.
+    const glm::ivec2 size(16, 16);
+    const double samples = double(size.x) * size.y * 256.0;
+    for (float alpha : {0.25f, 0.5f, 0.8f}) {
+        test::Fixture f(facingQuadScene(glm::vec3(0.0f), alpha));
+        for (const std::string id : kScreenDoorIds) {
+            CAPTURE(id);
+            CAPTURE(alpha);
+            auto technique = test::makeTechnique(id, {"supersampling=16", "mask_size=256"});
+            test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+            const double opacity = 1.0 - meanRed(r.image);
+            const double tolerance = 5.0 * std::sqrt(4.0 * alpha * (1.0 - alpha) / samples) + 0.5 / 255.0;
+            MESSAGE(id << " alpha " << alpha << ": mean opacity " << opacity << " (tolerance " << tolerance << ")");
+            CHECK(std::abs(opacity - alpha) <= tolerance);
+            CHECK(r.result.stats.passes == 1 + 1 + 4);  // fill, draw, four 2x2 averages (one tile)
+            CHECK(r.result.stats.objectDraws == 1);
+        }
+    }
+}
+
+TEST_CASE("screen-door: alpha 0 is invisible and alpha 1 opaque, exactly") {
+    const glm::ivec2 size(12, 10);
+    const glm::vec3 color(0.7f, 0.4f, 0.2f);  // lit head-on: the shaded colour is the base colour
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        {
+            test::Fixture f(facingQuadScene(color, 0.0f));
+            Image image = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"supersampling=4"})).image;
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) CHECK(glm::vec3(image.at(x, y)) == glm::vec3(1.0f));
+        }
+        {
+            test::Fixture f(facingQuadScene(color, 1.0f));
+            Image image = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"supersampling=4"})).image;
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) {
+                    glm::vec3 got(image.at(x, y));
+                    CHECK(glm::all(glm::lessThanEqual(glm::abs(got - color), glm::vec3(1e-6f))));
+                }
+        }
+    }
+}
+
+TEST_CASE("screen-door: the image does not depend on draw order, bit for bit") {
+    test::Fixture f(overlappingScene());
+    const glm::ivec2 size(24, 20);
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        auto technique = test::makeTechnique(id, {"supersampling=8"});
+        Image forward = test::renderWith(*f.gpu, f.camera, size, *technique).image;
+        FrameOptions reversed;
+        reversed.reverseSubmission = true;
+        Image backward = test::renderWith(*f.gpu, f.camera, size, *technique, reversed).image;
+        CHECK(bitwiseEqual(forward, backward));
+        // ...and it is not the opaque image: something transparent was drawn.
+        CHECK(meanRed(forward) < 0.99);
+    }
+}
+
+TEST_CASE("screen-door: the same seed gives the same image bit for bit, another seed another image") {
+    test::Fixture f(overlappingScene());
+    const glm::ivec2 size(24, 20);
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        Image first = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=7"})).image;
+        Image again = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=7"})).image;
+        Image other = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=8"})).image;
+        CHECK(bitwiseEqual(first, again));
+        CHECK_FALSE(bitwiseEqual(first, other));
+    }
+}

@@ -1,0 +1,19 @@
+// Binding points private to the screen-door family, apart from common/bindings.h because
+// nothing outside the family reads them; texture units 0 and 1 stay the shared opaque colour
+// and depth (the supersampled fill reads both).
+#ifndef STRATA_SCREENDOOR_BINDINGS_H
+#define STRATA_SCREENDOOR_BINDINGS_H
+#include "common/host_device.h"
+
+GPU_NAMESPACE_BEGIN
+
+GPU_CONST uint BIND_ALPHA_MASKS = 2u;        // texture unit: one binary mask per alpha level (r8ui array)
+GPU_CONST uint BIND_DOWNSAMPLE_SOURCE = 3u;  // texture unit: the supersampled level a 2x2 average reads
+
+// Alpha is quantized to this many levels above zero (8-bit alpha); mask layer l keeps a texel
+// with probability l / ALPHA_LEVELS, so layer 0 is empty and the last layer is full.
+GPU_CONST uint ALPHA_LEVELS = 255u;
+
+GPU_NAMESPACE_END
+
+#endif
