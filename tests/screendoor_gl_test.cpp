@@ -44,6 +44,25 @@ void place(Scene& s, Mesh mesh, const Material& material, const glm::mat4& world
 
 glm::mat4 at(glm::vec3 p) { return glm::translate(glm::mat4(1.0f), p); }
 
+// A w x h quad facing +Z split into cells of about one unit: screendoor-object sizes its mask
+// texels per triangle at the centroid's distance (Sen et al. 4.2.1), so a triangle that spans a
+// wide range of distances gets texels far from one sample in size where it is near the eye.
+Mesh makeGrid(float width, float height) {
+    Mesh m;
+    const int nx = std::max(1, int(std::ceil(width))), ny = std::max(1, int(std::ceil(height)));
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            m.positions.push_back({width * (float(i) / nx - 0.5f), height * (float(j) / ny - 0.5f), 0.0f});
+            m.normals.push_back({0, 0, 1});
+        }
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const std::uint32_t a = std::uint32_t(j * (nx + 1) + i), b = a + 1, c = a + std::uint32_t(nx + 1), d = c + 1;
+            m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+        }
+    return m;
+}
+
 // Crow's opacity as crow.frag.glsl defines it (amin face-on, amax at the rim).
 double crowAlpha(double nz, double amin, double amax, double p) {
     return amax - (amax - amin) * (1.0 - std::pow(1.0 - nz, p));
@@ -216,5 +235,41 @@ TEST_CASE("screen-door: the same seed gives the same image bit for bit, another 
         Image other = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=8"})).image;
         CHECK(bitwiseEqual(first, again));
         CHECK_FALSE(bitwiseEqual(first, other));
+    }
+}
+
+TEST_CASE("screen-door: a frame past one tile of samples renders in tiles that cover it") {
+    // 160 x 6 pixels at n = 16 is 2560 samples wide, past the 2048 of one tile: two tiles of 128
+    // and 32 columns, each drawn through its own projection. A quad whose left edge projects to
+    // column 120 crosses the seam: columns left of the edge stay white exactly; every column
+    // right of it shows the quad at its alpha, within 5 standard deviations of one column's
+    // 6 * 256 samples (at most 4 per texel, as in the flat-quad test): 0.13 at alpha 0.5. A tile
+    // drawn through the whole frame's projection shows the edge at the wrong column.
+    const float alpha = 0.5f;
+    const glm::ivec2 size(160, 6);
+    const float depth = 2.0f;
+    Scene s = emptyTestScene();
+    const float halfWidth = depth * std::tan(glm::radians(50.0f) / 2.0f) * float(size.x) / float(size.y);
+    const float edge = 0.5f * halfWidth;  // NDC x = 0.5: column 120
+    place(s, makeGrid(100.0f, 8.0f), transparentMaterial(glm::vec3(0.0f), alpha), at({edge + 50.0f, 0, -depth}));
+    test::Fixture f(std::move(s));
+    // Clip planes fitted to the quad's bounding sphere would cut the quad off: set them here.
+    f.camera.nearPlane = 0.5f;
+    f.camera.farPlane = 200.0f;
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        auto technique = test::makeTechnique(id, {"supersampling=16", "mask_size=256"});
+        test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+        CHECK(r.result.stats.tiles == 2);
+        const double tolerance = 5.0 * std::sqrt(4.0 * alpha * (1.0 - alpha) / (size.y * 256.0));
+        for (int x = 0; x < size.x; ++x) {
+            if (x == 119 || x == 120) continue;  // the edge column and its neighbour: partly covered
+            double sum = 0.0;
+            for (int y = 0; y < size.y; ++y) sum += r.image.at(x, y).r;
+            const double opacity = 1.0 - sum / size.y;
+            CAPTURE(x);
+            if (x < 119) CHECK(opacity == 0.0);
+            else CHECK(std::abs(opacity - alpha) <= tolerance);
+        }
     }
 }

@@ -18,6 +18,8 @@ TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const SceneProg
     glProgramUniform1ui(p, glGetUniformLocation(p, "uSeed"), parameters.seed);
     glProgramUniform1f(p, glGetUniformLocation(p, "uSamplesPerUnit"), float(frame.size.y * n / (2.0 * tanHalfFov)));
     glProgramUniform3fv(p, glGetUniformLocation(p, "uEyePosition"), 1, glm::value_ptr(frame.camera.position));
+    const glm::vec3 axis = frame.camera.forward();
+    glProgramUniform3fv(p, glGetUniformLocation(p, "uViewAxis"), 1, glm::value_ptr(axis));
     const GLint tileOrigin = glGetUniformLocation(p, "uTileOriginSamples");
     masks_.bind(parameters.maskSide, parameters.seed);
 

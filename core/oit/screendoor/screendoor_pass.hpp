@@ -23,7 +23,7 @@ class ScreenDoorPass {
 public:
     // Sets on `program` (when it declares them): uSeed, uTileOriginSamples (the tile's first
     // sample in the whole supersampled frame), uSamplesPerUnit (supersampled pixels per scene
-    // unit at unit distance: h_im / (2 tan(fov / 2))) and uEyePosition.
+    // unit at unit depth: h_im / (2 tan(fov / 2))), uEyePosition and uViewAxis.
     TechniqueStats render(const FrameContext& frame, const SceneProgram& program, const PassParameters& parameters);
 
 private:
