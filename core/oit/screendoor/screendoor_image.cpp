@@ -32,8 +32,9 @@ public:
 
     void render(const FrameContext& frame) override {
         if (!program_.program) program_ = buildSceneProgram("oit/screendoor/screendoor_image.frag.glsl");
-        stats_ = pass_.render(frame, program_,
-                              {settings_.supersampling, settings_.mask_size, std::uint32_t(settings_.seed), "screendoor"});
+        const PassParameters parameters{settings_.supersampling, settings_.mask_size, std::uint32_t(settings_.seed), "screendoor"};
+        setSamplingUniforms(program_.id(), frame, parameters);
+        stats_ = pass_.render(frame, parameters, drawMaskedObjects(program_));
     }
 
 private:

@@ -36,9 +36,10 @@ public:
         if (!program_.program)
             program_ = buildSceneProgram(std::vector<std::string>{"oit/screendoor/object_mask.geom.glsl",
                                                                   "oit/screendoor/screendoor_object.frag.glsl"});
-        stats_ = pass_.render(frame, program_,
-                              {settings_.supersampling, settings_.mask_size, std::uint32_t(settings_.seed),
-                               "screendoor-object"});
+        const PassParameters parameters{settings_.supersampling, settings_.mask_size, std::uint32_t(settings_.seed),
+                               "screendoor-object"};
+        setSamplingUniforms(program_.id(), frame, parameters);
+        stats_ = pass_.render(frame, parameters, drawMaskedObjects(program_));
     }
 
 private:

@@ -9,20 +9,28 @@
 
 namespace strata::screendoor {
 
-TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const SceneProgram& program,
-                                      const PassParameters& parameters) {
+void setSamplingUniforms(GLuint p, const FrameContext& frame, const PassParameters& parameters) {
+    const double tanHalfFov = std::tan(glm::radians(double(frame.camera.fovYDegrees)) / 2.0);
+    const double samplesPerUnit = frame.size.y * parameters.factor / (2.0 * tanHalfFov);
+    const glm::vec3 axis = frame.camera.forward();
+    glProgramUniform1ui(p, glGetUniformLocation(p, "uSeed"), parameters.seed);
+    glProgramUniform1f(p, glGetUniformLocation(p, "uSamplesPerUnit"), float(samplesPerUnit));
+    glProgramUniform3fv(p, glGetUniformLocation(p, "uEyePosition"), 1, glm::value_ptr(frame.camera.position));
+    glProgramUniform3fv(p, glGetUniformLocation(p, "uViewAxis"), 1, glm::value_ptr(axis));
+    glProgramUniform1f(p, glGetUniformLocation(p, "uNearPlane"), frame.camera.nearPlane);
+}
+
+DrawTile drawMaskedObjects(const SceneProgram& program) {
+    return [&program](const FrameContext& tileFrame, glm::ivec2 tileOriginSamples) {
+        const GLuint p = program.id();
+        glProgramUniform2i(p, glGetUniformLocation(p, "uTileOriginSamples"), tileOriginSamples.x, tileOriginSamples.y);
+        return drawTransparent(tileFrame, program, tileFrame.transparentOrder);
+    };
+}
+
+TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const PassParameters& parameters, const DrawTile& draw) {
     if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     const int n = parameters.factor;
-    const GLuint p = program.id();
-    const double tanHalfFov = std::tan(glm::radians(double(frame.camera.fovYDegrees)) / 2.0);
-    glProgramUniform1ui(p, glGetUniformLocation(p, "uSeed"), parameters.seed);
-    glProgramUniform1f(p, glGetUniformLocation(p, "uSamplesPerUnit"), float(frame.size.y * n / (2.0 * tanHalfFov)));
-    glProgramUniform3fv(p, glGetUniformLocation(p, "uEyePosition"), 1, glm::value_ptr(frame.camera.position));
-    const glm::vec3 axis = frame.camera.forward();
-    glProgramUniform3fv(p, glGetUniformLocation(p, "uViewAxis"), 1, glm::value_ptr(axis));
-    const GLint tileOrigin = glGetUniformLocation(p, "uTileOriginSamples");
-    masks_.bind(parameters.maskSide, parameters.seed);
-
     TechniqueStats stats;
     GLuint64 kept = 0;
     const std::vector<Tile> tiles = supersampleTiles(frame.size, n);
@@ -30,12 +38,11 @@ TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const SceneProg
         {
             gl::ScopedPass pass(frame.timer, std::string(parameters.name) + " draw");
             target_.begin(frame, tile, n);
-            glProgramUniform2i(p, tileOrigin, tile.origin.x * n, tile.origin.y * n);
+            if (parameters.maskSide > 0) masks_.bind(parameters.maskSide, parameters.seed);
             FrameContext tileFrame = frame;
             tileFrame.viewProjection = tileClipTransform(frame.size, tile) * frame.viewProjection;
-            masks_.bind(parameters.maskSide, parameters.seed);
             glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-            stats.objectDraws += drawTransparent(tileFrame, program, frame.transparentOrder);
+            stats.objectDraws += draw(tileFrame, tile.origin * n);
             glEndQuery(GL_SAMPLES_PASSED);
             GLuint64 tileKept = 0;
             glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &tileKept);
@@ -47,7 +54,7 @@ TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const SceneProg
     glDepthMask(GL_FALSE);
     stats.tiles = int(tiles.size());
     stats.passes = int(tiles.size()) * (1 + SupersampledTarget::passesPerTile(n));
-    stats.bytes = masks_.bytes() + target_.bytes();
+    stats.bytes = (parameters.maskSide > 0 ? masks_.bytes() : 0) + target_.bytes();
     // Samples that a mask kept and the z-buffer passed, in output pixels (n^2 samples each).
     stats.fragmentsCaptured = (kept + std::uint64_t(n) * n / 2) / (std::uint64_t(n) * n);
     return stats;
