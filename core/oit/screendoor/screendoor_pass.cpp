@@ -17,6 +17,8 @@ void setSamplingUniforms(GLuint p, const FrameContext& frame, const PassParamete
     glProgramUniform1f(p, glGetUniformLocation(p, "uSamplesPerUnit"), float(samplesPerUnit));
     glProgramUniform3fv(p, glGetUniformLocation(p, "uEyePosition"), 1, glm::value_ptr(frame.camera.position));
     glProgramUniform3fv(p, glGetUniformLocation(p, "uViewAxis"), 1, glm::value_ptr(axis));
+    const glm::vec3 right = frame.camera.right();
+    glProgramUniform3fv(p, glGetUniformLocation(p, "uViewRight"), 1, glm::value_ptr(right));
     glProgramUniform1f(p, glGetUniformLocation(p, "uNearPlane"), frame.camera.nearPlane);
 }
 

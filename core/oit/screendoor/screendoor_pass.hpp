@@ -21,7 +21,7 @@ struct PassParameters {
 };
 
 // Sets on `program` (when it declares them): uSeed, uSamplesPerUnit (supersampled pixels per
-// scene unit at unit depth: h_im / (2 tan(fov / 2))), uEyePosition, uViewAxis, uNearPlane.
+// scene unit at unit depth: h_im / (2 tan(fov / 2))), uEyePosition, uViewAxis, uViewRight, uNearPlane.
 void setSamplingUniforms(GLuint program, const FrameContext& frame, const PassParameters& parameters);
 
 // Draws one tile: `tileFrame` carries the tile's view-projection, `tileOriginSamples` is the

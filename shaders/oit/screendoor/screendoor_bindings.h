@@ -18,6 +18,7 @@ GPU_CONST uint BIND_MESH_VERTICES = 3u;
 GPU_CONST uint BIND_MESH_INDICES = 4u;
 GPU_CONST uint BIND_OBJECT_COLORS = 5u;
 GPU_CONST uint POINT_SAMPLES_GROUP_SIZE = 64u;  // triangles per compute group
+GPU_CONST uint POINT_CHUNK = 16384u;            // lattice points one invocation walks
 
 // One point sample (a kept surface sample of screendoor-object-sw), scalars only so C++ and
 // std430 pack it alike: world position, the world normal packed as snorm 4x8, the object id.
