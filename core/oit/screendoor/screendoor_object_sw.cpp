@@ -68,7 +68,7 @@ private:
 
 TechniqueEntry screendoorObjectSwEntry() {
     TechniqueInfo info{"screendoor-object-sw", "baseline", false, false, "1 + (2 + log2 n) per tile (+1 per regrow)",
-                       "20 B per kept point (grown to fit, at most max_points) + w*h*n^2*(16*4/3 + 4) B supersampled "
+                       "20 B per kept point (grown to fit, at most max_points_millions) + w*h*n^2*(16*4/3 + 4) B supersampled "
                        "(tiles of 2048^2 samples)",
                        "object-space screen-door by point sampling (Sen et al. 4.1): a lattice of one point per sample "
                        "on each triangle, kept with probability alpha, n x n supersampled; opaque silhouettes"};
