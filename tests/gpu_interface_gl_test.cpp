@@ -12,6 +12,7 @@
 #include "oit/buffers/buffer_bindings.h"
 #include "oit/buffers/prefix_sum.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/screendoor/screendoor_bindings.h"
 
 #include <doctest/doctest.h>
 
@@ -236,6 +237,19 @@ std::vector<ProgramCase> programCases() {
         {{full, "frame/deflect.frag.glsl"}, {}, {{"uSource", tex(BIND_SOURCE)}, {"uOutside", kCounters}}},
         {{full, "frame/present.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
         {{scene, "oit/blend.frag.glsl"}, {}, {}},
+        // screen-door family
+        {{scene, "oit/screendoor/crow.frag.glsl"}, {}, {}},
+        {{full, "oit/screendoor/supersample_fill.frag.glsl"}, {},
+         {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}}},
+        {{full, "oit/screendoor/box_average.frag.glsl"}, {}, {{"uSource", tex(BIND_DOWNSAMPLE_SOURCE)}}},
+        {{scene, "oit/screendoor/screendoor_image.frag.glsl"}, {}, {{"uAlphaMasks", tex(BIND_ALPHA_MASKS)}}},
+        {{scene, "oit/screendoor/object_mask.geom.glsl", "oit/screendoor/screendoor_object.frag.glsl"}, {},
+         {{"uAlphaMasks", tex(BIND_ALPHA_MASKS)}}},
+        {{"oit/screendoor/point_samples.comp.glsl"}, {},
+         {{"MeshVertices", ssbo(BIND_MESH_VERTICES)}, {"MeshIndices", ssbo(BIND_MESH_INDICES)},
+          {"Points", ssbo(BIND_POINTS)}, {"uPointsWanted", kCounters}, {"uTrianglesBounded", kCounters}}},
+        {{"oit/screendoor/points.vert.glsl", "oit/screendoor/points.frag.glsl"}, {},
+         {{"Points", ssbo(BIND_POINTS)}, {"ObjectColors", ssbo(BIND_OBJECT_COLORS)}}},
         // abuffer
         {{scene, "oit/abuffer_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {}, listResolve},
@@ -331,6 +345,18 @@ void main() {
                                {FIELD(FragmentEntry, depth), FIELD(FragmentEntry, objectId),
                                 FIELD(FragmentEntry, primitiveId), FIELD(FragmentEntry, colorRG),
                                 FIELD(FragmentEntry, colorBA)});
+    gl::Program points = buildCompute(R"(#version 450 core
+#include "oit/screendoor/screendoor_bindings.h"
+layout(std430, binding = BIND_POINTS) buffer Points { ScreenDoorPoint points[]; };
+layout(local_size_x = 1) in;
+void main() {
+    points[0] = points[1];
+}
+)");
+    using gpu::ScreenDoorPoint;
+    checkLayout<ScreenDoorPoint>(points.id(), "Points",
+                                 {FIELD(ScreenDoorPoint, x), FIELD(ScreenDoorPoint, y), FIELD(ScreenDoorPoint, z),
+                                  FIELD(ScreenDoorPoint, normal), FIELD(ScreenDoorPoint, object)});
     gl::takeErrors();
 }
 

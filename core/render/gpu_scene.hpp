@@ -28,6 +28,8 @@ public:
     const std::vector<int>& transparentObjects() const { return transparent_; }
     bool hasTransparency() const { return !transparent_.empty(); }
     const Bounds& bounds() const { return bounds_; }
+    // The mesh an object draws, for passes that read its buffers directly (vertex pulling).
+    const GpuMesh& meshOf(int objectIndex) const { return meshes_[objects_[objectIndex].mesh]; }
     std::size_t triangleCount() const { return triangles_; }
 
     // Sets the per-object uniforms (model, normal matrix, material with its volume parameters

@@ -3,8 +3,14 @@
 namespace strata {
 
 SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines) {
+    return buildSceneProgram(std::vector<std::string>{fragmentStage}, defines);
+}
+
+SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, const gl::Defines& defines) {
+    std::vector<std::string> stages{"common/scene.vert.glsl"};
+    stages.insert(stages.end(), laterStages.begin(), laterStages.end());
     SceneProgram p;
-    p.program = gl::buildProgram({"common/scene.vert.glsl", fragmentStage}, defines);
+    p.program = gl::buildProgram(stages, defines);
     GLuint id = p.program.id();
     p.viewProj = glGetUniformLocation(id, "uViewProj");
     p.model = glGetUniformLocation(id, "uModel");

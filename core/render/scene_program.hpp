@@ -5,6 +5,7 @@
 #include "gl/shader_program.hpp"
 
 #include <string>
+#include <vector>
 
 namespace strata {
 
@@ -17,5 +18,9 @@ struct SceneProgram {
 };
 
 SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines = {});
+
+// The same with the stages that follow the scene vertex stage given in full (a geometry stage,
+// then the fragment stage).
+SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, const gl::Defines& defines = {});
 
 }  // namespace strata

@@ -9,8 +9,13 @@ uniform mat4 uModel;
 uniform mat3 uNormalMatrix;
 
 out vec3 vWorldNormal;
+// World position: a geometry stage (oit/screendoor/object_mask.geom.glsl) measures triangles
+// with it and crow's fragment stage takes the view direction from it; unused stages drop it.
+out vec3 vWorldPosition;
 
 void main() {
     vWorldNormal = uNormalMatrix * inNormal;
-    gl_Position = uViewProj * (uModel * vec4(inPosition, 1.0));
+    vec4 world = uModel * vec4(inPosition, 1.0);
+    vWorldPosition = world.xyz;
+    gl_Position = uViewProj * world;
 }

@@ -1,0 +1,46 @@
+#version 450 core
+// Object-space mask coordinates (Sen et al. 4.2.1): each triangle gets texture coordinates, in
+// mask texels, such that one texel covers about one supersampled pixel when the triangle is
+// turned parallel to the image plane at the distance d of its centroid. With U = P1 - P0,
+// V = P2 - P0 scaled by s = N h_im / (d h) = h_im / (2 d tan(fov / 2)) samples per scene unit:
+//   C0 = (0, 0),  C1 = (|U_t|, 0),  C2 = (k, sqrt(|V_t|^2 - k^2)),  k = U_t . V_t / |U_t|,
+// an isometric unfolding of the triangle, so the mask is laid on the surface (object space),
+// not on the image. A random texel offset per triangle keeps neighbouring and overlapping
+// triangles of one alpha from reusing the same texels.
+// d is the centroid's depth along the view axis, not its Euclidean distance: the projection
+// divides by that depth, and at wide angles the two differ (by 10x at 84 degrees off-axis), which
+// would make texels cover many samples and clump the kept ones.
+#include "alpha_mask.glsl"
+
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+in vec3 vWorldNormal[];
+in vec3 vWorldPosition[];
+
+uniform vec3 uEyePosition;
+uniform vec3 uViewAxis;         // unit vector the camera looks along
+uniform float uSamplesPerUnit;  // supersampled pixels per scene unit at distance 1
+uniform uint uObjectId;
+
+out vec3 gWorldNormal;
+out vec2 gMaskCoord;  // mask texels
+
+void main() {
+    vec3 u = vWorldPosition[1] - vWorldPosition[0];
+    vec3 v = vWorldPosition[2] - vWorldPosition[0];
+    vec3 middle = (vWorldPosition[0] + vWorldPosition[1] + vWorldPosition[2]) / 3.0;
+    float scale = uSamplesPerUnit / max(dot(middle - uEyePosition, uViewAxis), 1e-20);
+    float lu = length(u) * scale;
+    float lv = length(v) * scale;
+    float k = lu > 0.0 ? dot(u, v) * scale * scale / lu : 0.0;
+    vec2 offset = vec2(maskOffset(uObjectId, uint(gl_PrimitiveIDIn)));
+    vec2 coords[3] = vec2[3](vec2(0.0), vec2(lu, 0.0), vec2(k, sqrt(max(lv * lv - k * k, 0.0))));
+    for (int i = 0; i < 3; ++i) {
+        gl_Position = gl_in[i].gl_Position;
+        gWorldNormal = vWorldNormal[i];
+        gMaskCoord = offset + coords[i];
+        EmitVertex();
+    }
+    EndPrimitive();
+}

@@ -1,0 +1,18 @@
+#version 450 core
+// Image-space screen-door transparency (the classic stipple baseline): the mask of the
+// fragment's alpha level is laid over the supersampled image, shifted by a random offset per
+// object so that two objects of one alpha do not keep the same samples (Mulder et al.). A kept
+// fragment is written opaque. Coverage per pixel is alpha whatever the surface's slope, so
+// silhouettes are no more opaque than the rest (Sen et al. section 3).
+#include "surface.glsl"
+#include "alpha_mask.glsl"
+
+uniform ivec2 uTileOriginSamples;
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+    ivec2 sampleIndex = uTileOriginSamples + ivec2(gl_FragCoord.xy);
+    if (!maskKeeps(sampleIndex + maskOffset(uObjectId, 0u), uAlpha)) discard;
+    outColor = vec4(surfaceColor().rgb, 1.0);
+}

@@ -1,0 +1,331 @@
+// The screen-door family and its baselines (Sen, Chemudugunta, Gopi: silhouette-opaque
+// transparency): crow against its formula on a sphere; the screen-door techniques' mean opacity
+// on a flat quad against alpha within a tolerance derived from the sample count, independence
+// of draw order, the alpha 0 and 1 extremes and bit-for-bit reproducibility from the seed.
+#include "gl_test_support.hpp"
+
+#include "scene/mesh_builders.hpp"
+
+#include <doctest/doctest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+using namespace strata;
+
+namespace {
+
+Material transparentMaterial(glm::vec3 color, float alpha) {
+    Material m;
+    m.baseColor = color;
+    m.alpha = alpha;
+    m.alphaMode = AlphaMode::Blend;
+    return m;
+}
+
+// A scene seen from the origin down -Z (fov 50 degrees) over a white background.
+Scene emptyTestScene() {
+    Scene s;
+    s.materials.push_back(Material{});
+    s.camera = CameraPose{};
+    s.background = glm::vec3(1.0f);
+    s.lightDirection = {0, 0, 1};
+    return s;
+}
+
+void place(Scene& s, Mesh mesh, const Material& material, const glm::mat4& world) {
+    Node n;
+    n.meshes = {s.addMesh(std::move(mesh))};
+    n.materialOverride = s.addMaterial(material);
+    n.local = world;
+    s.addNode(std::move(n));
+}
+
+glm::mat4 at(glm::vec3 p) { return glm::translate(glm::mat4(1.0f), p); }
+
+// A w x h quad facing +Z split into cells of about one unit: screendoor-object sizes its mask
+// texels per triangle at the centroid's distance (Sen et al. 4.2.1), so a triangle that spans a
+// wide range of distances gets texels far from one sample in size where it is near the eye.
+Mesh makeGrid(float width, float height) {
+    Mesh m;
+    const int nx = std::max(1, int(std::ceil(width))), ny = std::max(1, int(std::ceil(height)));
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            m.positions.push_back({width * (float(i) / nx - 0.5f), height * (float(j) / ny - 0.5f), 0.0f});
+            m.normals.push_back({0, 0, 1});
+        }
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const std::uint32_t a = std::uint32_t(j * (nx + 1) + i), b = a + 1, c = a + std::uint32_t(nx + 1), d = c + 1;
+            m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+        }
+    return m;
+}
+
+// Crow's opacity as crow.frag.glsl defines it (amin face-on, amax at the rim).
+double crowAlpha(double nz, double amin, double amax, double p) {
+    return amax - (amax - amin) * (1.0 - std::pow(1.0 - nz, p));
+}
+
+}  // namespace
+
+TEST_CASE("crow matches its formula on a sphere") {
+    // A black sphere over a white background: every pixel is the background times the
+    // transmittance of the two surfaces the ray crosses, whatever order they blend in. The ray
+    // enters and leaves a sphere at the same angle to the normal, so both have the same |N_z|
+    // and the pixel is (1 - alpha(|N_z|))^2, with |N_z| from the analytic sphere.
+    Scene s = emptyTestScene();
+    const glm::vec3 centre(0.25f, -0.1f, -4.0f);
+    place(s, makeSphere(1.0f, 128, 64), transparentMaterial(glm::vec3(0.0f), 0.5f), at(centre));
+    test::Fixture f(std::move(s));
+    const double amin = 0.2, amax = 0.9, p = 3.0;
+    auto crow = test::makeTechnique("crow", {"amin=0.2", "amax=0.9", "p=3", "material_alpha=0"});
+    const glm::ivec2 size(64, 64);
+    Image image = test::renderWith(*f.gpu, f.camera, size, *crow).image;
+
+    const double t = std::tan(glm::radians(double(f.camera.fovYDegrees)) / 2.0);
+    double maxError = 0.0;
+    int inside = 0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            glm::dvec3 dir = glm::normalize(glm::dvec3(((x + 0.5) / size.x * 2.0 - 1.0) * t,
+                                                       ((y + 0.5) / size.y * 2.0 - 1.0) * t, -1.0));
+            glm::dvec3 c(centre);
+            double b = glm::dot(dir, c), disc = b * b - (glm::dot(c, c) - 1.0);
+            double got = image.at(x, y).r;
+            if (disc < 0.0) continue;
+            glm::dvec3 hit = dir * (b - std::sqrt(disc));
+            double nz = std::abs(glm::dot(glm::normalize(hit - c), -dir));
+            // Near the rim the 128x64 tessellation's silhouette and normals depart from the
+            // analytic sphere; the formula is checked where |N_z| >= 0.25.
+            if (nz < 0.25) continue;
+            double a = crowAlpha(nz, amin, amax, p);
+            maxError = std::max(maxError, std::abs(got - (1.0 - a) * (1.0 - a)));
+            ++inside;
+        }
+    MESSAGE("crow: " << inside << " pixels checked, largest error " << maxError);
+    REQUIRE(inside > 500);
+    // Interpolated normals of a 128x64 sphere are within ~1.4 degrees of the true ones, which
+    // moves (1 - alpha)^2 by < 0.01 at p = 3; 8-bit nothing here (RGBA32F targets).
+    CHECK(maxError < 0.01);
+}
+
+namespace {
+
+const char* const kScreenDoorIds[] = {"screendoor", "screendoor-object", "screendoor-object-sw"};
+
+// A quad of `alpha` facing the camera and filling the view, over a white background; a grid of
+// unit cells, so no triangle passes screendoor-object-sw's per-triangle sample bound at n = 16.
+Scene facingQuadScene(glm::vec3 color, float alpha) {
+    Scene s = emptyTestScene();
+    place(s, makeGrid(8.0f, 8.0f), transparentMaterial(color, alpha), at({0, 0, -2}));
+    return s;
+}
+
+// Two overlapping quads and a sphere that crosses both: every pixel has 1 to 4 layers.
+Scene overlappingScene() {
+    Scene s = emptyTestScene();
+    place(s, makeQuad(3.0f, 3.0f), transparentMaterial({0.9f, 0.2f, 0.1f}, 0.6f), at({-0.4f, 0.1f, -3.0f}));
+    place(s, makeQuad(3.0f, 3.0f), transparentMaterial({0.1f, 0.3f, 0.9f}, 0.35f), at({0.5f, -0.2f, -3.6f}));
+    place(s, makeSphere(0.9f, 32, 16), transparentMaterial({0.2f, 0.9f, 0.3f}, 0.5f), at({0.0f, 0.0f, -3.3f}));
+    return s;
+}
+
+// 16x16 supersampling, and 256^2 masks where the technique has masks.
+std::unique_ptr<Technique> at16x16(const std::string& id) {
+    std::vector<std::string> settings{"supersampling=16"};
+    if (test::hasSetting(id, "mask_size")) settings.push_back("mask_size=256");
+    return test::makeTechnique(id, settings);
+}
+
+bool bitwiseEqual(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.rgba == b.rgba;
+}
+
+double meanRed(const Image& image) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) sum += image.at(x, y).r;
+    return sum / (double(image.width) * image.height);
+}
+
+}  // namespace
+
+TEST_CASE("screen-door techniques are registered as order-independent baselines") {
+    for (const std::string id : {"crow", "screendoor", "screendoor-object", "screendoor-object-sw"}) {
+        CAPTURE(id);
+        const TechniqueEntry* e = findTechnique(id);
+        REQUIRE(e != nullptr);
+        CHECK(e->info.family == "baseline");
+        CHECK_FALSE(e->info.robust);
+    }
+    for (const char* id : kScreenDoorIds)
+        for (const char* name : {"supersampling", "seed"}) CHECK(test::hasSetting(id, name));
+}
+
+TEST_CASE("screen-door: mean opacity of a facing quad is its alpha at 16x16 supersampling") {
+    // A black quad over white: each output pixel is 1 - (kept samples) / 256. The 16x16 output
+    // at n = 16 holds K = 65536 samples. Each sample keeps or rejects by one mask texel, and
+    // texels are independent Bernoulli(alpha') draws, alpha' = round(255 alpha) / 255. The 256^2
+    // mask holds as many texels as there are samples: image space maps samples to texels one to
+    // one; object space may land up to 4 samples on one texel (texels slightly larger than
+    // samples off-axis, and the quad's two triangles share the mask), so the variance of the
+    // mean is at most 4 alpha(1 - alpha) / K. Tolerance: 5 standard deviations of that,
+    // sqrt(4 * 0.25 / 65536) * 5 = 0.0195 at alpha 0.5, plus the 8-bit quantization 0.5 / 255.
+    // The images are deterministic (seeded), so the test is not flaky; 5 sigma makes a seed
+    // that fails it a one-in-a-million draw.
+    const glm::ivec2 size(16, 16);
+    const double samples = double(size.x) * size.y * 256.0;
+    for (float alpha : {0.25f, 0.5f, 0.8f}) {
+        test::Fixture f(facingQuadScene(glm::vec3(0.0f), alpha));
+        for (const std::string id : kScreenDoorIds) {
+            CAPTURE(id);
+            CAPTURE(alpha);
+            auto technique = at16x16(id);
+            test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+            const double opacity = 1.0 - meanRed(r.image);
+            const double tolerance = 5.0 * std::sqrt(4.0 * alpha * (1.0 - alpha) / samples) + 0.5 / 255.0;
+            MESSAGE(id << " alpha " << alpha << ": mean opacity " << opacity << " (tolerance " << tolerance << ")");
+            CHECK(std::abs(opacity - alpha) <= tolerance);
+            // Fill, draw, four 2x2 averages (one tile); point sampling adds its compute pass.
+            const int sampling = id == "screendoor-object-sw" ? 1 + r.result.stats.regrows : 0;
+            CHECK(r.result.stats.passes == sampling + 1 + 1 + 4);
+            CHECK(r.result.stats.objectDraws == 1);
+            CHECK_FALSE(r.result.stats.overflowed);
+        }
+    }
+}
+
+TEST_CASE("screen-door: alpha 0 is invisible and alpha 1 opaque, exactly") {
+    const glm::ivec2 size(12, 10);
+    const glm::vec3 color(0.7f, 0.4f, 0.2f);  // lit head-on: the shaded colour is the base colour
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        {
+            test::Fixture f(facingQuadScene(color, 0.0f));
+            Image image = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"supersampling=4"})).image;
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) CHECK(glm::vec3(image.at(x, y)) == glm::vec3(1.0f));
+        }
+        {
+            test::Fixture f(facingQuadScene(color, 1.0f));
+            Image image = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"supersampling=4"})).image;
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) {
+                    glm::vec3 got(image.at(x, y));
+                    CHECK(glm::all(glm::lessThanEqual(glm::abs(got - color), glm::vec3(1e-6f))));
+                }
+        }
+    }
+}
+
+TEST_CASE("screen-door: the image does not depend on draw order, bit for bit") {
+    test::Fixture f(overlappingScene());
+    const glm::ivec2 size(24, 20);
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        auto technique = test::makeTechnique(id, {"supersampling=8"});
+        Image forward = test::renderWith(*f.gpu, f.camera, size, *technique).image;
+        FrameOptions reversed;
+        reversed.reverseSubmission = true;
+        Image backward = test::renderWith(*f.gpu, f.camera, size, *technique, reversed).image;
+        CHECK(bitwiseEqual(forward, backward));
+        // ...and it is not the opaque image: something transparent was drawn.
+        CHECK(meanRed(forward) < 0.99);
+    }
+}
+
+TEST_CASE("screen-door: the same seed gives the same image bit for bit, another seed another image") {
+    test::Fixture f(overlappingScene());
+    const glm::ivec2 size(24, 20);
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        Image first = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=7"})).image;
+        Image again = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=7"})).image;
+        Image other = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"seed=8"})).image;
+        CHECK(bitwiseEqual(first, again));
+        CHECK_FALSE(bitwiseEqual(first, other));
+    }
+}
+
+TEST_CASE("screen-door: a frame past one tile of samples renders in tiles that cover it") {
+    // 160 x 6 pixels at n = 16 is 2560 samples wide, past the 2048 of one tile: two tiles of 128
+    // and 32 columns, each drawn through its own projection. A quad whose left edge projects to
+    // column 120 crosses the seam: columns left of the edge stay white exactly; every column
+    // right of it shows the quad at its alpha, within 5 standard deviations of one column's
+    // 6 * 256 samples (at most 4 per texel, as in the flat-quad test): 0.13 at alpha 0.5. A tile
+    // drawn through the whole frame's projection shows the edge at the wrong column.
+    const float alpha = 0.5f;
+    const glm::ivec2 size(160, 6);
+    const float depth = 2.0f;
+    Scene s = emptyTestScene();
+    const float halfWidth = depth * std::tan(glm::radians(50.0f) / 2.0f) * float(size.x) / float(size.y);
+    const float edge = 0.5f * halfWidth;  // NDC x = 0.5: column 120
+    place(s, makeGrid(100.0f, 8.0f), transparentMaterial(glm::vec3(0.0f), alpha), at({edge + 50.0f, 0, -depth}));
+    test::Fixture f(std::move(s));
+    // Clip planes fitted to the quad's bounding sphere would cut the quad off: set them here.
+    f.camera.nearPlane = 0.5f;
+    f.camera.farPlane = 200.0f;
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        auto technique = at16x16(id);
+        test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+        CHECK(r.result.stats.tiles == 2);
+        const double tolerance = 5.0 * std::sqrt(4.0 * alpha * (1.0 - alpha) / (size.y * 256.0));
+        for (int x = 0; x < size.x; ++x) {
+            if (x == 119 || x == 120) continue;  // the edge column and its neighbour: partly covered
+            double sum = 0.0;
+            for (int y = 0; y < size.y; ++y) sum += r.image.at(x, y).r;
+            const double opacity = 1.0 - sum / size.y;
+            CAPTURE(x);
+            if (x < 119) CHECK(opacity == 0.0);
+            else CHECK(std::abs(opacity - alpha) <= tolerance);
+        }
+    }
+}
+
+TEST_CASE("silhouette opacity: point sampling grows opaque toward the rim, the masks stay flat") {
+    // A black sphere of alpha 0.3 over white: a pixel's opacity is 1 - its value. Both surfaces
+    // a ray crosses meet it at the same |N_z|. The image-space stipple and the texture-mapped
+    // object-space masks keep alpha of the samples per surface whatever the slope (the paper's
+    // section 5 for the hardware version): 1 - 0.7^2 = 0.51 at the centre and near the rim
+    // alike. Point sampling lays 1 / |N_z| points per sample where the surface turns away, so
+    // near the rim (|N_z| in [0.2, 0.4], ~3 points a sample a surface) it is clearly more opaque
+    // than at the centre (|N_z| >= 0.8). Bins hold hundreds of pixels of 64 samples each, so
+    // their means are good to ~0.01; the margins below are 5x that. The stipple keeps the same
+    // samples on both surfaces of one object (one offset per object), so its back surface is
+    // hidden and the sphere shows 0.3, not 0.51: the overlap artifact of the paper's Fig. 1.
+    Scene s = emptyTestScene();
+    const glm::vec3 centre(0.0f, 0.0f, -4.0f);
+    place(s, makeSphere(1.0f, 96, 48), transparentMaterial(glm::vec3(0.0f), 0.3f), at(centre));
+    test::Fixture f(std::move(s));
+    const glm::ivec2 size(64, 64);
+    const double t = std::tan(glm::radians(double(f.camera.fovYDegrees)) / 2.0);
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        Image image = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"supersampling=8"})).image;
+        double sum[2] = {0, 0};
+        int count[2] = {0, 0};
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                glm::dvec3 dir = glm::normalize(glm::dvec3(((x + 0.5) / size.x * 2.0 - 1.0) * t,
+                                                           ((y + 0.5) / size.y * 2.0 - 1.0) * t, -1.0));
+                glm::dvec3 c(centre);
+                double b = glm::dot(dir, c), disc = b * b - (glm::dot(c, c) - 1.0);
+                if (disc < 0.0) continue;
+                double nz = std::abs(glm::dot(glm::normalize(dir * (b - std::sqrt(disc)) - c), -dir));
+                int bin = nz >= 0.8 ? 0 : (nz >= 0.2 && nz <= 0.4) ? 1 : -1;
+                if (bin < 0) continue;
+                sum[bin] += 1.0 - image.at(x, y).r;
+                ++count[bin];
+            }
+        REQUIRE(count[0] > 100);
+        REQUIRE(count[1] > 100);
+        const double centreOpacity = sum[0] / count[0], rimOpacity = sum[1] / count[1];
+        MESSAGE(id << ": opacity at the centre " << centreOpacity << ", near the rim " << rimOpacity);
+        CHECK(std::abs(centreOpacity - (id == "screendoor" ? 0.3 : 0.51)) < 0.05);
+        if (id == "screendoor-object-sw") CHECK(rimOpacity > centreOpacity + 0.15);
+        else CHECK(std::abs(rimOpacity - centreOpacity) < 0.05);
+    }
+}
