@@ -3,10 +3,11 @@
 // once: name, type, range, default, help and what a change forces. `--set`, JSON presets, the
 // panel, `strata modes --settings` and the bench report all read that one description, so a
 // setting cannot be documented in one place and validated differently in another.
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <string_view>
-#include <variant>
+#include <type_traits>
 #include <vector>
 
 namespace strata {
@@ -51,15 +52,17 @@ std::string describeRange(const SettingDescription& d);
 template <class S>
 class SettingsSchema {
 public:
-    using Member = std::variant<int S::*, double S::*, bool S::*>;
+    // Reads and writes one field as a double; made from a member pointer of the field's own
+    // type (see memberAccess), so an int is never read through a double.
     struct Field {
         SettingDescription description;
-        Member member;
+        std::function<double(const S&)> get;
+        std::function<void(S&, double)> set;
     };
 
     SettingsSchema(std::initializer_list<Field> fields) : fields_(fields) {
         const S defaults{};
-        for (auto& f : fields_) f.description.defaultValue = get(defaults, f.member);
+        for (auto& f : fields_) f.description.defaultValue = f.get(defaults);
     }
 
     std::vector<SettingDescription> descriptions() const {
@@ -69,57 +72,54 @@ public:
     }
     SettingValues read(const S& s) const {
         SettingValues out;
-        for (const auto& f : fields_) out.push_back(get(s, f.member));
+        for (const auto& f : fields_) out.push_back(f.get(s));
         return out;
     }
     // Values must come from resolveSettings or the panel (already checked); a missing tail keeps
     // the defaults.
     S write(const SettingValues& values) const {
         S s{};
-        for (std::size_t i = 0; i < fields_.size() && i < values.size(); ++i) set(s, fields_[i].member, values[i]);
+        for (std::size_t i = 0; i < fields_.size() && i < values.size(); ++i) fields_[i].set(s, values[i]);
         return s;
     }
 
 private:
-    static double get(const S& s, const Member& m) {
-        return std::visit([&s](auto field) { return double(s.*field); }, m);
-    }
-    static void set(S& s, const Member& m, double v) {
-        std::visit(
-            [&](auto field) {
-                using T = std::remove_reference_t<decltype(s.*field)>;
-                if constexpr (std::is_same_v<T, bool>) s.*field = v != 0;
-                else s.*field = T(v);
-            },
-            m);
-    }
-
     std::vector<Field> fields_;
 };
+
+template <class S, class T>
+typename SettingsSchema<S>::Field memberAccess(SettingDescription description, T S::*member) {
+    return {std::move(description), [member](const S& s) { return double(s.*member); },
+            [member](S& s, double v) {
+                if constexpr (std::is_same_v<T, bool>) s.*member = v != 0;
+                else s.*member = T(v);
+            }};
+}
 
 template <class S>
 typename SettingsSchema<S>::Field integerSetting(int S::*member, std::string name, int min, int max,
                                                  SettingChange change, std::string help) {
-    return {{std::move(name), SettingType::Integer, double(min), double(max), {}, 0, change, std::move(help)}, member};
+    return memberAccess<S>({std::move(name), SettingType::Integer, double(min), double(max), {}, 0, change, std::move(help)},
+                           member);
 }
 
 template <class S>
 typename SettingsSchema<S>::Field realSetting(double S::*member, std::string name, double min, double max,
                                               SettingChange change, std::string help) {
-    return {{std::move(name), SettingType::Real, min, max, {}, 0, change, std::move(help)}, member};
+    return memberAccess<S>({std::move(name), SettingType::Real, min, max, {}, 0, change, std::move(help)}, member);
 }
 
 template <class S>
 typename SettingsSchema<S>::Field flagSetting(bool S::*member, std::string name, SettingChange change, std::string help) {
-    return {{std::move(name), SettingType::Flag, 0, 1, {}, 0, change, std::move(help)}, member};
+    return memberAccess<S>({std::move(name), SettingType::Flag, 0, 1, {}, 0, change, std::move(help)}, member);
 }
 
 // Bits per channel of a technique's own float targets: 16 (half float) or 32. Reallocates them.
 template <class S>
 typename SettingsSchema<S>::Field precisionSetting(int S::*member, std::string what) {
-    return {{"precision", SettingType::Integer, 16, 32, {16, 32}, 0, SettingChange::Reallocate,
-             "bits per channel of the " + what + ": 16 (half float) or 32 (float)"},
-            member};
+    return memberAccess<S>({"precision", SettingType::Integer, 16, 32, {16, 32}, 0, SettingChange::Reallocate,
+                            "bits per channel of the " + what + ": 16 (half float) or 32 (float)"},
+                           member);
 }
 
 // For techniques without knobs.
