@@ -5,6 +5,7 @@
 // setting cannot be documented in one place and validated differently in another.
 #include <functional>
 #include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -62,7 +63,11 @@ public:
 
     SettingsSchema(std::initializer_list<Field> fields) : fields_(fields) {
         const S defaults{};
-        for (auto& f : fields_) f.description.defaultValue = f.get(defaults);
+        for (auto& f : fields_) {
+            // A field built without memberAccess would fail only when first written.
+            if (!f.get || !f.set) throw std::logic_error("setting " + f.description.name + " has no accessors");
+            f.description.defaultValue = f.get(defaults);
+        }
     }
 
     std::vector<SettingDescription> descriptions() const {

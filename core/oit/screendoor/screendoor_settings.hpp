@@ -8,16 +8,17 @@ namespace strata::screendoor {
 // n of the n x n supersampling: a power of two, so the box filter is exact 2x2 averages.
 template <class S>
 typename SettingsSchema<S>::Field supersamplingSetting(int S::*member) {
-    return {{"supersampling", SettingType::Integer, 1, 16, {1, 2, 4, 8, 16}, 0, SettingChange::Reallocate,
-             "n of the n x n supersampling, box-filtered down by repeated 2x2 averaging (paper: 16)"},
-            member};
+    return memberAccess<S>({"supersampling", SettingType::Integer, 1, 16, {1, 2, 4, 8, 16}, 0, SettingChange::Reallocate,
+                            "n of the n x n supersampling, box-filtered down by repeated 2x2 averaging (paper: 16)"},
+                           member);
 }
 
 template <class S>
 typename SettingsSchema<S>::Field maskSizeSetting(int S::*member) {
-    return {{"mask_size", SettingType::Integer, 16, 512, {16, 32, 64, 128, 256, 512}, 0, SettingChange::Reallocate,
-             "side of each alpha level's random mask in texels (memory: side^2 * 256 B)"},
-            member};
+    return memberAccess<S>({"mask_size", SettingType::Integer, 16, 512, {16, 32, 64, 128, 256, 512}, 0,
+                            SettingChange::Reallocate,
+                            "side of each alpha level's random mask in texels (memory: side^2 * 256 B)"},
+                           member);
 }
 
 template <class S>
