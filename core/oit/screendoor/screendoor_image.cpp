@@ -12,21 +12,7 @@ namespace strata {
 namespace screendoor {
 namespace {
 
-struct ImageSettings {
-    int supersampling = 4;
-    int mask_size = 128;
-    int seed = 1;
-    static const SettingsSchema<ImageSettings>& schema() {
-        static const SettingsSchema<ImageSettings> s{
-            supersamplingSetting(&ImageSettings::supersampling),
-            maskSizeSetting(&ImageSettings::mask_size),
-            seedSetting(&ImageSettings::seed),
-        };
-        return s;
-    }
-};
-
-class ImageScreenDoor final : public TechniqueWithSettings<ImageSettings> {
+class ImageScreenDoor final : public TechniqueWithSettings<MaskSettings> {
 public:
     using TechniqueWithSettings::TechniqueWithSettings;
 

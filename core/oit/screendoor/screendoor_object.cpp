@@ -14,21 +14,7 @@ namespace strata {
 namespace screendoor {
 namespace {
 
-struct ObjectSettings {
-    int supersampling = 4;
-    int mask_size = 128;
-    int seed = 1;
-    static const SettingsSchema<ObjectSettings>& schema() {
-        static const SettingsSchema<ObjectSettings> s{
-            supersamplingSetting(&ObjectSettings::supersampling),
-            maskSizeSetting(&ObjectSettings::mask_size),
-            seedSetting(&ObjectSettings::seed),
-        };
-        return s;
-    }
-};
-
-class ObjectScreenDoor final : public TechniqueWithSettings<ObjectSettings> {
+class ObjectScreenDoor final : public TechniqueWithSettings<MaskSettings> {
 public:
     using TechniqueWithSettings::TechniqueWithSettings;
 

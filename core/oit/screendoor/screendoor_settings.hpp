@@ -27,4 +27,19 @@ typename SettingsSchema<S>::Field seedSetting(int S::*member) {
                           "seed of the random masks and offsets: the same seed gives the same image bit for bit");
 }
 
+// The settings of the two mask techniques (image and object space): one struct for both.
+struct MaskSettings {
+    int supersampling = 4;
+    int mask_size = 128;
+    int seed = 1;
+    static const SettingsSchema<MaskSettings>& schema() {
+        static const SettingsSchema<MaskSettings> s{
+            supersamplingSetting(&MaskSettings::supersampling),
+            maskSizeSetting(&MaskSettings::mask_size),
+            seedSetting(&MaskSettings::seed),
+        };
+        return s;
+    }
+};
+
 }  // namespace strata::screendoor
