@@ -128,16 +128,17 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
     auto tiled = test::renderWith(*f.gpu, f.camera, size, *technique);
     CHECK(tiled.result.stats.tiles >= 6);
     CHECK(tiled.result.stats.fragmentsCaptured == 16u * 64u * 64u);
-    CHECK(compareImages(tiled.image, whole.image).maxAbsError == 0.0);
+    CHECK(compareImages(tiled.image, whole.image).maxAbsError <= 1e-6);
     // The next frame starts from these tiles: one store and one resolve each, no store wasted
-    // on finding out again that larger tiles overflow. Bit-equal on any driver: each pixel holds
-    // the same set of fragments, which the resolve's total order composites in one sequence by
-    // the same program, whatever the tiles or the order the nodes were appended in.
+    // on finding out again that larger tiles overflow. Each pixel holds the same set of
+    // fragments, which the resolve's total order composites in one sequence whatever the tiles or
+    // the order the nodes were appended in: equal to float round-off (bit-equal on llvmpipe; a GPU
+    // need not rasterize a scissored tile bit for bit as the whole frame).
     auto again = test::renderWith(*f.gpu, f.camera, size, *technique);
     CHECK(again.result.stats.tiles == tiled.result.stats.tiles);
     CHECK(again.result.stats.passes == 2 * again.result.stats.tiles);
     CHECK(again.result.stats.regrows == 0);
-    CHECK(compareImages(again.image, whole.image).maxAbsError == 0.0);
+    CHECK(compareImages(again.image, whole.image).maxAbsError <= 1e-6);
     CHECK(tiled.result.stats.passes > again.result.stats.passes);
     // With the fragments back within one pool, one tile again.
     test::setSetting(*technique, "max_block_mib=0");

@@ -218,8 +218,9 @@ TEST_CASE("sbuffer stores and resolves in bands of rows when the fragments excee
     CHECK(banded.result.stats.fragmentsCaptured == total);
     CHECK(banded.result.stats.fragmentsDropped == 0);
     CHECK_FALSE(banded.result.stats.overflowed);
-    // Bit-equal on any driver: per pixel the same fragments, in the resolve's total order.
-    CHECK(compareImages(banded.image, whole.image).maxAbsError == 0.0);
+    // Per pixel the same fragments, in the resolve's total order: equal to float round-off
+    // (bit-equal on llvmpipe; a GPU need not rasterize each band bit for bit as the whole frame).
+    CHECK(compareImages(banded.image, whole.image).maxAbsError <= 1e-6);
     // A block smaller than one row (1,024 entries): each row is a band of its own and keeps
     // what fits; the rest is counted as dropped, never written out of bounds.
     auto tiny = test::renderWith(f.scene, f.camera, size, *test::makeTechnique("sbuffer", {"max_block_mib=0.01"}));

@@ -16,6 +16,19 @@ using namespace strata;
 
 namespace {
 
+// |N_z| where pixel (x, y) of a `size` image (camera at the origin looking down -Z, vertical field
+// of view `fovYDegrees`) first meets the unit sphere at `centre`, against the direction to the
+// eye; negative where the pixel's ray misses the sphere.
+double sphereFacing(int x, int y, glm::ivec2 size, double fovYDegrees, glm::vec3 centre) {
+    const double t = std::tan(glm::radians(fovYDegrees) / 2.0);
+    glm::dvec3 dir = glm::normalize(glm::dvec3(((x + 0.5) / size.x * 2.0 - 1.0) * t,
+                                               ((y + 0.5) / size.y * 2.0 - 1.0) * t, -1.0));
+    glm::dvec3 c(centre);
+    double b = glm::dot(dir, c), disc = b * b - (glm::dot(c, c) - 1.0);
+    if (disc < 0.0) return -1.0;
+    return std::abs(glm::dot(glm::normalize(dir * (b - std::sqrt(disc)) - c), -dir));
+}
+
 Material transparentMaterial(glm::vec3 color, float alpha) {
     Material m;
     m.baseColor = color;
@@ -84,19 +97,12 @@ TEST_CASE("crow matches its formula on a sphere") {
     const glm::ivec2 size(64, 64);
     Image image = test::renderWith(*f.gpu, f.camera, size, *crow).image;
 
-    const double t = std::tan(glm::radians(double(f.camera.fovYDegrees)) / 2.0);
     double maxError = 0.0;
     int inside = 0;
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x) {
-            glm::dvec3 dir = glm::normalize(glm::dvec3(((x + 0.5) / size.x * 2.0 - 1.0) * t,
-                                                       ((y + 0.5) / size.y * 2.0 - 1.0) * t, -1.0));
-            glm::dvec3 c(centre);
-            double b = glm::dot(dir, c), disc = b * b - (glm::dot(c, c) - 1.0);
-            double got = image.at(x, y).r;
-            if (disc < 0.0) continue;
-            glm::dvec3 hit = dir * (b - std::sqrt(disc));
-            double nz = std::abs(glm::dot(glm::normalize(hit - c), -dir));
+            const double nz = sphereFacing(x, y, size, f.camera.fovYDegrees, centre);
+            const double got = image.at(x, y).r;
             // Near the rim the 128x64 tessellation's silhouette and normals depart from the
             // analytic sphere; the formula is checked where |N_z| >= 0.25.
             if (nz < 0.25) continue;
@@ -301,7 +307,6 @@ TEST_CASE("silhouette opacity: point sampling grows opaque toward the rim, the m
     place(s, makeSphere(1.0f, 96, 48), transparentMaterial(glm::vec3(0.0f), 0.3f), at(centre));
     test::Fixture f(std::move(s));
     const glm::ivec2 size(64, 64);
-    const double t = std::tan(glm::radians(double(f.camera.fovYDegrees)) / 2.0);
     for (const std::string id : kScreenDoorIds) {
         CAPTURE(id);
         Image image = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"supersampling=8"})).image;
@@ -309,12 +314,7 @@ TEST_CASE("silhouette opacity: point sampling grows opaque toward the rim, the m
         int count[2] = {0, 0};
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) {
-                glm::dvec3 dir = glm::normalize(glm::dvec3(((x + 0.5) / size.x * 2.0 - 1.0) * t,
-                                                           ((y + 0.5) / size.y * 2.0 - 1.0) * t, -1.0));
-                glm::dvec3 c(centre);
-                double b = glm::dot(dir, c), disc = b * b - (glm::dot(c, c) - 1.0);
-                if (disc < 0.0) continue;
-                double nz = std::abs(glm::dot(glm::normalize(dir * (b - std::sqrt(disc)) - c), -dir));
+                const double nz = sphereFacing(x, y, size, f.camera.fovYDegrees, centre);
                 int bin = nz >= 0.8 ? 0 : (nz >= 0.2 && nz <= 0.4) ? 1 : -1;
                 if (bin < 0) continue;
                 sum[bin] += 1.0 - image.at(x, y).r;
