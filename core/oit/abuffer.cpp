@@ -3,14 +3,18 @@
 // composited. Memory is grown to the counted fragments and the frame re-rendered until nothing
 // overflows; where the fragments exceed the largest storage block the device allows, the frame
 // is rendered in screen tiles, each within the limit. Nothing is ever dropped silently.
+// `abuffer-volume` is the same storage with the volumetric resolve (oit/volume/): closed
+// objects with a volume material render as media, exactly, with no capacity to choose.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
 #include "gl/debug.hpp"
 #include "oit/abuffer_node.h"
 #include "oit/draw_transparent.hpp"
+#include "oit/volume/volume_resolve.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 namespace strata {
@@ -42,13 +46,17 @@ struct ABufferSettings {
 
 class ABuffer final : public TechniqueWithSettings<ABufferSettings> {
 public:
-    using TechniqueWithSettings::TechniqueWithSettings;
+    // volume: the volumetric store and resolve (VOLUME defined in the shaders).
+    ABuffer(TechniqueInfo info, bool volume)
+        : TechniqueWithSettings(std::move(info)), volume_(volume ? std::make_unique<VolumeResolve>() : nullptr) {}
 
     void render(const FrameContext& frame) override {
         if (!storeProgram_.program) {
-            storeProgram_ = buildSceneProgram("oit/abuffer_store.frag.glsl");
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"});
-            computeResolveProgram_ = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"});
+            const gl::Defines defines = volume_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{};
+            storeProgram_ = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
+            resolveProgram_ =
+                gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}, defines);
+            computeResolveProgram_ = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, defines);
             capacityLocation_ = glGetUniformLocation(storeProgram_.id(), "uCapacity");
             counter_ = gl::Buffer::create();
             glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
@@ -67,6 +75,7 @@ public:
         ensurePool();
 
         stats_ = {};
+        if (volume_) volume_->prepare(frame);
         // Start from last frame's tiles while they are still needed: finding out again that the
         // whole frame overflows would cost a wasted store pass every frame. Back to one tile
         // once last frame's fragments fit in half the largest pool.
@@ -108,6 +117,12 @@ public:
         glDisable(GL_SCISSOR_TEST);
         stats_.tiles = tilesDone;
         stats_.bytes = capacity_ * kNodeBytes + std::uint64_t(frame.size.x) * frame.size.y * 4 + sizeof(GLuint);
+        if (volume_) {
+            stats_.bytes += volume_->bytes();
+            const std::uint64_t ignored = volume_->nestingOverflow();
+            stats_.fragmentsDropped += ignored;
+            stats_.overflowed = stats_.overflowed || ignored > 0;
+        }
         // Memory sized to the fragments present: give back a pool four times larger than needed.
         std::uint64_t largestTile = tilesDone == 1 ? stats_.fragmentsCaptured : capacity_;
         if (largestTile * 4 < capacity_) capacity_ = std::max<std::uint64_t>(largestTile + largestTile / 8, 1024);
@@ -136,7 +151,7 @@ private:
 
     // Stores the tile's fragments; returns how many there were (stored or not).
     std::uint64_t store(const FrameContext& frame, const Tile& tile) {
-        gl::ScopedPass pass(frame.timer, "abuffer store");
+        gl::ScopedPass pass(frame.timer, info_.id + " store");
         GLuint zero = 0;
         glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
         glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
@@ -164,8 +179,9 @@ private:
             resolveCompute(frame, tile);
             return;
         }
-        gl::ScopedPass pass(frame.timer, "abuffer resolve");
-        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        gl::ScopedPass pass(frame.timer, info_.id + " resolve");
+        glBindFramebuffer(GL_FRAMEBUFFER,
+                          volume_ ? volume_->colorFramebuffer(frame) : frame.targets.outputFramebuffer());
         glEnable(GL_SCISSOR_TEST);
         glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
         glDisable(GL_BLEND);
@@ -173,12 +189,13 @@ private:
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         setDepthOrderUniforms(frame, resolveProgram_.id());
+        if (volume_) volume_->bind(frame, resolveProgram_.id());
         drawFullscreen(frame, resolveProgram_.id());
         ++stats_.passes;
     }
 
     void resolveCompute(const FrameContext& frame, const Tile& tile) {
-        gl::ScopedPass pass(frame.timer, "abuffer resolve (compute)");
+        gl::ScopedPass pass(frame.timer, info_.id + " resolve (compute)");
         const GLuint program = computeResolveProgram_.id();
         glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
         glBindImageTexture(gpu::BIND_RESOLVE_OUTPUT, frame.targets.outputColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
@@ -186,6 +203,7 @@ private:
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         setDepthOrderUniforms(frame, program);
+        if (volume_) volume_->bind(frame, program);
         glProgramUniform4i(program, glGetUniformLocation(program, "uTile"), tile.origin.x, tile.origin.y, tile.size.x,
                            tile.size.y);
         glUseProgram(program);
@@ -207,6 +225,7 @@ private:
     std::vector<Tile> lastTiles_;  // last frame's tiles when it needed more than one
     glm::ivec2 lastTilesSize_{0, 0};
     std::uint64_t lastTotal_ = 0;
+    std::unique_ptr<VolumeResolve> volume_;  // abuffer-volume only
 };
 
 }  // namespace
@@ -215,7 +234,16 @@ TechniqueEntry abufferEntry() {
     TechniqueInfo info{"abuffer", "reference", true, true, "2 per tile (+1 store per regrow)",
                        "w*h*4 heads + 24 B per fragment, pool grown to the fragments present",
                        "exact reference: per-pixel linked lists of every fragment, sorted by (depth, object, primitive)"};
-    return techniqueEntry<ABuffer>(info);
+    return techniqueEntry<ABuffer>(info, false);
+}
+
+TechniqueEntry abufferVolumeEntry() {
+    TechniqueInfo info{"abuffer-volume", "volumetric", true, true, "2 per tile (+1 store per regrow)",
+                       "as abuffer, + 24 B per object (medium table)",
+                       "the exact volumetric reference: abuffer's unbounded lists, resolved through the media of "
+                       "closed volume objects (tau, albedo, Rayleigh in-scattering; Barta and Kovacs), other "
+                       "transparent objects alpha-composited in the same walk"};
+    return techniqueEntry<ABuffer>(info, true);
 }
 
 }  // namespace strata

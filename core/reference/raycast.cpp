@@ -2,6 +2,8 @@
 
 #include "render/depth_order.hpp"
 #include "render/shading.hpp"
+#include "render/volume_composite.hpp"
+#include "scene/mesh_volume.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -272,6 +274,54 @@ struct RaycastReference::Impl {
     RaycastOptions options;
     std::vector<PreparedObject> opaque;       // opaque and MASK-passing objects
     std::vector<PreparedObject> transparent;  // BLEND objects
+    // options.volumes: each object's classification and medium, by object id, and the volumes
+    // around the last ray origin seen (every ray of an image starts at the eye).
+    struct Volume {
+        ObjectVolume kind;
+        VolumeMedium medium;
+        const Mesh* mesh = nullptr;
+        glm::mat4 world{1.0f};
+    };
+    std::vector<Volume> volumes;
+    glm::dvec3 insideOrigin{std::numeric_limits<double>::quiet_NaN()};
+    MediumSet inside;
+
+    const MediumSet& volumesAround(const glm::dvec3& origin) {
+        if (origin == insideOrigin) return inside;
+        inside = MediumSet();
+        for (std::size_t id = 0; id < volumes.size(); ++id) {
+            const Volume& v = volumes[id];
+            if (v.kind.volume && containsPoint(*v.mesh, v.world, glm::vec3(origin)))
+                inside.cross(int(id), v.medium, 1);
+        }
+        insideOrigin = origin;
+        return inside;
+    }
+
+    // The walk of render/volume_composite.hpp over a sample's ordered fragments.
+    glm::vec3 compositeVolumetric(const PixelSample& s, const glm::dvec3& origin, const glm::dvec3& direction,
+                                  double farDepth) {
+        const double scale = glm::length(direction);  // distance per unit of eye depth
+        std::vector<VolumeFragment> walk;
+        walk.reserve(s.fragments.size());
+        for (const SurfaceFragment& f : s.fragments) {
+            VolumeFragment v;
+            v.distance = double(f.depth) * scale;
+            v.object = f.object;
+            const Volume& vol = volumes.at(std::size_t(f.object));
+            if (vol.kind.volume) {
+                v.medium = &vol.medium;
+                v.entry = f.frontFacing == vol.kind.entersThroughFront;
+            } else {
+                v.color = f.color;
+                v.alpha = f.alpha;
+            }
+            walk.push_back(v);
+        }
+        const double end = (s.hasOpaque ? double(s.opaqueDepth) : farDepth) * scale;
+        const float ls = inscatteredRadiance(scene->lightDirection, glm::vec3(direction));
+        return compositeVolumes(walk, volumesAround(origin), end, s.opaqueColor, ls).color;
+    }
 };
 
 RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>& objects, RaycastOptions options)
@@ -302,6 +352,16 @@ RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>
         p.normalMatrix = det != 0.0 ? glm::transpose(glm::inverse(linear)) : glm::dmat3(1.0);
         BvhBuilder{p, {}}.build();
         (material.isTransparent() ? impl_->transparent : impl_->opaque).push_back(std::move(p));
+    }
+    if (options.volumes) {
+        const std::vector<ObjectVolume> kinds = classifyVolumes(scene, objects);
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            const Object& obj = objects[i];
+            if (obj.id < 0) throw std::runtime_error("raycast: negative object id");
+            if (std::size_t(obj.id) >= impl_->volumes.size()) impl_->volumes.resize(std::size_t(obj.id) + 1);
+            impl_->volumes[std::size_t(obj.id)] = {kinds[i], mediumOf(scene.materials[std::size_t(obj.material)]),
+                                                   &scene.meshes[std::size_t(obj.mesh)], obj.world};
+        }
     }
 }
 
@@ -377,7 +437,8 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
     }
     // The fragments come back in compositing order, ties resolved by the scene's tie rule.
     out.depthTies = orderFragments(out.fragments, tieToleranceFromUlps(scene.depthTieUlps));
-    out.color = compositeOrdered(out.fragments, out.opaqueColor);
+    out.color = impl_->options.volumes ? impl_->compositeVolumetric(out, origin, direction, farDepth)
+                                       : compositeOrdered(out.fragments, out.opaqueColor);
     return out;
 }
 

@@ -33,6 +33,10 @@ struct RaycastOptions {
     // this on only against a renderer that culls such objects (with glFrontFace flipped for
     // negative-determinant worlds, which is how `frontFacing` is defined here).
     bool cullSingleSidedBackFaces = false;
+    // Render closed objects whose material declares a volume as participating media (the model
+    // of render/volume_composite.hpp, what ll-volume and abuffer-volume draw) instead of alpha
+    // shells. Other transparent objects stay alpha surfaces in the same walk.
+    bool volumes = false;
 };
 
 // Everything one pixel's ray meets, for tests and statistics.

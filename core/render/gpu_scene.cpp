@@ -39,6 +39,17 @@ GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(sce
         g.indexCount = GLsizei(mesh.indices.size());
         meshes_.push_back(std::move(g));
     }
+    volumes_ = classifyVolumes(scene_, objects_);
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+        const ObjectVolume& v = volumes_[i];
+        // gl_FrontFacing is the winding on screen: a world with a negative determinant mirrors it.
+        const bool mirrored = glm::determinant(glm::mat3(objects_[i].world)) < 0.0f;
+        volumeEntry_.push_back(!v.volume ? 0 : (v.entersThroughFront != mirrored ? 1 : -1));
+    }
+    for (const Mesh& mesh : scene_.meshes)
+        // The volumetric stores put two flags above the primitive id (volume_bindings.h).
+        if (mesh.triangleCount() >= (std::size_t(1) << 30))
+            throw std::runtime_error("mesh '" + mesh.name + "' has 2^30 triangles or more");
     for (const Object& o : objects_) {
         bounds_.extend(o.worldBounds);
         triangles_ += scene_.meshes[o.mesh].triangleCount();
@@ -64,6 +75,7 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex) const {
     glProgramUniform1f(program, p.alphaCutoff, m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f);
     glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
     glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
+    glProgramUniform1i(program, p.volumeEntry, volumeEntry_[std::size_t(objectIndex)]);
     const GpuMesh& mesh = meshes_[o.mesh];
     if (mesh.indexCount == 0) return;
     glBindVertexArray(mesh.vertexArray.id());

@@ -3,6 +3,7 @@
 // transparent lists, and the draw call every pass uses.
 #include "gl/objects.hpp"
 #include "render/scene_program.hpp"
+#include "scene/mesh_volume.hpp"
 #include "scene/scene.hpp"
 
 #include <glm/glm.hpp>
@@ -31,9 +32,13 @@ public:
     // The mesh an object draws, for passes that read its buffers directly (vertex pulling).
     const GpuMesh& meshOf(int objectIndex) const { return meshes_[objects_[objectIndex].mesh]; }
     std::size_t triangleCount() const { return triangles_; }
+    // What the volumetric techniques make of each object (indexed like objects()): a medium, or
+    // why it is drawn as a surface. Computed once at construction.
+    const std::vector<ObjectVolume>& objectVolumes() const { return volumes_; }
 
     // Sets the per-object uniforms (model, normal matrix, material with its volume parameters
-    // tau and albedo, id) on `program`, which must be bound, and draws the object's triangles.
+    // tau and albedo, id, which faces enter a volume) on `program`, which must be bound, and
+    // draws the object's triangles.
     void draw(const SceneProgram& program, int objectIndex) const;
 
     // Uniforms every scene program shares for a frame.
@@ -45,6 +50,8 @@ private:
     std::vector<GpuMesh> meshes_;
     std::vector<int> opaque_;
     std::vector<int> transparent_;
+    std::vector<ObjectVolume> volumes_;
+    std::vector<int> volumeEntry_;  // uVolumeEntry per object: 0 surface, +1/-1 entering faces
     Bounds bounds_;
     std::size_t triangles_ = 0;
 };

@@ -22,6 +22,7 @@ SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, cons
     p.alphaCutoff = glGetUniformLocation(id, "uAlphaCutoff");
     p.tau = glGetUniformLocation(id, "uTau");
     p.albedo = glGetUniformLocation(id, "uAlbedo");
+    p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
     return p;
 }
 

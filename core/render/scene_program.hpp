@@ -12,7 +12,8 @@ namespace strata {
 struct SceneProgram {
     gl::Program program;
     GLint viewProj = -1, model = -1, normalMatrix = -1, baseColor = -1, alpha = -1, objectId = -1,
-          lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1;
+          lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
+          volumeEntry = -1;  // shaders/oit/volume/volume_store.glsl
 
     GLuint id() const { return program.id(); }
 };

@@ -65,6 +65,7 @@ int parseCount(const std::string& spec, const std::string& text, int fallback, i
 // Full-view quads: at distance d a quad of half-size 2d covers a 50-degree view up to 4:1 aspect.
 constexpr float kFirstLayer = 1.0f;
 constexpr float kLayerSpacing = 0.25f;
+constexpr float kSlabThickness = 0.1f;
 
 }  // namespace
 
@@ -84,6 +85,8 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
          "K coincident transparent spheres; roundoff: the copies differ by float round-off only"},
         {"cubes", "separated (optional)", "three overlapping transparent cubes sharing face planes"},
         {"volumes", "", "intersecting transparent spheres with attenuation and albedo"},
+        {"slabs", "N (1..2048, default 8)",
+         "N full-view closed slabs of medium (tau, albedo), 0.1 thick: exactly 2N fragments per pixel"},
         {"default", "", "the demo room: opaque and transparent, intersecting, coplanar, a field of models"},
     };
     return list;
@@ -96,6 +99,23 @@ Scene makeLayersScene(int layers, float alpha) {
         int mesh = s.addMesh(makeQuad(4.0f * d, 4.0f * d));
         int material = s.addMaterial(transparent("layer" + std::to_string(i), paletteColor(i), alpha));
         placeMesh(s, mesh, material, glm::translate(glm::mat4(1.0f), {0, 0, -d}), "layer" + std::to_string(i));
+    }
+    s.camera = CameraPose{};
+    s.lightDirection = {0, 0, 1};
+    return s;
+}
+
+Scene makeSlabsScene(int slabs) {
+    Scene s = emptyScene("slabs:" + std::to_string(slabs));
+    for (int i = 0; i < slabs; ++i) {
+        // Front face at d, back face 0.1 behind; the half-size covers the view at the back face.
+        const float d = kFirstLayer + kLayerSpacing * float(i), back = d + kSlabThickness, half = 2.0f * back;
+        int mesh = s.addMesh(makeBox({-half, -half, -back}, {half, half, -d}));
+        Material m = transparent("slab" + std::to_string(i), paletteColor(i), 0.5f);
+        m.volume = true;
+        m.tau = 1.0f + 3.0f * paletteColor(i + 1);
+        m.albedo = paletteColor(i);
+        placeMesh(s, mesh, s.addMaterial(m), glm::mat4(1.0f), "slab" + std::to_string(i));
     }
     s.camera = CameraPose{};
     s.lightDirection = {0, 0, 1};
@@ -165,6 +185,7 @@ Scene makeVolumesScene() {
         Material m = transparent("volume" + std::to_string(i), v.color, 0.35f);
         m.tau = v.tau;
         m.albedo = v.color;
+        m.volume = true;
         placeMesh(s, sphere, s.addMaterial(m), glm::translate(glm::mat4(1.0f), v.at), "volume" + std::to_string(i));
         ++i;
     }
@@ -195,9 +216,11 @@ Scene makeDefaultScene() {
     Material red = transparent("red volume", {0.95f, 0.3f, 0.2f}, 0.4f);
     red.tau = {0.5f, 2.5f, 3.0f};
     red.albedo = red.baseColor;
+    red.volume = true;
     Material blue = transparent("blue volume", {0.2f, 0.45f, 0.95f}, 0.4f);
     blue.tau = {3.0f, 1.5f, 0.4f};
     blue.albedo = blue.baseColor;
+    blue.volume = true;
     placeMesh(s, sphere, s.addMaterial(red), glm::translate(glm::mat4(1.0f), {1.75f, 1.3f, -1.5f}), "red volume");
     placeMesh(s, sphere, s.addMaterial(blue), glm::translate(glm::mat4(1.0f), {2.25f, 1.3f, -1.4f}), "blue volume");
 
@@ -243,6 +266,7 @@ Scene makeBuiltinScene(const std::string& spec) {
         return makeCubesScene(arg == "separated");
     }
     if (name == "volumes" && arg.empty()) return makeVolumesScene();
+    if (name == "slabs") return makeSlabsScene(parseCount(spec, arg, 8, 1, 2048));
     if (name == "default" && arg.empty()) return makeDefaultScene();
     std::string known;
     for (const auto& b : builtinScenes()) known += (known.empty() ? "" : ", ") + b.name;

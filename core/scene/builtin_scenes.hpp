@@ -9,6 +9,8 @@
 //   builtin:cubes        three partially overlapping transparent cubes sharing face planes
 //   builtin:cubes:separated  the same cubes nudged apart so no faces are coplanar
 //   builtin:volumes      intersecting transparent spheres with attenuation tau and albedo
+//   builtin:slabs:N      N full-view closed slabs of medium, 0.1 thick (exactly 2N fragments per
+//                        pixel): the volumetric paper's Tables 1-2 setup
 //   builtin:default      the demo: an opaque room with transparent and intersecting objects,
 //                        coplanar panels and a field of repeated models
 #include "scene/scene.hpp"
@@ -35,6 +37,7 @@ Scene makeCoplanarScene(int copies, float alpha = 0.5f);
 Scene makeShellsScene(int copies, bool roundoff);
 Scene makeCubesScene(bool separated);
 Scene makeVolumesScene();
+Scene makeSlabsScene(int slabs);
 Scene makeDefaultScene();
 
 // A distinct, saturated colour for index i (golden-angle hue steps).

@@ -400,6 +400,11 @@ struct Converter {
                 if (clamped)
                     ignored.note("attenuationColor range", "KHR_materials_volume attenuationColor outside [0, 1] clamped", what);
                 m.albedo = m.baseColor;
+                // The extension's thicknessFactor 0 (its default) declares a thin-walled material:
+                // a volume only where the author gave the medium a thickness.
+                const double thickness = number(ext, "thicknessFactor", 0.0, vw);
+                if (!(thickness >= 0.0) || !std::isfinite(thickness)) fail(vw + ": thicknessFactor must be a finite number >= 0");
+                m.volume = thickness > 0.0;
             }
             scene.materials.push_back(std::move(m));
         }

@@ -33,6 +33,11 @@ struct Material {
     // the shaders as uTau and uAlbedo (shaders/common/surface.glsl). tau is in [0, kMaxTau].
     glm::vec3 tau{0.0f};
     glm::vec3 albedo{0.0f};
+    // The material fills the object's inside (a participating medium) rather than covering a
+    // thin shell: glTF KHR_materials_volume with thicknessFactor > 0, a scene JSON material with
+    // "tau". The volumetric techniques render such objects by tau and albedo when their mesh is
+    // closed (scene/mesh_volume.hpp); every other technique draws them as alpha surfaces.
+    bool volume = false;
     bool doubleSided = true;
 
     // Transparent materials go through the transparency technique, everything else through

@@ -89,6 +89,7 @@ Material parseMaterial(const json& m, const std::string& where) {
     }
     if (m.contains("tau")) {
         mat.tau = vector<3>(m["tau"], w + "tau");
+        mat.volume = true;  // a medium: the volumetric techniques render its inside
         for (int k = 0; k < 3; ++k)
             if (!(mat.tau[k] >= 0.0f && mat.tau[k] <= kMaxTau))  // 1e300 is finite JSON but an infinite float
                 fail(w + "tau: components must be in [0, " + std::to_string(int(kMaxTau)) + "] per metre");

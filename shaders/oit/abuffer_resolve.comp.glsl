@@ -5,7 +5,11 @@
 #ifdef LIST_TAIL
 #include "buffers/tail_resolve.glsl"
 #endif
+#ifdef VOLUME
+#include "oit/volume/volume_list.glsl"
+#else
 #include "abuffer_list.glsl"
+#endif
 
 layout(local_size_x = RESOLVE_GROUP_SIZE, local_size_y = RESOLVE_GROUP_SIZE) in;
 

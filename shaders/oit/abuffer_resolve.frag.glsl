@@ -6,7 +6,11 @@
 #ifdef LIST_TAIL
 #include "buffers/tail_resolve.glsl"
 #endif
+#ifdef VOLUME
+#include "oit/volume/volume_list.glsl"
+#else
 #include "abuffer_list.glsl"
+#endif
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(location = 0) out vec4 outColor;

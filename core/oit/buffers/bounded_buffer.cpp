@@ -32,7 +32,7 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
     id_ = id;
     if (!storeProgram_.program) {
         const Shaders s = shaders();
-        storeProgram_ = buildSceneProgram(s.store);
+        storeProgram_ = buildSceneProgram(s.store, s.storeDefines);
         resolveProgram_ = gl::buildProgram(s.resolve, s.resolveDefines);
     }
     tailTargets_.setPrecision(bounds.tailPrecision);
@@ -56,13 +56,13 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
     {
         gl::ScopedPass pass(frame.timer, id + " resolve");
         const GLuint program = resolveProgram_.id();
-        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         bindStorage();
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         tailTargets_.bindForResolve(frame, bounds.tail);
         setUniforms(program, frame, bounds.capacity);
         glProgramUniform1i(program, glGetUniformLocation(program, "uTail"), bounds.tail);
         setDepthOrderUniforms(frame, program);
+        glBindFramebuffer(GL_FRAMEBUFFER, prepareResolve(frame, program));
         drawFullscreen(frame, program);
         ++stats.passes;
     }
@@ -71,6 +71,7 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
     stats.overflowed = c.overflow > 0;
     (bounds.tail ? stats.fragmentsTail : stats.fragmentsDropped) = c.overflow;
     stats.bytes = storageBytes(frame, bounds.capacity) + tailTargets_.bytes(bounds.tail, frame.size);
+    finishResolve(stats);
 }
 
 }  // namespace strata::buffers

@@ -76,6 +76,7 @@ protected:
         std::string store;                         // scene fragment shader
         std::vector<std::string> resolve;          // full-screen program
         gl::Defines resolveDefines;
+        gl::Defines storeDefines = {};
     };
     struct Bounds {
         int capacity;
@@ -102,6 +103,13 @@ protected:
     // Called before each store pass (a per-pass uniform); whether the pass writes the tail.
     virtual void beginStorePass(int /*pass*/) {}
     virtual bool storePassWritesTail(int /*pass*/) const { return true; }
+    // Called with the resolve program bound to its inputs, before it draws: binds what else it
+    // reads and returns the framebuffer it draws into (the frame's output by default).
+    virtual GLuint prepareResolve(const FrameContext& frame, GLuint /*program*/) {
+        return frame.targets.outputFramebuffer();
+    }
+    // Called after the resolve with the frame's statistics filled in from the counters.
+    virtual void finishResolve(TechniqueStats& /*stats*/) {}
 
     static std::uint64_t pixelCount(const FrameContext& frame) { return std::uint64_t(frame.size.x) * frame.size.y; }
 

@@ -1,11 +1,15 @@
 // Per-pixel linked lists with a fixed node pool (Yang et al. 2010). The same structure as the
 // abuffer reference, but the pool is a setting (average nodes per pixel) and never grows:
 // what does not fit is counted and dropped, or blended approximately with tail=1.
+// `ll-volume` is the same pool with the volumetric resolve of Barta and Kovacs (oit/volume/),
+// the paper's own technique: a fixed pool sized by an estimate.
 #include "oit/buffers/bounded_buffer.hpp"
 #include "oit/technique.hpp"
+#include "oit/volume/volume_resolve.hpp"
 
 #include "common/bindings.h"
 
+#include <memory>
 #include <stdexcept>
 
 namespace strata {
@@ -20,13 +24,35 @@ struct PoolCapacity {
 
 class LinkedLists final : public BoundedBuffer<PoolCapacity> {
 public:
-    using BoundedBuffer::BoundedBuffer;
+    // volume: the volumetric store and resolve (VOLUME defined in the shaders).
+    LinkedLists(TechniqueInfo info, bool volume)
+        : BoundedBuffer(std::move(info)), volume_(volume ? std::make_unique<VolumeResolve>() : nullptr) {}
 
 private:
     Shaders shaders() const override {
+        if (volume_)
+            return {"oit/buffers/ll_store.frag.glsl",
+                    {"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"},
+                    {{"LIST_TAIL", ""}, {"VOLUME", ""}},
+                    {{"VOLUME", ""}}};
         return {"oit/buffers/ll_store.frag.glsl",
                 {"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"},
                 {{"LIST_TAIL", ""}}};
+    }
+
+    GLuint prepareResolve(const FrameContext& frame, GLuint program) override {
+        if (!volume_) return frame.targets.outputFramebuffer();
+        volume_->prepare(frame);
+        volume_->bind(frame, program);
+        return volume_->colorFramebuffer(frame);
+    }
+
+    void finishResolve(TechniqueStats& stats) override {
+        if (!volume_) return;
+        stats.bytes += volume_->bytes();
+        const std::uint64_t ignored = volume_->nestingOverflow();
+        stats.fragmentsDropped += ignored;
+        stats.overflowed = stats.overflowed || ignored > 0;
     }
 
     static std::uint64_t poolNodes(const FrameContext& frame, int capacity) {
@@ -65,6 +91,7 @@ private:
 
     PixelImage heads_;
     SizedBuffer nodes_;
+    std::unique_ptr<VolumeResolve> volume_;  // ll-volume only
 };
 
 }  // namespace
@@ -75,7 +102,16 @@ TechniqueEntry llEntry() {
                        "per-pixel linked lists: head-pointer image, one global atomic counter, a fixed node pool "
                        "(capacity nodes per pixel on average, never grown); overflow counted and dropped or blended "
                        "approximately (tail=1); resolve sorts by (depth, object, primitive)"};
-    return techniqueEntry<LinkedLists>(info);
+    return techniqueEntry<LinkedLists>(info, false);
+}
+
+TechniqueEntry llVolumeEntry() {
+    TechniqueInfo info{"ll-volume", "volumetric", false, true, "2",
+                       "as ll, + 24 B per object (medium table)",
+                       "the volumetric linked-list resolve (Barta and Kovacs): ll's fixed pool, each list sorted and "
+                       "walked through the media of the closed volume objects it crosses (tau, albedo, Rayleigh "
+                       "in-scattering), thin surfaces alpha-composited in the same walk; overflow counted"};
+    return techniqueEntry<LinkedLists>(info, true);
 }
 
 }  // namespace strata

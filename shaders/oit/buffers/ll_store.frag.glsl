@@ -8,6 +8,10 @@
 #include "buffer_bindings.h"
 #include "tail_store.glsl"
 
+#ifdef VOLUME
+#include "oit/volume/volume_store.glsl"
+#endif
+
 layout(early_fragment_tests) in;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
 uniform uint uCapacity;  // nodes in the pool
@@ -18,7 +22,11 @@ void main() {
     if (index >= uCapacity) { tailAdd(c); return; }
     nodes[index].depth = gl_FragCoord.z;
     nodes[index].objectId = uObjectId;
+#ifdef VOLUME
+    nodes[index].primitiveId = uint(gl_PrimitiveID) | volumeFlags();
+#else
     nodes[index].primitiveId = uint(gl_PrimitiveID);
+#endif
     nodes[index].colorRG = packHalf2x16(c.rg);
     nodes[index].colorBA = packHalf2x16(c.ba);
     nodes[index].next = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
