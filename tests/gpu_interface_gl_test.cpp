@@ -13,6 +13,7 @@
 #include "oit/buffers/prefix_sum.hpp"
 #include "oit/peeling/peel_bindings.h"
 #include "oit/screendoor/screendoor_bindings.h"
+#include "oit/volume/volume_bindings.h"
 
 #include <doctest/doctest.h>
 
@@ -226,6 +227,10 @@ std::vector<ProgramCase> programCases() {
     };
     const std::map<std::string, Binding> lists = {{"uHeads", image(BIND_HEADS)}, {"FragmentNodes", ssbo(BIND_NODES)}};
     const std::map<std::string, Binding> listResolve = with(lists, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}});
+    const std::map<std::string, Binding> volumeResolve =
+        with(listResolve, {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
+                           {"VolumeObjects", ssbo(BIND_VOLUME_OBJECTS)},
+                           {"VolumeStats", ssbo(BIND_VOLUME_STATS)}});
     const std::map<std::string, Binding> arrayResolve = with(tail, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)},
                                                                     {"FragmentEntries", ssbo(BIND_ENTRIES)}});
     const std::map<std::string, Binding> bucket = {{"uRange", tex(BIND_PEEL_PREVIOUS)},
@@ -309,6 +314,12 @@ std::vector<ProgramCase> programCases() {
         {{scene, "oit/buffers/ll_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}}, with(listResolve, tail)},
         {{"oit/buffers/prefix_scan.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
+        // volumetric (abuffer-volume, ll-volume): the lists' stores and resolves with VOLUME
+        {{scene, "oit/abuffer_store.frag.glsl"}, {{"VOLUME", ""}}, with(lists, {{"uNodeCount", kCounters}})},
+        {{scene, "oit/buffers/ll_store.frag.glsl"}, {{"VOLUME", ""}}, with(lists, {{"uNodeCount", kCounters}})},
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"VOLUME", ""}}, volumeResolve},
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"VOLUME", ""}}, with(volumeResolve, tail)},
+        {{"oit/abuffer_resolve.comp.glsl"}, {{"VOLUME", ""}}, with(volumeResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
         {{"oit/buffers/prefix_add.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
     };
 }
@@ -347,12 +358,26 @@ void main() {
                                 FIELD(FragmentEntry, colorBA)});
     gl::Program points = buildCompute(R"(#version 450 core
 #include "oit/screendoor/screendoor_bindings.h"
+#include "oit/volume/volume_bindings.h"
 layout(std430, binding = BIND_POINTS) buffer Points { ScreenDoorPoint points[]; };
 layout(local_size_x = 1) in;
 void main() {
     points[0] = points[1];
 }
 )");
+    gl::Program volumes = buildCompute(R"(#version 450 core
+#include "oit/volume/volume_bindings.h"
+layout(std430, binding = BIND_VOLUME_OBJECTS) buffer VolumeObjects { VolumeObject volumeObjects[]; };
+layout(local_size_x = 1) in;
+void main() {
+    volumeObjects[0] = volumeObjects[1];
+}
+)");
+    using gpu::VolumeObject;
+    checkLayout<VolumeObject>(volumes.id(), "VolumeObjects",
+                              {FIELD(VolumeObject, tauR), FIELD(VolumeObject, tauG), FIELD(VolumeObject, tauB),
+                               FIELD(VolumeObject, scatterR), FIELD(VolumeObject, scatterG),
+                               FIELD(VolumeObject, scatterB)});
     using gpu::ScreenDoorPoint;
     checkLayout<ScreenDoorPoint>(points.id(), "Points",
                                  {FIELD(ScreenDoorPoint, x), FIELD(ScreenDoorPoint, y), FIELD(ScreenDoorPoint, z),
