@@ -48,17 +48,29 @@ std::vector<std::string> benchModeIds(const std::vector<std::string>& requested)
         for (const auto& e : techniqueRegistry()) modes.push_back(e.info.id);
     for (const auto& m : modes)
         if (!findTechnique(m)) createTechnique(m);  // throws the list of known ids
-    // The reference renders first, so every technique is compared on the same frames.
-    modes.erase(std::remove(modes.begin(), modes.end(), "abuffer"), modes.end());
-    modes.insert(modes.begin(), "abuffer");
+    // The references render first, so every technique is compared on the same frames: abuffer,
+    // and abuffer-volume when a volumetric technique is benched (their model is not abuffer's).
+    const bool volumetric = std::any_of(modes.begin(), modes.end(), [](const std::string& m) {
+        return findTechnique(m)->info.family == "volumetric";
+    });
+    for (const char* reference : {"abuffer-volume", "abuffer"}) {
+        if (std::string(reference) == "abuffer-volume" && !volumetric) continue;
+        modes.erase(std::remove(modes.begin(), modes.end(), reference), modes.end());
+        modes.insert(modes.begin(), reference);
+    }
     return modes;
+}
+
+std::string benchReferenceOf(const std::string& id) {
+    return findTechnique(id)->info.family == "volumetric" ? "abuffer-volume" : "abuffer";
 }
 
 BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     if (options.frames < 1) throw std::invalid_argument("bench: --frames must be at least 1");
     const std::vector<std::string> modes = benchModeIds(options.modes);
-    bool referenceRequested = std::find(options.modes.begin(), options.modes.end(), "abuffer") != options.modes.end() ||
-                              options.modes.empty();
+    auto requested = [&](const std::string& id) {
+        return options.modes.empty() || std::find(options.modes.begin(), options.modes.end(), id) != options.modes.end();
+    };
 
     BenchReport report;
     report.scene = options.sceneName;
@@ -79,25 +91,29 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     }
 
     // Every frame is compared as soon as it is read back, against the reference frame for the same
-    // camera, so no more than two frames are held whatever the frame count. The reference renders
-    // first; its technique object is kept to render the reference frames the other techniques need.
-    // Without a camera path every frame has the same camera and one reference frame serves them all.
+    // camera, so no more than two frames per reference are held whatever the frame count. The
+    // references render first; their technique objects are kept to render the reference frames
+    // the other techniques need. Without a camera path every frame has the same camera and one
+    // reference frame serves them all.
+    struct Reference {
+        std::unique_ptr<Technique> technique;
+        Image image;
+        int key = -1;  // the frame the image shows (0 for every frame of a fixed camera)
+    };
+    std::map<std::string, Reference> references;  // by id: abuffer, abuffer-volume
     FrameRenderer renderer;
-    std::unique_ptr<Technique> reference;
-    Image referenceImage;
-    int referenceKey = -1;  // the frame the reference image shows (0 for every frame of a fixed camera)
     auto keyOf = [&](int f) { return options.cameraPath ? f : 0; };
-    auto referenceFor = [&](int f) -> const Image& {
-        if (referenceKey != keyOf(f)) {
+    auto referenceFor = [&](Reference& ref, int f) -> const Image& {
+        if (ref.key != keyOf(f)) {
             FrameOptions untimed;
             untimed.timePasses = false;
-            renderer.render(scene, cameras[f], options.size, reference.get(), untimed);
+            renderer.render(scene, cameras[f], options.size, ref.technique.get(), untimed);
             gl::checkGl("bench reference frame");
-            referenceImage = renderer.readOutput();
-            referenceKey = keyOf(f);
-            if (options.referenceFrame) options.referenceFrame(f, referenceImage);
+            ref.image = renderer.readOutput();
+            ref.key = keyOf(f);
+            if (options.referenceFrame && &ref == &references.at("abuffer")) options.referenceFrame(f, ref.image);
         }
-        return referenceImage;
+        return ref.image;
     };
     for (std::size_t m = 0; m < modes.size(); ++m) {
         const std::string& id = modes[m];
@@ -105,7 +121,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             options.progress("bench: [" + std::to_string(m + 1) + "/" + std::to_string(modes.size()) + "] " + id);
         std::unique_ptr<Technique> owned = createConfiguredTechnique(id, options.settings);
         Technique* technique = owned.get();
-        if (m == 0) reference = std::move(owned);
+        const std::string referenceId = benchReferenceOf(id);
+        const bool isReference = referenceId == id;
+        Reference& reference = references[referenceId];
+        if (isReference) reference.technique = std::move(owned);
 
         FrameOptions frameOptions;
         frameOptions.countFragments = true;
@@ -126,7 +145,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         for (int f = 0; f < options.frames; ++f) {
             // The reference frame first (when it is not in hand), so the technique's frame is the
             // last one rendered when its output is read.
-            if (m > 0) referenceFor(f);
+            if (!isReference) referenceFor(reference, f);
             FrameResult r = renderer.render(scene, cameras[f], options.size, technique, frameOptions);
             gl::checkGl(("bench frame of " + id).c_str());
             double techniqueMs = 0.0, opaqueMs = 0.0;
@@ -152,20 +171,20 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.fragmentsTail += r.stats.fragmentsTail;
 
             Image image = renderer.readOutput();
-            if (m == 0) {
+            if (isReference) {
                 // The reference against itself: zero by definition. Its frame is the one in hand.
                 error.add(image, image);
-                referenceImage = std::move(image);
-                referenceKey = keyOf(f);
-                if (options.referenceFrame) options.referenceFrame(f, referenceImage);
-                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), referenceImage);
+                reference.image = std::move(image);
+                reference.key = keyOf(f);
+                if (options.referenceFrame && id == "abuffer") options.referenceFrame(f, reference.image);
+                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), reference.image);
             } else {
-                error.add(image, referenceImage);
+                error.add(image, reference.image);
                 if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), image);
             }
         }
         // A fixed camera needs no more reference renders: free the reference's buffers now.
-        if (m == 0 && !options.cameraPath) reference.reset();
+        if (isReference && !options.cameraPath) reference.technique.reset();
         mode.msMedian = percentile(gpu, 0.5);
         mode.msP95 = percentile(gpu, 0.95);
         mode.cpuMsMedian = percentile(cpu, 0.5);
@@ -175,7 +194,8 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.psnr = error.psnr();
         mode.maxAbsError = error.maxAbsError();
         mode.robustnessRatio = mode.fragmentsTotal ? double(mode.fragmentsCaptured) / double(mode.fragmentsTotal) : 1.0;
-        if (m > 0 || referenceRequested) report.modes.push_back(std::move(mode));
+        mode.reference = referenceId;
+        if (!isReference || requested(id)) report.modes.push_back(std::move(mode));
     }
     return report;
 }

@@ -41,6 +41,7 @@ struct BenchOptions {
 struct BenchMode {
     std::string id;
     std::string family;
+    std::string reference;  // the mode its error is measured against (benchReferenceOf)
     bool robust = false;
     bool handlesCoplanarity = false;
     double msMedian = 0, msP95 = 0;          // GPU ms of the technique's passes (opaque pass excluded)
@@ -78,6 +79,10 @@ struct BenchReport {
 // The techniques a bench of `modes` renders (empty: all), the reference first: the set its
 // settings are resolved against. Throws std::invalid_argument for an unknown id.
 std::vector<std::string> benchModeIds(const std::vector<std::string>& modes);
+
+// The technique a mode's error is measured against: abuffer-volume for the volumetric family
+// (whose model draws volumes as media), abuffer for every other.
+std::string benchReferenceOf(const std::string& id);
 
 // Needs a current GL context. Throws std::invalid_argument for an unknown mode.
 BenchReport runBench(const GpuScene& scene, const BenchOptions& options);
