@@ -84,6 +84,7 @@ expect_error "strata: unknown command 'nosuch'" nosuch
 if "$strata" track --help >/dev/null 2>&1; then
   expect_error "strata track: --trace excludes --synthetic" track --trace "$tmp/path.txt" --synthetic 1
   expect_error "strata track: --display-hz" track --synthetic 1 --display-hz -5
+  expect_error "--motion \`run\`: expected seated, walk or scan" track --synthetic 1 --motion run
 fi
 # Help is not a rejection: it prints and exits 0.
 if "$strata" bench --help >"$tmp/stdout" 2>"$tmp/stderr" && grep -q -- "--frames" "$tmp/stdout" && [ ! -s "$tmp/stderr" ]

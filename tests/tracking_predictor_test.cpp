@@ -133,10 +133,14 @@ TEST_CASE("hostile streams: 180-degree steps, dt = 0, a 250 ms gap, extreme nois
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (double procNoise : {1e-12, 1e6})
         for (double measNoise : {1e-12, 1e6})
-            for (MotionModel m : {MotionModel::ConstantVelocity, MotionModel::ConstantAcceleration}) {
+            for (MotionModel m : {MotionModel::ConstantVelocity, MotionModel::ConstantAcceleration})
+            for (bool adaptive : {false, true}) {
                 CAPTURE(procNoise);
                 CAPTURE(measNoise);
+                CAPTURE(adaptive);
                 KalmanOptions o = kalmanOptions(m);
+                o.adaptive = adaptive;
+                o.accelerationDecay = adaptive ? 0.04 : 0.0;
                 o.positionProcessCV = o.positionProcessCA = o.orientationProcessCV = o.orientationProcessCA = procNoise;
                 o.positionSigma = o.orientationSigma = measNoise;
                 KalmanPredictor k(o);

@@ -108,3 +108,37 @@ TEST_CASE("head-movement CSV: numeric and date-time timestamps, Unity frame conv
     CHECK(errorOf("i.csv", header + "0,0,0,0,0,1,0,0,0\nnoon,0,0,0,0,1,0,0,0\n").rfind(tempPath("i.csv") + ":3: Timestamp", 0) == 0);
     CHECK(errorOf("j.csv", header + "0,0,0,0,0,1,0,0\n").rfind(tempPath("j.csv") + ":2: expected 9", 0) == 0);
 }
+
+TEST_CASE("head-movement CSV: a file laid out as the Wu et al. 2017 dataset ships it") {
+    // Layout of the dataset's per-user, per-video files (Wu, Tan, Wang, Yang, "A Dataset for
+    // Exploring User Behaviors in VR Spherical Video Streaming", MMSys 2017; files
+    // Experiment_N/USER/video_K.csv), as its readme and the readers built on it use it:
+    // the header `Timestamp,PlaybackTime,UnitQuaternion.x,UnitQuaternion.y,UnitQuaternion.z,
+    // UnitQuaternion.w,HmdPosition.x,HmdPosition.y,HmdPosition.z`, Timestamp a wall-clock date-time
+    // with sub-second digits, PlaybackTime the video's seconds, the HMD's Unity pose (left-handed,
+    // +Z forward, metres). Written by a .NET logger: CRLF line ends and possibly a UTF-8 BOM;
+    // .NET's default format gives seven fractional digits; a few samples repeat a time.
+    // The rows below are in that layout (values made up): ~ 100 Hz, a 90-degree yaw in Unity.
+    const std::string text =
+        "\xEF\xBB\xBFTimestamp,PlaybackTime,UnitQuaternion.x,UnitQuaternion.y,UnitQuaternion.z,"
+        "UnitQuaternion.w,HmdPosition.x,HmdPosition.y,HmdPosition.z\r\n"
+        "2016-12-07 13:39:56.4180000,0.000,0,0,0,1,0.0012,-0.0031,0.0105\r\n"
+        "2016-12-07 13:39:56.4280000,0.010,0,0.0174524,0,0.9998477,0.0012,-0.0031,0.0106\r\n"
+        "2016-12-07 13:39:56.4280000,0.010,0,0.0174524,0,0.9998477,0.0012,-0.0031,0.0106\r\n"
+        "2016-12-07 13:39:56.4390000,0.021,0,0.7071068,0,0.7071068,0.0013,-0.0030,0.0107\r\n";
+    const std::string path = tempPath("wu2017.csv");
+    writeText(path, text);
+    const Trace t = readTrace(path);
+    std::filesystem::remove(path);
+    REQUIRE(t.size() == 4);
+    CHECK(t[0].t == 0.0);
+    // Within a microsecond: wall-clock seconds since 1970 carry ~2e-7 s of double round-off.
+    CHECK(t[1].t == doctest::Approx(0.010).epsilon(1e-4));
+    CHECK(t[2].t == t[1].t);  // a repeated time is kept; the predictors treat it as dt = 0
+    CHECK(t[3].t == doctest::Approx(0.021).epsilon(1e-4));
+    CHECK(t[0].p.z() == doctest::Approx(-0.0105));  // Unity's +Z forward is this project's -Z
+    // Unity's +90 deg about +Y (left-handed: the view turns from +Z to +X, to the right) is, after
+    // mirroring Z, a turn from -Z to +X: -90 deg about +Y in this right-handed frame.
+    const Eigen::Vector3d forward = t[3].q * Eigen::Vector3d(0.0, 0.0, -1.0);
+    CHECK((forward - Eigen::Vector3d(1.0, 0.0, 0.0)).norm() < 1e-6);
+}

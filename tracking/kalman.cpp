@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace strata::tracking {
 namespace {
@@ -70,6 +71,7 @@ void AxisKalman<Order>::correct(const Eigen::Vector3d& z, double sigma) {
     const double s = P(0, 0) + r;
     const Eigen::Matrix<double, Order, 1> K = P.col(0) / s;
     const Eigen::RowVector3d residual = z.transpose() - x.row(0);
+    nis = residual.squaredNorm() / s;
     x += K * residual;
     Mat A = Mat::Identity();
     A.col(0) -= K;
@@ -124,6 +126,7 @@ typename KinematicKalman<Order>::Vec KinematicKalman<Order>::correct(const Eigen
     const Eigen::Matrix3d Sinv = S.inverse();
     const Eigen::Matrix<double, N, 3> K = P.template leftCols<3>().lazyProduct(Sinv);
     const Vec dx = K.lazyProduct(residual);
+    nis = residual.dot(Sinv * residual);
     x += dx;
     // Joseph form (I-KH) P (I-KH)^T + K R K^T: stays symmetric positive semi-definite for any
     // gain, unlike (I-KH) P, which round-off can push indefinite when R << P.
@@ -150,13 +153,36 @@ void KinematicKalman<Order>::keepSymmetricPositiveDefinite() {
 template class KinematicKalman<2>;
 template class KinematicKalman<3>;
 
+void KalmanPredictor::reset() {
+    have_ = false;
+    // The learnt noise belongs to the sensor and the motion: a restart after a gap keeps it,
+    // only a reset forgets it.
+    measurementNoise_.reset();
+    positionScale_.reset();
+    orientationScale_.reset();
+}
+
+// Bounded to 1e-3..1e3 times the configured sigma: a noise-free stream would otherwise drive
+// the estimate to zero and the gain to exactly one.
+double KalmanPredictor::orientationSigma() const {
+    const double o = options_.orientationSigma;
+    if (!options_.adaptive) return o;
+    return std::clamp(measurementNoise_.orientationSigma(o), 1e-3 * o, 1e3 * o);
+}
+
+double KalmanPredictor::positionSigma() const {
+    const double o = options_.positionSigma;
+    if (!options_.adaptive) return o;
+    return std::clamp(measurementNoise_.positionSigma(o), 1e-3 * o, 1e3 * o);
+}
+
 void KalmanPredictor::start(const PoseSample& s) {
     const auto& o = options_;
     auto initPosition = [&](auto& f) {
-        f.init(s.p, o.positionSigma, o.initialVelocitySigma, o.initialAccelerationSigma);
+        f.init(s.p, positionSigma(), o.initialVelocitySigma, o.initialAccelerationSigma);
     };
     auto initOrientation = [&](auto& f) {
-        f.init(Eigen::Vector3d::Zero(), o.orientationSigma, o.initialAngularVelocitySigma,
+        f.init(Eigen::Vector3d::Zero(), orientationSigma(), o.initialAngularVelocitySigma,
                o.initialAngularAccelerationSigma);
     };
     if (o.positionModel == MotionModel::ConstantAcceleration)
@@ -189,11 +215,13 @@ void KalmanPredictor::updateOrientation(KinematicKalman<Order>& f, const PoseSam
         typename Filter::Mat F = Filter::transition(dt);
         F.template topLeftCorner<3, 3>() = step.toRotationMatrix();
         f.x.template segment<3>(3) += a * dt;
-        f.propagate(F, dt, Order == 3 ? o.orientationProcessCA : o.orientationProcessCV, false);
+        const double q = (Order == 3 ? o.orientationProcessCA : o.orientationProcessCV) * orientationScale_.scale();
+        f.propagate(F, dt, q, false);
     }
     const Eigen::Vector3d residual = worldDelta(q_, s.q);  // log(q_meas q^-1), shorter arc
     f.x.template head<3>().setZero();
-    const typename Filter::Vec dx = f.correct(residual, o.orientationSigma);
+    const typename Filter::Vec dx = f.correct(residual, orientationSigma());
+    if (o.adaptive) orientationScale_.add(f.nis, 3, dt);
     const Eigen::Vector3d dtheta = dx.template head<3>();
     q_ = safeNormalized(quatExp(dtheta) * q_);
     f.x.template head<3>().setZero();
@@ -206,6 +234,7 @@ void KalmanPredictor::updateOrientation(KinematicKalman<Order>& f, const PoseSam
 
 void KalmanPredictor::update(const PoseSample& s) {
     if (!s.p.allFinite() || !s.q.coeffs().allFinite()) return;  // never let NaN into the state
+    if (options_.adaptive) measurementNoise_.add(s);
     if (!have_) {
         start(s);
         return;
@@ -220,8 +249,10 @@ void KalmanPredictor::update(const PoseSample& s) {
     std::visit(
         [&](auto& f) {
             constexpr int order = std::decay_t<decltype(f)>::order();
-            if (dt > 0.0) f.propagate(dt, order == 3 ? o.positionProcessCA : o.positionProcessCV);
-            f.correct(s.p, o.positionSigma);
+            const double q = (order == 3 ? o.positionProcessCA : o.positionProcessCV) * positionScale_.scale();
+            if (dt > 0.0) f.propagate(dt, q);
+            f.correct(s.p, positionSigma());
+            if (o.adaptive) positionScale_.add(f.nis, 3, dt);
             f.keepSymmetricPositiveDefinite();
         },
         position_);
@@ -232,21 +263,51 @@ void KalmanPredictor::update(const PoseSample& s) {
 PoseSample KalmanPredictor::predict(double time) const {
     if (!have_) return PoseSample{time, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity()};
     const double tau = time - lastT_;
+    // Weight of the acceleration over the horizon: tau^2/2 when it is held (CA), and
+    // T^2 (e^(-tau/T) - 1 + tau/T) when it decays with correlation time T (Singer 1970), which
+    // tends to tau^2/2 as T grows.
+    const double T = options_.accelerationDecay;
+    const double ka = T > 0.0 ? T * T * (std::exp(-tau / T) - 1.0 + tau / T) : 0.5 * tau * tau;
     const Eigen::Vector3d p = std::visit(
         [&](const auto& f) {
             Eigen::Vector3d r = f.value() + tau * f.derivative(1);
-            if constexpr (std::decay_t<decltype(f)>::order() == 3) r += 0.5 * tau * tau * f.derivative(2);
+            if constexpr (std::decay_t<decltype(f)>::order() == 3) r += ka * f.derivative(2);
             return r;
         },
         position_);
     const Eigen::Vector3d phi = std::visit(
         [&](const auto& f) {
             Eigen::Vector3d r = tau * f.x.template segment<3>(3);
-            if constexpr (std::decay_t<decltype(f)>::order() == 3) r += 0.5 * tau * tau * f.x.template segment<3>(6);
+            if constexpr (std::decay_t<decltype(f)>::order() == 3) r += ka * f.x.template segment<3>(6);
             return r;
         },
         orientation_);
     return PoseSample{time, p, safeNormalized(quatExp(phi) * q_)};
+}
+
+KalmanNoiseLevels KalmanPredictor::noiseLevels() const {
+    const auto& o = options_;
+    const bool ca = o.orientationModel == MotionModel::ConstantAcceleration;
+    const bool caP = o.positionModel == MotionModel::ConstantAcceleration;
+    KalmanNoiseLevels n;
+    n.orientationSigma = orientationSigma();
+    n.positionSigma = positionSigma();
+    n.orientationScale = orientationScale_.scale();
+    n.positionScale = positionScale_.scale();
+    n.orientationProcess = (ca ? o.orientationProcessCA : o.orientationProcessCV) * n.orientationScale;
+    n.positionProcess = (caP ? o.positionProcessCA : o.positionProcessCV) * n.positionScale;
+    n.orientationNis = std::max(0.0, orientationScale_.meanNis()) / 3.0;
+    n.positionNis = std::max(0.0, positionScale_.meanNis()) / 3.0;
+    return n;
+}
+
+std::string KalmanPredictor::describeState() const {
+    if (!options_.adaptive) return {};
+    const KalmanNoiseLevels n = noiseLevels();
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "noise %.4f deg %.2f mm, process x%.2g rot x%.2g pos", radToDeg(n.orientationSigma),
+                  n.positionSigma * 1e3, n.orientationScale, n.positionScale);
+    return buf;
 }
 
 Eigen::MatrixXd KalmanPredictor::positionCovariance() const {

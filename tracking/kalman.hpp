@@ -21,6 +21,7 @@
 // are clamped to a small positive floor. dt = 0 (duplicate timestamp) is a measurement update
 // without propagation; older samples are ignored; a gap longer than maxGap restarts the filter
 // from the new sample (an extrapolation over seconds is worthless and its covariance huge).
+#include "tracking/noise_adaptation.hpp"
 #include "tracking/predictor.hpp"
 
 #include <Eigen/Dense>
@@ -50,6 +51,24 @@ struct KalmanOptions {
     double initialVelocitySigma = 2.0, initialAccelerationSigma = 20.0;
     double initialAngularVelocitySigma = 6.0, initialAngularAccelerationSigma = 60.0;
     double maxGap = 1.0;  // s; a longer silence restarts the filter
+    // Adaptive noise (tracking/noise_adaptation.hpp): the measurement sigmas are estimated from
+    // the stream and the process densities scaled by innovation covariance matching, within
+    // [minScale, maxScale] of the values above, which are then only the starting point.
+    bool adaptive = false;
+    ProcessNoiseAdaptation processAdaptation;
+    // Extrapolation with the CA models: the estimated acceleration decays over the horizon with
+    // this correlation time (Singer 1970) instead of being held; 0 holds it. A head's
+    // acceleration reverses within every turn (speeding up, then braking), so holding it over
+    // 50 ms overshoots each turn's end and lags its start.
+    double accelerationDecay = 0.0;  // s
+};
+
+// The noise levels a Kalman predictor is using now (adapted ones when adaptive).
+struct KalmanNoiseLevels {
+    double orientationSigma = 0.0, positionSigma = 0.0;        // rad, m (measurement)
+    double orientationProcess = 0.0, positionProcess = 0.0;    // spectral densities in use
+    double orientationScale = 1.0, positionScale = 1.0;        // ... relative to the options'
+    double orientationNis = 0.0, positionNis = 0.0;            // mean NIS / dimension (1 = matched)
 };
 
 // Position filter: three axes with the same model, noise and initial covariance have the same
@@ -66,6 +85,7 @@ public:
     static constexpr int order() { return Order; }
     static Mat transition(double dt);
     void propagate(double dt, double spectralDensity);
+    // Also sets nis, the innovation's normalised square r^T S^-1 r (prior covariance).
     void correct(const Eigen::Vector3d& measurement, double sigma);
     void keepSymmetricPositiveDefinite();
     Eigen::Vector3d value() const { return x.row(0).transpose(); }
@@ -73,6 +93,7 @@ public:
 
     State x = State::Zero();
     Mat P = Mat::Identity();
+    double nis = 0.0;
 };
 
 // Kalman filter over 3-D kinematic blocks [x, x', (x'')] (Order 2 or 3 blocks of 3 values);
@@ -91,7 +112,8 @@ public:
     static Mat transition(double dt);
     // x <- F x (when propagateState), P <- F P F^T + Q(dt; q).
     void propagate(const Mat& F, double dt, double spectralDensity, bool propagateState);
-    // Measurement of the first block with residual r and variance sigma^2 per axis; returns dx.
+    // Measurement of the first block with residual r and variance sigma^2 per axis; returns dx
+    // and sets nis = r^T S^-1 r.
     Vec correct(const Eigen::Vector3d& residual, double sigma);
     // P <- G P G^T (error-state reset); G must be the identity outside its top-left 3x3 block.
     void transform(const Mat& G);
@@ -101,6 +123,7 @@ public:
 
     Vec x = Vec::Zero();
     Mat P = Mat::Identity();
+    double nis = 0.0;
 };
 
 class KalmanPredictor final : public Predictor {
@@ -110,7 +133,7 @@ public:
     void update(const PoseSample& sample) override;
     PoseSample predict(double time) const override;
     std::string_view name() const override { return name_; }
-    void reset() override { have_ = false; }
+    void reset() override;
     std::unique_ptr<Predictor> clone() const override { return std::make_unique<KalmanPredictor>(*this); }
 
     const KalmanOptions& options() const { return options_; }
@@ -120,9 +143,15 @@ public:
     Eigen::MatrixXd orientationCovariance() const;
     const Eigen::Quaterniond& orientation() const { return q_; }
     Eigen::Vector3d angularVelocity() const;
+    // The noise levels in use (the options' when not adaptive).
+    KalmanNoiseLevels noiseLevels() const;
+    // One line of them for panels and logs: "sigma 0.020 deg 0.20 mm, process x1.3 / x0.8".
+    std::string describeState() const override;
 
 private:
     void start(const PoseSample& sample);
+    double orientationSigma() const;
+    double positionSigma() const;
     KalmanOptions options_;
     std::string name_;
     template <int Order> void updateOrientation(KinematicKalman<Order>& f, const PoseSample& s, double dt);
@@ -132,6 +161,9 @@ private:
     Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();
     double lastT_ = 0.0;
     bool have_ = false;
+    // Adaptive mode only.
+    MeasurementNoiseEstimator measurementNoise_;
+    ProcessNoiseScale positionScale_{options_.processAdaptation}, orientationScale_{options_.processAdaptation};
 };
 
 }  // namespace strata::tracking

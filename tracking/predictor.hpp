@@ -27,6 +27,9 @@ public:
     // extrapolated backwards with the same model).
     virtual PoseSample predict(double time) const = 0;
     virtual std::string_view name() const = 0;
+    // What the predictor has adapted to, in one short line for panels and logs; empty when it
+    // has nothing that changes with the stream.
+    virtual std::string describeState() const { return {}; }
     virtual void reset() = 0;
     virtual std::unique_ptr<Predictor> clone() const = 0;
 };

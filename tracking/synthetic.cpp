@@ -1,39 +1,15 @@
 #include "tracking/synthetic.hpp"
 
+#include "tracking/seeded_rng.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 
 namespace strata::tracking {
-namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925;
-
-class Rng {
-public:
-    explicit Rng(std::uint64_t seed) : engine_(seed) {}
-    double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }  // [0, 1), 53 bits
-    double uniform(double a, double b) { return a + (b - a) * uniform(); }
-    double normal() {  // Box-Muller; the spare draw is dropped to keep the code obvious
-        const double u1 = 1.0 - uniform();  // (0, 1]
-        const double u2 = uniform();
-        return std::sqrt(-2.0 * std::log(u1)) * std::cos(kTwoPi * u2);
-    }
-
-private:
-    std::mt19937_64 engine_;
-};
-
-double minimumJerk(double u) {
-    u = std::clamp(u, 0.0, 1.0);
-    return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-}
-
-}  // namespace
 
 HeadMotionModel::HeadMotionModel(const HeadMotionParams& params) : params_(params) {
-    Rng rng(params.seed);
+    SeededRng rng(params.seed);
     for (int a = 0; a < 3; ++a) {
         sway_[a] = Wave{params.swayDeg * (a == 2 ? 1.5 : 1.0), rng.uniform(0.1, 0.3), rng.uniform(0.0, kTwoPi)};
         swayPos_[a] = Wave{params.swayMm * 1e-3 * (a == 1 ? 0.5 : 1.0), rng.uniform(0.1, 0.3), rng.uniform(0.0, kTwoPi)};
@@ -105,7 +81,7 @@ SyntheticTraces generateHeadMotion(const HeadMotionParams& params) {
         for (long long i = 0; i <= n; ++i) out.truth.push_back(model.at(double(i) / params.truthHz));
     }
     // Separate stream from the model's so changing the sensor leaves the motion unchanged.
-    Rng rng(params.seed ^ 0x9e3779b97f4a7c15ull);
+    SeededRng rng(params.seed ^ 0x9e3779b97f4a7c15ull);
     const double noise = degToRad(params.noiseDeg);
     if (params.sampleHz > 0.0) {
         const auto n = static_cast<long long>(std::floor(params.duration * params.sampleHz));

@@ -178,7 +178,10 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
     double firstT = 0.0, previousT = std::nan("");
     while (std::getline(in, raw)) {
         ++lineNo;
-        const std::string line = trim(raw);
+        std::string line = trim(raw);
+        // A UTF-8 byte-order mark before the header: .NET's StreamWriter (Unity's logger) writes
+        // one by default, and it would otherwise become part of the first column's name.
+        if (!haveHeader && line.rfind("\xEF\xBB\xBF", 0) == 0) line = trim(line.substr(3));
         if (line.empty()) continue;
         const auto fields = splitComma(line);
         if (!haveHeader) {

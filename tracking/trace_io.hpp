@@ -13,7 +13,8 @@
 // or reordered columns are fine: Timestamp, PlaybackTime, UnitQuaternion.x, .y, .z, .w,
 // HmdPosition.x, .y, .z. Timestamp is either a number of seconds or a date-time string
 // `YYYY-MM-DD HH:MM:SS[.fff...]` (also with a `T` separator); both are made relative to the
-// first sample, so traces start at t = 0. The dataset was recorded in Unity (left-handed,
+// first sample, so traces start at t = 0. A UTF-8 byte-order mark before the header and CRLF
+// line ends (both what the dataset's .NET logger writes) are accepted. The dataset was recorded in Unity (left-handed,
 // +Z forward); samples are converted to this project's right-handed, -Z-forward frame by
 // mirroring Z: p = (x, y, -z), q = (-qx, -qy, qz, qw).
 //

@@ -23,7 +23,7 @@ void registerViewCommand(CLI::App& app) {
     cmd->add_option("--record", *record, "record the camera to this path file (R toggles)");
     cmd->add_flag("--immersive", options->immersive, "head-tracked mode driven by --trace");
     cmd->add_option("--trace", *trace, "head-pose trace for --immersive");
-    cmd->add_option("--predictor", options->predictor, "immersive: none, cv, desp, kalman, kalman-cv")
+    cmd->add_option("--predictor", options->predictor, "immersive: none, cv, desp, kalman (adaptive), kalman-fixed, kalman-cv")
         ->capture_default_str();
     cmd->add_option("--deflect", options->deflect, "immersive: none, shift, homography")->capture_default_str();
     cmd->add_flag("--stereo", options->stereo, "immersive: side-by-side stereo");

@@ -84,6 +84,8 @@ public:
         for (; next_ < measured_.size() && measured_[next_].t <= traceTime; ++next_)
             for (auto& p : predictors_) p->update(measured_[next_]);
     }
+    // What predictor i has adapted to (empty when it adapts nothing).
+    std::string stateOf(std::size_t i) const { return predictors_[i]->describeState(); }
     std::vector<tracking::PoseSample> predictAll(double time) const {
         std::vector<tracking::PoseSample> out;
         for (const auto& p : predictors_) out.push_back(p->predict(time));
@@ -213,6 +215,7 @@ public:
         state.loops = loops_;
         state.paused = paused_;
         state.predictors = predictorNames_;
+        state.predictorState = tracking_.stateOf(std::size_t(choices_.predictor));
         state.deflections = deflectionNames_;
         state.horizon1 = lastHorizon1_;
         state.startToDisplay = startToDisplay_.value;

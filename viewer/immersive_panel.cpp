@@ -33,6 +33,11 @@ void drawHeadTracking(const ImmersivePanelState& state, ImmersiveChoices& choice
                 state.samplesFed, static_cast<unsigned long long>(state.loops));
     if (ImGui::SmallButton(state.paused ? "resume (Space)" : "pause (Space)")) requests.togglePause = true;
     chooseByName("predictor", state.predictors, choices.predictor);
+    if (!state.predictorState.empty()) {
+        ImGui::TextWrapped("%s", state.predictorState.c_str());
+        helpTooltip("the adaptive filter's measurement noise, estimated from the samples, and its process noise "
+                    "relative to the default: below 1 on slow motion, above on fast turns");
+    }
     chooseByName("deflection", state.deflections, choices.deflection);
     const char* filters[] = {"nearest", "bilinear"};
     ImGui::SetNextItemWidth(160.0f);

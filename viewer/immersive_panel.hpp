@@ -42,6 +42,7 @@ struct ImmersivePanelState {
     bool paused = false;
     // What can be chosen, by name.
     std::vector<std::string> predictors, deflections;
+    std::string predictorState;  // the selected predictor's adapted noise, empty if it has none
     // Two-step timing and the last deflection.
     double horizon1 = 0.0, startToDisplay = 0.0, rereadToDisplay = 0.0;  // seconds
     double deflectionDeg = 0.0;
