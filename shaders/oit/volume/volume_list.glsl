@@ -37,12 +37,23 @@ void compositeFragment(uint i, inout vec3 color, inout float transmittance);  //
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodes[i].next - 1u)
 #include "oit/ordered_composite.glsl"
 
-// The walk: the volumes the ray is in (object, entries minus exits), the radiance gathered and
-// the transmittance so far, and the farthest window depth reached (reversed-Z: smaller is
-// farther; the walk starts at the eye).
-uint gInsideObject[VOLUME_MAX_NESTED];
-int gInsideCount[VOLUME_MAX_NESTED];
-int gInsideSize;
+// The walk: the volumes the ray is in, as VOLUME_MAX_NESTED = 8 slots held in two pairs of
+// vectors (object ids, entries minus exits; a count of 0 is a free slot), so that finding a
+// volume's slot is a few vector compares with no loop and no array in memory. Then the medium
+// of the slots with a positive count, the radiance gathered and the transmittance so far, and
+// the farthest window depth reached (reversed-Z: smaller is farther; the walk starts at the eye).
+//
+// The medium is not kept by adding on entry and subtracting on exit (a large tau leaving would
+// leave round-off behind in the others): entering adds the object's medium, leaving the last
+// volume resets it to exactly zero, and leaving one of several sums the remaining ones again
+// from the table. The sum is then always the members' sum, and overlaps are the only case that
+// reads the table more than once per volume.
+uvec4 gSlotObjectLo, gSlotObjectHi;
+ivec4 gSlotCountLo, gSlotCountHi;
+int gMembers;   // slots with a positive count
+uint gIgnored;  // volume fragments with no slot left, reported after the walk
+vec3 gTau;
+vec3 gScatter;
 vec3 gRadiance;
 vec3 gTransmittance;
 bool gAtEye;
@@ -50,11 +61,13 @@ float gReachedDepth;
 float gRayScale;    // distance along the ray per unit of eye depth
 float gInscattered; // L^s for this pixel's ray
 
-// (1 - e^{-tau d}) / tau without cancellation: a series for small tau d, d itself at tau = 0.
-float segmentIntegral(float tau, float len) {
-    float x = tau * len;
-    if (x < 0.03) return len * (1.0 - x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0))));
-    return (1.0 - exp(-x)) / tau;
+// (1 - e^{-tau d}) / tau per channel without cancellation, given T = e^{-tau d}: a series for
+// tau d < 0.03 (truncation below 1e-8 relative), d itself at tau = 0; (1 - T) / tau above.
+vec3 segmentIntegral(vec3 tau, float len, vec3 transmittance) {
+    vec3 x = tau * len;
+    vec3 series = len * (1.0 - x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0))));
+    vec3 direct = (1.0 - transmittance) / max(tau, vec3(1e-30));
+    return mix(direct, series, lessThan(x, vec3(0.03)));
 }
 
 // Moves the walk to window depth d through the current medium. Lengths come from the
@@ -71,41 +84,63 @@ void advanceTo(float d) {
     }
     gAtEye = false;
     gReachedDepth = d;
+    if (all(equal(gTau, vec3(0.0)))) return;  // free space (scatter is tau * albedo: zero too)
     len *= gRayScale;
-    vec3 tau = vec3(0.0), scatter = vec3(0.0);
-    bool any = false;
-    for (int k = 0; k < gInsideSize; ++k) {
-        if (gInsideCount[k] <= 0) continue;
-        VolumeObject v = volumeObjects[gInsideObject[k]];
-        tau += vec3(v.tauR, v.tauG, v.tauB);
-        scatter += vec3(v.scatterR, v.scatterG, v.scatterB);
-        any = true;
-    }
-    if (!any) return;
-    vec3 integral = vec3(segmentIntegral(tau.r, len), segmentIntegral(tau.g, len), segmentIntegral(tau.b, len));
-    gRadiance += gTransmittance * gInscattered * scatter * integral;
-    gTransmittance *= exp(-tau * len);
+    vec3 transmittance = exp(-gTau * len);
+    gRadiance += gTransmittance * gInscattered * gScatter * segmentIntegral(gTau, len, transmittance);
+    gTransmittance *= transmittance;
 }
 
-// Entering (+1) or leaving (-1) a volume.
+void addMedium(uint object) {
+    VolumeObject v = volumeObjects[object];
+    gTau += vec3(v.tauR, v.tauG, v.tauB);
+    gScatter += vec3(v.scatterR, v.scatterG, v.scatterB);
+}
+
+// Slots 0-3 in `lo` and 4-7 in `hi` as the bits 0-7 of one mask.
+uint slotBits(bvec4 lo, bvec4 hi) {
+    uvec4 l = uvec4(lo) * uvec4(1u, 2u, 4u, 8u), h = uvec4(hi) * uvec4(16u, 32u, 64u, 128u);
+    return l.x | l.y | l.z | l.w | h.x | h.y | h.z | h.w;
+}
+
+// Entering (+1) or leaving (-1) a volume: its slot's count changes (0 frees the slot), or it
+// takes the first free slot. Written without branches on the common path (vector selects): in
+// a SIMD resolve every branch that lanes take differently costs both sides.
 void crossVolume(uint object, int step) {
-    for (int k = 0; k < gInsideSize; ++k) {
-        if (gInsideObject[k] != object) continue;
-        gInsideCount[k] += step;
-        if (gInsideCount[k] == 0) {
-            gInsideSize--;
-            gInsideObject[k] = gInsideObject[gInsideSize];
-            gInsideCount[k] = gInsideCount[gInsideSize];
+    VolumeObject v = volumeObjects[object];
+    ivec4 lo = ivec4(equal(gSlotObjectLo, uvec4(object))) * ivec4(notEqual(gSlotCountLo, ivec4(0)));
+    ivec4 hi = ivec4(equal(gSlotObjectHi, uvec4(object))) * ivec4(notEqual(gSlotCountHi, ivec4(0)));
+    ivec4 held = lo * gSlotCountLo + hi * gSlotCountHi;
+    int before = held.x + held.y + held.z + held.w;
+    uint mine = slotBits(bvec4(lo), bvec4(hi));
+    uint free = slotBits(equal(gSlotCountLo, ivec4(0)), equal(gSlotCountHi, ivec4(0)));
+    // Its own slot, else the lowest free one (the lowest set bit of `free`).
+    uint target = mine != 0u ? mine : free & (~free + 1u);
+    gIgnored += target == 0u ? 1u : 0u;  // no slot: ignored (and reported once per pixel)
+    bvec4 tLo = notEqual(uvec4(target) & uvec4(1u, 2u, 4u, 8u), uvec4(0u));
+    bvec4 tHi = notEqual(uvec4(target) & uvec4(16u, 32u, 64u, 128u), uvec4(0u));
+    gSlotObjectLo = mix(gSlotObjectLo, uvec4(object), tLo);
+    gSlotObjectHi = mix(gSlotObjectHi, uvec4(object), tHi);
+    gSlotCountLo += ivec4(tLo) * step;
+    gSlotCountHi += ivec4(tHi) * step;
+    // +1: the ray is now inside this volume, -1: no longer, 0: no change (counts beyond 0 and 1).
+    int change = int(before + step > 0) - int(before > 0);
+    gMembers += change;
+    gTau += float(change) * vec3(v.tauR, v.tauG, v.tauB);
+    gScatter += float(change) * vec3(v.scatterR, v.scatterG, v.scatterB);
+    // What was just subtracted is never kept: zero when no volume is left, else the remaining
+    // members summed again (the rare case of leaving one of overlapping volumes).
+    if (gMembers <= 0) {
+        gTau = vec3(0.0);
+        gScatter = vec3(0.0);
+    } else if (change < 0) {
+        gTau = vec3(0.0);
+        gScatter = vec3(0.0);
+        for (int k = 0; k < 4; ++k) {
+            if (gSlotCountLo[k] > 0) addMedium(gSlotObjectLo[k]);
+            if (gSlotCountHi[k] > 0) addMedium(gSlotObjectHi[k]);
         }
-        return;
     }
-    if (gInsideSize == int(VOLUME_MAX_NESTED)) {
-        atomicAdd(volumeStats[VOLUME_STAT_NESTING_OVERFLOW], 1u);
-        return;
-    }
-    gInsideObject[gInsideSize] = object;
-    gInsideCount[gInsideSize] = step;
-    gInsideSize++;
 }
 
 void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
@@ -132,11 +167,22 @@ void beginWalk(ivec2 pixel) {
     gTransmittance = vec3(1.0);
     gAtEye = true;
     gReachedDepth = 1.0;
-    gInsideSize = 0;
+    gTau = vec3(0.0);
+    gScatter = vec3(0.0);
+    gMembers = 0;
+    gIgnored = 0u;
+    gSlotObjectLo = gSlotObjectHi = uvec4(0u);
+    gSlotCountLo = gSlotCountHi = ivec4(0);
     for (int k = 0; k < uEyeInsideCount && k < int(VOLUME_MAX_NESTED); ++k) {
-        gInsideObject[k] = uEyeInsideObject[k];
-        gInsideCount[k] = 1;
-        gInsideSize++;
+        if (k < 4) {
+            gSlotObjectLo[k] = uEyeInsideObject[k];
+            gSlotCountLo[k] = 1;
+        } else {
+            gSlotObjectHi[k - 4] = uEyeInsideObject[k];
+            gSlotCountHi[k - 4] = 1;
+        }
+        gMembers++;
+        addMedium(uEyeInsideObject[k]);
     }
 }
 
@@ -156,5 +202,6 @@ vec3 resolvePixel(ivec2 pixel, vec3 opaque) {
     gTransmittance *= tailTransmittance;
 #endif
     advanceTo(texelFetch(uOpaqueDepth, pixel, 0).r);
+    if (gIgnored > 0u) atomicAdd(volumeStats[VOLUME_STAT_NESTING_OVERFLOW], gIgnored);
     return gRadiance + gTransmittance * opaque;
 }
