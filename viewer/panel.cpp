@@ -113,6 +113,27 @@ void drawFragments(const PanelState& state, PanelSettings& settings) {
     ImGui::Text("regrows %d   tiles %d", c.stats.regrows, c.stats.tiles);
 }
 
+// Which transparent objects the volumetric techniques (ll-volume, abuffer-volume) render as
+// media, and why the others with a volume material are drawn as surfaces.
+void drawVolumes(const GpuScene& scene) {
+    const auto& kinds = scene.objectVolumes();
+    std::size_t declared = 0, volumes = 0;
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        if (!scene.scene().materials[std::size_t(scene.objects()[i].material)].volume) continue;
+        ++declared;
+        if (kinds[i].volume) ++volumes;
+    }
+    if (declared == 0) return;
+    if (!ImGui::TreeNode("volumes", "volumes %zu of %zu declared", volumes, declared)) return;
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        const Material& m = scene.scene().materials[std::size_t(scene.objects()[i].material)];
+        if (!m.volume) continue;
+        const ImVec4 colour = kinds[i].volume ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f);
+        ImGui::TextColored(colour, "#%zu %s: %s", i, m.name.c_str(), kinds[i].status.c_str());
+    }
+    ImGui::TreePop();
+}
+
 void drawScene(const PanelState& state) {
     const GpuScene& scene = *state.scene;
     const Bounds& b = scene.bounds();
@@ -124,6 +145,7 @@ void drawScene(const PanelState& state) {
         glm::vec3 e = b.max - b.min;
         ImGui::Text("bounds %.3g x %.3g x %.3g", e.x, e.y, e.z);
     }
+    drawVolumes(scene);
     if (state.device) ImGui::TextWrapped("%s", state.device->renderer.c_str());
 }
 
