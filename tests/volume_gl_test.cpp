@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_loader.hpp"
 #include "scene/mesh_builders.hpp"
+#include "scene/scene_source.hpp"
 
 #include <doctest/doctest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,6 +17,7 @@
 #include "render/volume_composite.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 
 using namespace strata;
@@ -105,6 +107,11 @@ TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     cases.push_back({"intersecting, eye outside", intersectingScene(), cameraAt({0.3f, 1.0f, 4.0f}, {0, 0, 0})});
     cases.push_back({"intersecting, eye in the overlap", intersectingScene(), cameraAt({0.1f, -0.05f, 0.05f}, {0, 0, -3})});
     cases.push_back({"intersecting, eye in one", intersectingScene(), cameraAt({-0.9f, 0.6f, 0.2f}, {1, -0.3f, -1})});
+    if (std::filesystem::is_directory(STRATA_SHARED_SCENES_DIR))
+        cases.push_back({"models-volume", openScene(std::string(STRATA_SOURCE_DIR) + "/scenes/models-volume.json"),
+                         std::nullopt});
+    else
+        MESSAGE("models-volume skipped: " << STRATA_SHARED_SCENES_DIR << " is absent");
     const glm::ivec2 size(48, 36);
     for (auto& c : cases) {
         CAPTURE(c.name);
