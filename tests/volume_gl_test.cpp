@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.hpp"
 #include "scene/gltf_loader.hpp"
 #include "scene/mesh_builders.hpp"
+#include "scene/mesh_volume.hpp"
 #include "scene/scene_source.hpp"
 
 #include <doctest/doctest.h>
@@ -93,6 +94,16 @@ Scene intersectingScene() {
 
 }  // namespace
 
+TEST_CASE("the 'eye inside all three' camera of the next test is inside all three volumes") {
+    const Scene s = makeVolumesScene();
+    const auto objects = flatten(s);
+    int inside = 0;
+    for (const Object& o : objects)
+        if (s.materials[std::size_t(o.material)].volume)
+            inside += containsPoint(s.meshes[std::size_t(o.mesh)], o.world, {0.0f, 1.3f, 0.15f}) ? 1 : 0;
+    CHECK(inside == 3);
+}
+
 TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     test::glContext();
     struct Case {
@@ -102,6 +113,8 @@ TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     };
     std::vector<Case> cases;
     cases.push_back({"volumes", makeVolumesScene(), std::nullopt});
+    // (0, 1.3, 0.15) lies inside all three spheres of builtin:volumes.
+    cases.push_back({"volumes, eye inside all three", makeVolumesScene(), cameraAt({0.0f, 1.3f, 0.15f}, {0.2f, 1.1f, -3.0f})});
     cases.push_back({"slabs:3", makeSlabsScene(3), std::nullopt});
     cases.push_back({"default", makeDefaultScene(), std::nullopt});
     cases.push_back({"intersecting, eye outside", intersectingScene(), cameraAt({0.3f, 1.0f, 4.0f}, {0, 0, 0})});
