@@ -50,6 +50,12 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         result.transparencyPass = true;
     }
     if (options.countFragments) result.fragmentsTotal = scene.hasTransparency() ? countFragments(frame) : 0;
+    if (options.detectCoplanarity) {
+        // Also without transparency: the heatmap is then all grey, and the viewer shows that.
+        if (!detector_ || detector_->maxBlockMiB() != options.coplanarityMaxBlockMiB)
+            detector_ = std::make_unique<CoplanarityDetector>(options.coplanarityMaxBlockMiB);
+        result.coplanarity = detector_->detect(frame);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) result.passTimes = timer_.resolve();
     glFinish();
