@@ -31,7 +31,8 @@ struct FrameOptions {
 
 struct FrameResult {
     std::vector<gl::PassTime> passTimes;
-    double gpuMs = 0.0;     // sum over passes
+    double gpuMs = 0.0;     // sum over passes, the coplanarity detector's apart
+    double coplanarityMs = 0.0;  // GPU time of the detector's passes (in passTimes too)
     double cpuMs = 0.0;     // wall time of the whole frame, including waits for results
     TechniqueStats stats;
     std::optional<std::uint64_t> fragmentsTotal;

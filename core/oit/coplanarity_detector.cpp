@@ -107,7 +107,7 @@ CoplanarityStats CoplanarityDetector::detect(const FrameContext& frame) {
 }
 
 std::uint64_t CoplanarityDetector::store(const FrameContext& frame, const Tile& tile) {
-    gl::ScopedPass pass(frame.timer, "coplanarity store");
+    gl::ScopedPass pass(frame.timer, std::string(kPassPrefix) + "store");
     GLuint zero = 0;
     glClearTexImage(heads_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
@@ -132,7 +132,7 @@ std::uint64_t CoplanarityDetector::store(const FrameContext& frame, const Tile& 
 }
 
 void CoplanarityDetector::resolve(const FrameContext& frame, const Tile& tile) {
-    gl::ScopedPass pass(frame.timer, "coplanarity resolve");
+    gl::ScopedPass pass(frame.timer, std::string(kPassPrefix) + "resolve");
     const GLuint program = resolveProgram_.id();
     glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     glBindImageTexture(gpu::BIND_LARGEST_LAYER, largestLayer_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);

@@ -26,6 +26,10 @@ namespace strata {
 
 class CoplanarityDetector {
 public:
+    // Its timed passes are named with this prefix, so a frame can report them apart from the
+    // technique's time (FrameResult::coplanarityMs).
+    static constexpr const char* kPassPrefix = "coplanarity ";
+
     // maxBlockMiB > 0 caps the node pool below the device's limit (tests force tiles with it).
     explicit CoplanarityDetector(double maxBlockMiB = 0.0) : maxBlockMiB_(maxBlockMiB) {}
 
