@@ -45,6 +45,7 @@ TEST_CASE("bench JSON has every contract field, finite, and counts every fragmen
     for (const char* k : {"vendor", "renderer", "version"}) CHECK(j["device"][k].is_string());
     CHECK(j["reference"] == "abuffer");
     requireNumber(j, "coplanarity_probability");
+    requireNumber(j, "coplanarity_one_per_layer_robustness");
     REQUIRE(j["modes"].is_array());
     CHECK(j["modes"].size() == techniqueRegistry().size());
     for (const auto& m : j["modes"]) {
@@ -76,6 +77,7 @@ TEST_CASE("bench reports coplanarity where surfaces coincide") {
     options.warmupFrames = 0;
     BenchReport report = runBench(scene, options);
     CHECK(report.coplanarityProbability == 1.0);
+    CHECK(report.coplanarityOnePerLayerRobustness == doctest::Approx(1.0 / 3.0));
     REQUIRE(report.modes.size() == 1);  // the reference runs but is listed only when asked for
     CHECK(report.modes[0].id == "blend-sorted");
 }

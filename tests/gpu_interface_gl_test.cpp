@@ -10,6 +10,7 @@
 #include "oit/abuffer_node.h"
 #include "oit/approximate/approximate_bindings.h"
 #include "oit/buffers/buffer_bindings.h"
+#include "oit/coplanarity_bindings.h"
 #include "oit/buffers/prefix_sum.hpp"
 #include "oit/peeling/peel_bindings.h"
 #include "oit/screendoor/screendoor_bindings.h"
@@ -321,6 +322,10 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"VOLUME", ""}}, with(volumeResolve, tail)},
         {{"oit/abuffer_resolve.comp.glsl"}, {{"VOLUME", ""}}, with(volumeResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
         {{"oit/buffers/prefix_add.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
+        // coplanarity detector: abuffer's store, then its own resolve
+        {{"oit/coplanarity_detect.comp.glsl"}, {},
+         with(lists, {{"uLargestLayer", image(BIND_LARGEST_LAYER)}, {"uHeatmap", image(BIND_RESOLVE_OUTPUT)},
+                      {"CoplanarityTotals", ssbo(BIND_COPLANARITY_TOTALS)}})},
     };
 }
 
@@ -416,6 +421,7 @@ TEST_CASE("compute group sizes equal the host's dispatch arithmetic") {
     test::glContext();
     const std::string resolve = std::to_string(gpu::RESOLVE_GROUP_SIZE);
     CHECK(workGroupSize("oit/abuffer_resolve.comp.glsl") == resolve + " " + resolve + " 1");
+    CHECK(workGroupSize("oit/coplanarity_detect.comp.glsl") == resolve + " " + resolve + " 1");
     // Each scan invocation takes two elements: the host's block is twice the group.
     const std::string scan = std::to_string(buffers::PrefixSum::kBlock / 2) + " 1 1";
     CHECK(workGroupSize("oit/buffers/prefix_scan.comp.glsl") == scan);

@@ -37,3 +37,18 @@ panel=$(field panel_pixels)
 (( scene > 50 )) || fail "only $scene distinct colours in the scene (black or flat render?)"
 (( panel > 10000 )) || fail "the panel changed only $panel pixels"
 echo "viewer_smoke: ok (${w}x${h}, $bytes bytes, $distinct colours, scene $scene, panel $panel px)"
+
+# The coplanarity heatmap view: the same window showing the detector's colours. builtin:default
+# has coincident surfaces (C_p > 0), so the scene holds grey and at least red; being Fig. 13's
+# flat palette it holds at most its nine colours, which no shaded image would.
+heat=$tmp/heat.png
+out=$(LIBGL_ALWAYS_SOFTWARE=1 timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" \
+      "$strata" view builtin:default --view heatmap --exit-after-frames 5 --screenshot "$heat" --size 800x600 2>&1) || {
+    echo "$out"; echo "viewer_smoke: strata view --view heatmap failed"; exit 1; }
+[[ -f $heat ]] || fail "no heatmap screenshot written"
+line=$(grep '^screenshot: ' <<<"$out" | tail -n 1) || fail "no 'screenshot:' line in the heatmap run"
+scene=$(field scene_colors)
+panel=$(field panel_pixels)
+(( scene >= 2 && scene <= 9 )) || fail "heatmap view shows $scene distinct colours, expected 2 to 9 (Fig. 13's palette)"
+(( panel > 10000 )) || fail "the panel changed only $panel pixels in the heatmap view"
+echo "viewer_smoke: heatmap ok (scene $scene colours, panel $panel px)"

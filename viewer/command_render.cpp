@@ -8,7 +8,7 @@
 #include "io/atomic_file.hpp"
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
-#include "reference/raycast.hpp"
+#include "render/coplanarity.hpp"
 #include "frame/frame_renderer.hpp"
 #include "settings_options.hpp"
 
@@ -29,22 +29,6 @@ struct RenderArgs {
     SettingsArgs settings;
 };
 
-// Exact depth ties per pixel from the CPU ray cast, as a heat colour over a dimmed image:
-// black none, then yellow (2 coplanar surfaces) to red (4 or more).
-Image coplanarityHeatmap(const GpuScene& scene, const Camera& camera, const Image& frame) {
-    RaycastReference reference(scene.scene(), scene.objects());
-    Image heat(frame.width, frame.height);
-    for (int y = 0; y < frame.height; ++y)
-        for (int x = 0; x < frame.width; ++x) {
-            int ties = reference.samplePixel(camera, frame.width, frame.height, x, y).depthTies;
-            glm::vec3 base = glm::vec3(frame.at(x, y)) * 0.25f;
-            glm::vec3 c = ties == 0 ? base : glm::mix(glm::vec3(1, 0.9f, 0.1f), glm::vec3(1, 0.05f, 0.02f),
-                                                      glm::clamp(float(ties - 1) / 2.0f, 0.0f, 1.0f));
-            heat.set(x, y, glm::vec4(c, 1.0f));
-        }
-    return heat;
-}
-
 void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
@@ -64,12 +48,17 @@ void run(const RenderArgs& a) {
     FrameRenderer renderer;
     FrameOptions options;
     options.countFragments = true;
+    // The heatmap comes from the GPU detector on the same frame (oit/coplanarity_detector.hpp).
+    options.detectCoplanarity = !a.heatmap.empty();
     FrameResult result = renderer.render(gpu, camera, size, technique.get(), options);
     gl::checkGl("render");
     Image image = renderer.readOutput();
     gl::checkGl("read back");
     Image heat;
-    if (!a.heatmap.empty()) heat = coplanarityHeatmap(gpu, camera, image);
+    if (result.coplanarity) {
+        heat = coplanarityHeatmap(renderer.coplanarity()->readPixels().largestLayer, size.x, size.y);
+        gl::checkGl("coplanarity read back");
+    }
     writeImage(a.out, image);
     if (!a.heatmap.empty()) writeImage(a.heatmap, heat);
     const auto& s = result.stats;
@@ -77,7 +66,22 @@ void run(const RenderArgs& a) {
                 size.x, size.y, result.gpuMs, s.passes, (unsigned long long)s.fragmentsCaptured,
                 (unsigned long long)result.fragmentsTotal.value_or(0), s.overflowed ? ", OVERFLOWED" : "");
     for (const auto& p : result.passTimes)
-        std::printf("  %-18s %9.3f ms GPU %9.3f ms CPU\n", p.name.c_str(), p.gpuMs, p.cpuMs);
+        std::printf("  %-20s %9.3f ms GPU %9.3f ms CPU\n", p.name.c_str(), p.gpuMs, p.cpuMs);
+    if (result.coplanarity) {
+        const CoplanarityStats& c = *result.coplanarity;
+        const std::uint64_t total = result.fragmentsTotal.value_or(0);
+        std::printf("%s: coplanarity C_p %.4f (%llu of %llu pixels with fragments share a layer), R_h %s %.4f, "
+                    "R_h one fragment per layer (f2b) %.4f; detector %.3f ms GPU\n",
+                    a.heatmap.c_str(), c.coplanarityProbability(), (unsigned long long)c.pixelsWithTies(),
+                    (unsigned long long)c.pixelsWithFragments(), a.mode.c_str(),
+                    total ? double(s.fragmentsCaptured) / double(total) : 1.0, c.oneFragmentPerLayerRobustness(),
+                    result.coplanarityMs);
+        std::printf("  pixels by largest layer:");
+        for (int k = 0; k < kCoplanarityBins; ++k)
+            std::printf(" %s%d %llu", k == kCoplanarityBins - 1 ? ">=" : "", k,
+                        (unsigned long long)c.pixelsByLargestLayer[std::size_t(k)]);
+        std::printf("\n");
+    }
 }
 
 }  // namespace
@@ -91,7 +95,8 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--camera-path", args->cameraPath, "camera path file (time px py pz qx qy qz qw)");
     cmd->add_option("--time", args->time, "time on the camera path, seconds");
     cmd->add_option("--out", args->out, "output image (.png sRGB 8-bit or .exr linear half)")->required();
-    cmd->add_option("--heatmap", args->heatmap, "coplanarity heatmap image (exact depth ties per pixel, CPU ray cast)");
+    cmd->add_option("--heatmap", args->heatmap, "coplanarity heatmap image: per pixel the largest number of fragments in one depth layer, "
+                   "in Fig. 13's colours (GPU detector); prints C_p");
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

@@ -17,6 +17,12 @@ void registerViewCommand(CLI::App& app) {
     auto* cmd = app.add_subcommand("view", "open the interactive viewer");
     cmd->add_option("scene", options->scene, "scene to open")->capture_default_str();
     cmd->add_option("--mode", options->mode, "technique id")->capture_default_str();
+    auto view = std::make_shared<std::string>(viewName(ViewKind::Image));
+    std::vector<std::string> viewNames;
+    for (ViewKind v : kViewKinds) viewNames.push_back(viewName(v));
+    cmd->add_option("--view", *view, "what the window shows first: image, heatmap (coplanarity)")
+        ->check(CLI::IsMember(viewNames))
+        ->capture_default_str();
     auto settings = std::make_shared<SettingsArgs>();
     addSettingsOptions(cmd, *settings);
     cmd->add_option("--path", *play, "play this camera path");
@@ -38,6 +44,7 @@ void registerViewCommand(CLI::App& app) {
         if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
         // Against every technique: the panel can switch to any of them.
         options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
+        options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->width = s.x;
         options->height = s.y;
         if (!play->empty()) options->playPath = *play;

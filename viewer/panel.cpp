@@ -2,6 +2,7 @@
 
 #include "panel_widgets.hpp"
 #include "settings_panel.hpp"
+#include "view_panel.hpp"
 
 #include <imgui.h>
 
@@ -191,6 +192,10 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     ImGui::SetNextWindowSize(ImVec2(380.0f, height), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("Strata");
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const FrameResult* f = state.frame;
+        drawViewSection(settings.view, f && f->coplanarity ? &*f->coplanarity : nullptr, f ? f->coplanarityMs : 0.0);
+    }
     if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) drawTechnique(state, settings, requests);
     if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) drawTiming(state);
     if (ImGui::CollapsingHeader("Fragments and memory", ImGuiTreeNodeFlags_DefaultOpen)) drawFragments(state, settings);

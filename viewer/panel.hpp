@@ -4,6 +4,7 @@
 // walkthrough keys. It reads a snapshot of the viewer's state and returns what the user asked
 // for; the viewer applies the requests between frames (never while the panel is drawing).
 #include "frame_history.hpp"
+#include "view_kind.hpp"
 
 #include "gl/context.hpp"
 #include "oit/technique.hpp"
@@ -52,6 +53,7 @@ struct PanelState {
 
 // Settings the panel edits in place: copies, which the viewer applies between frames.
 struct PanelSettings {
+    ViewKind view = ViewKind::Image;
     SettingValues technique;    // the current technique's settings
     bool countEveryFrame = false;
     int countInterval = 30;     // count fragments every N frames (0 = never) unless every frame

@@ -51,6 +51,7 @@ public:
         techniqueSettings_ = options.settings;
         technique_ = createConfiguredTechnique(techniqueId_, techniqueSettings_);
         settings_.technique = technique_->settings();
+        settings_.view = options.view;
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
             path_ = CameraPath::read(*options.playPath);
@@ -71,7 +72,7 @@ public:
     void render(glm::ivec2 size, Presenter& presenter) override {
         if (requests_.reload) reload(presenter);
         renderFrame(size);
-        const PresentRegion output{renderer_->targets().outputColor(), {0, 0}, size};
+        const PresentRegion output{shownTexture(), {0, 0}, size};
         presenter.present(size, {&output, 1});
         if (requests_.screenshot) saveOutput();
         requests_ = {};
@@ -223,9 +224,20 @@ private:
         return controls_.camera();
     }
 
+    bool showingHeatmap() const {
+        return settings_.view == ViewKind::CoplanarityHeatmap && frame_.coplanarity && renderer_->coplanarity();
+    }
+
+    // The frame's output, or its heatmap when that view is chosen and the frame computed one.
+    GLuint shownTexture() const {
+        return showingHeatmap() ? renderer_->coplanarity()->heatmapTexture() : renderer_->targets().outputColor();
+    }
+
     void renderFrame(glm::ivec2 size) {
         FrameOptions frameOptions;
         frameOptions.timePasses = true;
+        // Live: the detector runs on every frame while its view is shown, never otherwise.
+        frameOptions.detectCoplanarity = settings_.view == ViewKind::CoplanarityHeatmap;
         frameOptions.countFragments =
             settings_.countEveryFrame || (settings_.countInterval > 0 && frameIndex_ % std::uint64_t(settings_.countInterval) == 0);
         // The panel edited a copy; it takes effect here, between frames, where it differs from
@@ -246,11 +258,12 @@ private:
         ++frameIndex_;
     }
 
-    // F12/P: the final output (linear RGB, sRGB-encoded PNG), without the panel.
+    // F12/P: what the view shows (linear RGB, sRGB-encoded PNG), without the panel.
     void saveOutput() {
-        std::string name = timestampedName("strata-", ".png");
+        std::string name = timestampedName(showingHeatmap() ? "strata-heatmap-" : "strata-", ".png");
         try {
-            writeWindowPng(name, encodeSrgb(renderer_->readOutput()));
+            const Image shown = showingHeatmap() ? renderer_->coplanarity()->readHeatmap() : renderer_->readOutput();
+            writeWindowPng(name, encodeSrgb(shown));
             lastSaved_ = "saved " + name;
             std::printf("screenshot: %s\n", std::filesystem::absolute(name).string().c_str());
             std::fflush(stdout);

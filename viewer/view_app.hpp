@@ -1,6 +1,8 @@
 #pragma once
 // `strata view`: the interactive window (GLFW + Dear ImGui) over the same frame pipeline the
 // headless commands use.
+#include "view_kind.hpp"
+
 #include "oit/technique_settings.hpp"
 
 #include <filesystem>
@@ -13,6 +15,7 @@ namespace strata {
 struct ViewOptions {
     std::string scene = "builtin:default";
     std::string mode = "abuffer";
+    ViewKind view = ViewKind::Image;                     // --view: what the window shows first
     SettingsById settings;                               // every technique's, resolved from --set/--settings
     std::optional<std::filesystem::path> playPath;       // --path: play a camera path
     std::optional<std::filesystem::path> recordPath;     // --record: record the camera to a path file

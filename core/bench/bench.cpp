@@ -2,7 +2,6 @@
 
 #include "gl/debug.hpp"
 #include "oit/technique.hpp"
-#include "reference/raycast.hpp"
 #include "frame/frame_renderer.hpp"
 
 #include <algorithm>
@@ -82,12 +81,15 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
 
     std::vector<Camera> cameras = benchCameras(scene, options);
     {
-        // Coplanarity: exact depth ties among transparent fragments, on the CPU at <= 128 px wide.
-        int w = std::min(options.size.x, 128);
-        int h = std::max(1, int(std::lround(double(w) * options.size.y / options.size.x)));
-        ReferenceStats stats;
-        RaycastReference(scene.scene(), scene.objects()).render(cameras.front(), w, h, &stats);
-        report.coplanarityProbability = stats.coplanarityProbability();
+        // Coplanarity at the bench's size from the GPU detector, on the first camera: C_p and the
+        // R_h any one-fragment-per-layer peeling reaches (the detector's passes are not timed).
+        FrameRenderer detector;
+        FrameOptions detect;
+        detect.timePasses = false;
+        detect.detectCoplanarity = true;
+        const FrameResult r = detector.render(scene, cameras.front(), options.size, nullptr, detect);
+        report.coplanarityProbability = r.coplanarity->coplanarityProbability();
+        report.coplanarityOnePerLayerRobustness = r.coplanarity->oneFragmentPerLayerRobustness();
     }
 
     // Every frame is compared as soon as it is read back, against the reference frame for the same

@@ -71,7 +71,10 @@ struct BenchReport {
     gl::DeviceInfo device;
     std::string reference = "abuffer";
     std::vector<BenchMode> modes;
-    double coplanarityProbability = 0.0;     // share of covered pixels with exact depth ties (CPU ray cast)
+    // C_p: the share of pixels with transparent fragments where two or more share a depth layer
+    // under the reference's tie rule (the GPU coplanarity detector, render/coplanarity.hpp).
+    double coplanarityProbability = 0.0;
+    double coplanarityOnePerLayerRobustness = 1.0;  // layers / fragments: R_h of plain f2b, dual, bun
     std::size_t triangles = 0;
     std::size_t objects = 0;
 };

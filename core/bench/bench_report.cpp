@@ -71,6 +71,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"reference", r.reference},
         {"modes", modes},
         {"coplanarity_probability", finite(r.coplanarityProbability)},
+        {"coplanarity_one_per_layer_robustness", finite(r.coplanarityOnePerLayerRobustness)},
         {"triangles", r.triangles},
         {"objects", r.objects},
     };
@@ -81,7 +82,8 @@ std::string benchToTable(const BenchReport& r) {
     out << "scene " << r.scene << "  " << r.size.x << "x" << r.size.y << "  " << r.frames << " frames  "
         << r.objects << " objects, " << r.triangles << " triangles\n";
     out << "device " << r.device.renderer << " (" << r.device.vendor << ", " << r.device.version << ")\n";
-    out << "coplanarity probability " << fmt("%.3f", r.coplanarityProbability) << "  reference " << r.reference
+    out << "coplanarity probability C_p " << fmt("%.3f", r.coplanarityProbability) << "  R_h one per layer "
+        << fmt("%.3f", r.coplanarityOnePerLayerRobustness) << "  reference " << r.reference
         << "\n\n";
     const std::optional<double> floorTime = floorMs(r);
     char line[256];

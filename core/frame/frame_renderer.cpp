@@ -50,10 +50,20 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         result.transparencyPass = true;
     }
     if (options.countFragments) result.fragmentsTotal = scene.hasTransparency() ? countFragments(frame) : 0;
+    if (options.detectCoplanarity) {
+        // Also without transparency: the heatmap is then all grey, and the viewer shows that.
+        if (!detector_ || detector_->maxBlockMiB() != options.coplanarityMaxBlockMiB)
+            detector_ = std::make_unique<CoplanarityDetector>(options.coplanarityMaxBlockMiB);
+        result.coplanarity = detector_->detect(frame);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) result.passTimes = timer_.resolve();
     glFinish();
-    for (const auto& p : result.passTimes) result.gpuMs += p.gpuMs;
+    for (const auto& p : result.passTimes) {
+        // The detector is an inspection tool, not part of the technique's cost.
+        if (p.name.rfind(CoplanarityDetector::kPassPrefix, 0) == 0) result.coplanarityMs += p.gpuMs;
+        else result.gpuMs += p.gpuMs;
+    }
     result.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
     return result;
 }

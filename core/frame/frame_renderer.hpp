@@ -9,10 +9,12 @@
 #include "camera/camera.hpp"
 #include "gl/gpu_timer.hpp"
 #include "image/image.hpp"
+#include "oit/coplanarity_detector.hpp"
 #include "oit/technique.hpp"
 #include "render/frame_targets.hpp"
 #include "render/gpu_scene.hpp"
 
+#include <memory>
 #include <optional>
 
 namespace strata {
@@ -21,14 +23,20 @@ struct FrameOptions {
     bool timePasses = true;
     bool countFragments = false;
     bool reverseSubmission = false;   // draw transparent objects in reverse id order
+    // Run the coplanarity detector (oit/coplanarity_detector.hpp) after the technique: its
+    // heatmap and counts are then in coplanarity(), its figures in FrameResult::coplanarity.
+    bool detectCoplanarity = false;
+    double coplanarityMaxBlockMiB = 0.0;  // > 0 caps the detector's node pool (tests force tiles)
 };
 
 struct FrameResult {
     std::vector<gl::PassTime> passTimes;
-    double gpuMs = 0.0;     // sum over passes
+    double gpuMs = 0.0;     // sum over passes, the coplanarity detector's apart
+    double coplanarityMs = 0.0;  // GPU time of the detector's passes (in passTimes too)
     double cpuMs = 0.0;     // wall time of the whole frame, including waits for results
     TechniqueStats stats;
     std::optional<std::uint64_t> fragmentsTotal;
+    std::optional<CoplanarityStats> coplanarity;  // when FrameOptions::detectCoplanarity
     bool transparencyPass = false;
 };
 
@@ -39,6 +47,8 @@ public:
     // The last frame's output colour (linear RGB, alpha 1), bottom row first.
     Image readOutput() const;
     const FrameTargets& targets() const { return targets_; }
+    // The detector of the last frame that asked for one (null before any did).
+    const CoplanarityDetector* coplanarity() const { return detector_.get(); }
 
 private:
     std::uint64_t countFragments(const FrameContext& frame);
@@ -47,6 +57,7 @@ private:
     gl::GpuTimer timer_;
     SceneProgram opaqueProgram_, countProgram_;
     gl::Buffer counter_;
+    std::unique_ptr<CoplanarityDetector> detector_;  // created on the first frame that detects
 };
 
 }  // namespace strata

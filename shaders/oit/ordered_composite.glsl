@@ -19,12 +19,9 @@
 #endif
 #define NO_FRAGMENT 0xFFFFFFFFu
 
-uniform float uDepthOffset;   // n / (f - n) of the frame's camera
-uniform float uTieTolerance;  // relative: Scene::depthTieUlps * 2^-23
+#include "oit/depth_layer.glsl"
 
-float orderKey(uint i) { return fragmentDepth(i) + uDepthOffset; }
-
-bool sameLayer(float a, float b) { return abs(a - b) <= uTieTolerance * max(a, b); }
+float orderKey(uint i) { return layerKey(fragmentDepth(i)); }
 
 // Scene order inside a layer: object, then primitive, then nearer first.
 bool sceneBefore(uint a, uint b) {
