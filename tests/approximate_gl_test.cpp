@@ -181,9 +181,11 @@ TEST_CASE("bench gives every time as a multiple of the floor's when the floor ro
     CHECK(header.substr(header.size() - 14) == ",ms_over_floor");
     CHECK(benchToTable(with).find("x floor") != std::string::npos);
     // A row below 0.95x the floor is called out under the table.
+    // The times are set, not measured: at 16x16 on a loaded machine any row may measure below
+    // the floor by noise, and this checks the table's note, not the machine.
     BenchReport below = with;
     for (auto& m : below.modes)
-        if (m.id == "wboit") m.msMedian = 0.5 * floorMs;
+        if (m.id != "floor") m.msMedian = (m.id == "wboit" ? 0.5 : 2.0) * floorMs;
     CHECK(benchToTable(below).find("note: wboit measured 0.50x the floor") != std::string::npos);
     for (auto& m : below.modes)
         if (m.id == "wboit") m.msMedian = 2.0 * floorMs;
