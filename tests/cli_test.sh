@@ -56,7 +56,7 @@ expect_error "no technique run has a setting 'capacty'" bench builtin:layers:2 -
 expect_error "unknown technique 'llx'" bench builtin:layers:2 --modes ll --set llx.capacity=4 --json "$work/out.png"
 expect_error "technique kbuffer is not among those run (abuffer, ll)" bench builtin:layers:2 --modes ll --set kbuffer.capacity=4 --json "$work/out.png"
 expect_error "not of the form [technique.]name=value" render builtin:layers:2 --set capacity --out "$work/out.png"
-expect_error "missing.json: not a readable regular file" render builtin:layers:2 --settings "$tmp/missing.json" --out "$work/out.png"
+expect_error "missing.json: no such file" render builtin:layers:2 --settings "$tmp/missing.json" --out "$work/out.png"
 printf '{"capacity": 4,' >"$tmp/broken.json"
 expect_error "broken.json: " render builtin:layers:2 --mode ll --settings "$tmp/broken.json" --out "$work/out.png"
 printf '{"capacity": "four"}' >"$tmp/string.json"

@@ -1,16 +1,21 @@
 #include "tracking/trace_io.hpp"
 
+#include "io/bounded_read.hpp"
+#include "io/printable.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
+#include <limits>
 #include <map>
 #include <vector>
 
 namespace strata {
 
+// The file name is quoted like any other input: a message stays one short, printable line.
 TraceError::TraceError(const std::string& file, int line, const std::string& what)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + what), file_(file), line_(line) {}
+    : std::runtime_error(printable(file, 120) + ":" + std::to_string(line) + ": " + what), file_(file), line_(line) {}
 
 }  // namespace strata
 
@@ -70,6 +75,23 @@ Eigen::Quaterniond checkedQuaternion(double x, double y, double z, double w, con
     return q;
 }
 
+// A NUL byte (a UTF-16 or binary file) is neither a separator nor part of a number: name it
+// rather than report a puzzling field.
+void checkText(const std::string& line, const std::string& name, int lineNo) {
+    if (line.find('\0') != std::string::npos) throw TraceError(name, lineNo, "NUL byte: not a text file (UTF-16?)");
+}
+
+// Positions are metres that the renderer and the metrics square and convert to float; a value
+// beyond float range (1e300) would turn every error figure into inf.
+void checkFloatRange(const double* v, int n, const std::string& name, int lineNo) {
+    for (int i = 0; i < n; ++i)
+        if (!(std::abs(v[i]) <= double(std::numeric_limits<float>::max()))) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%g", v[i]);
+            throw TraceError(name, lineNo, std::string("position ") + text + " does not fit a float");
+        }
+}
+
 void checkTimeOrder(double t, double previousT, const std::string& name, int line) {
     if (!std::isnan(previousT) && t < previousT)
         throw TraceError(name, line, "time " + std::to_string(t) + " is earlier than the previous sample's " +
@@ -110,6 +132,7 @@ Trace parseAnimationPath(std::istream& in, const std::string& name) {
     double previousT = std::nan("");
     while (std::getline(in, raw)) {
         ++lineNo;
+        checkText(raw, name, lineNo);
         const auto hash = raw.find('#');
         const std::string line = hash == std::string::npos ? raw : raw.substr(0, hash);
         const auto tokens = splitWhitespace(line);
@@ -120,11 +143,12 @@ Trace parseAnimationPath(std::istream& in, const std::string& name) {
         double v[8];
         for (int i = 0; i < 8; ++i) {
             if (!parseDouble(tokens[std::size_t(i)], v[i]))
-                throw TraceError(name, lineNo, "field " + std::to_string(i + 1) + " `" + tokens[std::size_t(i)] +
-                                                   "` is not a number");
+                throw TraceError(name, lineNo, "field " + std::to_string(i + 1) + " `" +
+                                                   printable(tokens[std::size_t(i)], 40) + "` is not a number");
             if (!std::isfinite(v[i]))
                 throw TraceError(name, lineNo, "field " + std::to_string(i + 1) + " is not finite");
         }
+        checkFloatRange(v + 1, 3, name, lineNo);
         checkTimeOrder(v[0], previousT, name, lineNo);
         previousT = v[0];
         trace.push_back(PoseSample{v[0], Eigen::Vector3d(v[1], v[2], v[3]),
@@ -134,9 +158,21 @@ Trace parseAnimationPath(std::istream& in, const std::string& name) {
     return trace;
 }
 
+namespace {
+
+// The whole trace file, within kTraceLimit (io/bounded_read.hpp), as a stream for the parsers.
+std::istringstream openTrace(const std::string& path) {
+    try {
+        return std::istringstream(readBoundedFile(path, kTraceLimit));
+    } catch (const ReadError& e) {
+        throw TraceError(e.what());
+    }
+}
+
+}  // namespace
+
 Trace readAnimationPath(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw TraceError(path, 0, "cannot open trace file");
+    std::istringstream f = openTrace(path);
     return parseAnimationPath(f, path);
 }
 
@@ -178,6 +214,7 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
     double firstT = 0.0, previousT = std::nan("");
     while (std::getline(in, raw)) {
         ++lineNo;
+        checkText(raw, name, lineNo);
         const std::string line = trim(raw);
         if (line.empty()) continue;
         const auto fields = splitComma(line);
@@ -200,13 +237,15 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
         double t = 0.0;
         const std::string& ts = fields[index[0]];
         if (!parseDouble(ts, t) && !parseDateTimeSeconds(ts, t))
-            throw TraceError(name, lineNo, "Timestamp `" + ts + "` is neither seconds nor YYYY-MM-DD HH:MM:SS.fff");
+            throw TraceError(name, lineNo, "Timestamp `" + printable(ts, 40) + "` is neither seconds nor YYYY-MM-DD HH:MM:SS.fff");
         double v[7];
         for (int c = 1; c < 8; ++c) {
             const std::string& f = fields[index[c]];
             if (!parseDouble(f, v[c - 1]) || !std::isfinite(v[c - 1]))
-                throw TraceError(name, lineNo, std::string(kColumns[c]) + " `" + f + "` is not a finite number");
+                throw TraceError(name, lineNo, std::string(kColumns[c]) + " `" + printable(f, 40) + "` is not a finite number");
         }
+        checkFloatRange(v + 4, 3, name, lineNo);
+        if (!std::isfinite(t)) throw TraceError(name, lineNo, "Timestamp is not finite");
         if (trace.empty()) firstT = t;
         t -= firstT;
         checkTimeOrder(t, previousT, name, lineNo);
@@ -221,8 +260,7 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
 }
 
 Trace readHeadMovementCsv(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw TraceError(path, 0, "cannot open trace file");
+    std::istringstream f = openTrace(path);
     return parseHeadMovementCsv(f, path);
 }
 
