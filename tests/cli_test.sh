@@ -84,6 +84,30 @@ expect_error "strata: unknown command 'nosuch'" nosuch
 if "$strata" track --help >/dev/null 2>&1; then
   expect_error "strata track: --trace excludes --synthetic" track --trace "$tmp/path.txt" --synthetic 1
   expect_error "strata track: --display-hz" track --synthetic 1 --display-hz -5
+  # Numbers that would ask for unbounded work or memory, or that are not numbers: refused while
+  # parsing, naming the option, before anything is generated.
+  expect_error "strata track: --synthetic: must be a number in (0, 600] s, got inf" track --synthetic inf
+  expect_error "strata track: --synthetic: must be a number in (0, 600] s, got 1e7" track --synthetic 1e7
+  expect_error "strata track: --synthetic: must be a number in (0, 600] s, got nan" track --synthetic nan
+  expect_error "strata track: --display-hz: must be a number in (0, 1000] Hz, got 1e300" track --synthetic 1 --display-hz 1e300
+  expect_error "strata track: --display-hz: must be a number in (0, 1000] Hz, got nan" track --synthetic 1 --display-hz nan
+  expect_error "strata track: --latency-ms: must be a number in [0, 1000] ms, got nan" track --synthetic 1 --latency-ms nan
+  expect_error "strata track: --reread-ms: must be a number in [0, 1000] ms, got nan" track --synthetic 1 --reread-ms nan
+  expect_error "strata track: --seed: must be a non-negative integer, got -1" track --synthetic 1 --seed -1
+  # Options that do nothing without another are refused, not ignored.
+  expect_error "strata track: --seed requires --synthetic" track --trace "$tmp/path.txt" --seed 3
+  expect_error "strata track: --write-traces requires --synthetic" track --trace "$tmp/path.txt" --write-traces "$work/t"
+  # A trace whose samples lie far apart would be scored frame by frame: bounded before scoring.
+  printf '0 0 0 0 0 0 0 1\n1000000 0 0 0 0 0 0 1\n' >"$tmp/far.path"
+  expect_error "far.path: spans 1e+06 s, 9e+07 frames at 90 Hz; at most 1e+06 frames are scored" track --trace "$tmp/far.path"
+  # The truth trace is named when it is the one without motion to score.
+  printf '0 0 0 0 0 0 0 1\n' >"$tmp/one.path"
+  printf '1 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n' >"$tmp/still.path"
+  printf '0 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n' >"$tmp/two.path"
+  expect_error "one.path: needs at least 2 samples, has 1" track --trace "$tmp/two.path" --truth "$tmp/one.path"
+  expect_error "still.path: all 2 samples are at time 1; a trace must span some time" track --trace "$tmp/two.path" --truth "$tmp/still.path"
+  expect_error "one.path: needs at least 2 samples, has 1" track --trace "$tmp/one.path"
+  expect_error "/dev/zero: is a character device, not a regular file" track --trace /dev/zero
 fi
 # Help is not a rejection: it prints and exits 0.
 if "$strata" bench --help >"$tmp/stdout" 2>"$tmp/stderr" && grep -q -- "--frames" "$tmp/stdout" && [ ! -s "$tmp/stderr" ]
