@@ -120,6 +120,17 @@ expect_error "a-folder: is a folder" render builtin:layers:2 --size 8x8 --out "$
 expect_error "does not exist" render builtin:layers:2 --out "$work/no/such/folder/out.png"
 expect_error "a-folder: is a folder" bench builtin:layers:2 --size 8x8 --frames 1 --json "$work/a-folder"
 expect_error "does not exist" bench builtin:layers:2 --size 8x8 --frames 1 --csv "$work/missing/b.csv"
+expect_error "h.jpg: unsupported image type" render builtin:layers:2 --size 8x8 --out "$work/ok.png" --heatmap "$work/h.jpg"
+# Folders are made after every input was checked, and removed again when the command fails.
+expect_error "argument '0' must be an integer" bench builtin:layers:0 --images "$work/imgs"
+expect_error "size '0x0' is not WxH" demo --headless --size 0x0 --out "$work/rep"
+expect_error "unknown technique" bench builtin:layers:2 --modes nope --images "$work/imgs"
+printf 'x' >"$work/plain-file"
+expect_error "plain-file is not a folder" demo --headless --out "$work/plain-file"
+rm -f "$work/plain-file"
+expect_error "camera.path: no such file" bench builtin:layers:2 --size 8x8 --frames 1 --images "$work/imgs" --camera-path "$tmp/camera.path"
+# Options that would be ignored are refused.
+expect_error "strata render: --time requires --camera-path" render builtin:layers:2 --time 3 --out "$work/out.png"
 if [ "$(id -u)" -ne 0 ]; then  # root writes into read-only folders
   mkdir -p "$work/locked" && chmod a-w "$work/locked"
   expect_error "cannot write in" render builtin:layers:2 --size 8x8 --out "$work/locked/out.png"
@@ -132,6 +143,8 @@ expect_file_too_large() {
   read -r passed failed <"$tmp/counts"
 }
 expect_file_too_large "big.exr: cannot write image" render builtin:shells:3 --size 96x96 --out "$work/big.exr"
+# The image is written (a 520-byte PNG), then its heatmap fails (a 1.7 kB EXR): neither appears.
+expect_file_too_large "h.exr: cannot write image" render builtin:layers:2 --size 128x128 --out "$work/o.png" --heatmap "$work/h.exr"
 if "$strata" track --help >/dev/null 2>&1; then
   expect_error "a-folder: is a folder" track --synthetic 1 --json "$work/a-folder"
   expect_file_too_large "t.json: write failed: File too large" track --synthetic 2 --json "$work/t.json"

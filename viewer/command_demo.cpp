@@ -5,7 +5,9 @@
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
+#include "image/image.hpp"
 #include "io/atomic_file.hpp"
+#include "render/frame_size.hpp"
 #include "view_app.hpp"
 
 #include <cstdio>
@@ -24,27 +26,35 @@ struct DemoArgs {
 void writeReport(const DemoArgs& a) {
     namespace fs = std::filesystem;
     fs::path dir = a.out;
-    fs::create_directories(dir / "images");
     BenchOptions options;
     options.sceneName = "builtin:default";
     options.size = parseSize(a.size);
     options.frames = a.frames;
     options.warmupFrames = 1;
-    options.imagesDir = dir / "images";
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+    checkFolderCreatable(dir / "images");
 
     gl::HeadlessContext context;
+    checkFrameSize(options.size);
     GpuScene gpu(openSceneAndWarn(options.sceneName));
+    // The report folder is made once every input was checked, and is removed again (with every
+    // file in it) when the run fails: the report appears whole or not at all.
+    OutputBatch outputs;
+    outputs.createFolder(dir / "images");
+    options.firstFrame = [&](const std::string& id, const Image& frame) {
+        writeImage(outputs, dir / "images" / (id + ".png"), frame);
+    };
     BenchReport report = runBench(gpu, options);
     std::string table = benchToTable(report);
-    writeTextFile(dir / "bench.json", benchToJson(report).dump(2) + "\n");
-    writeTextFile(dir / "bench.csv", benchToCsv(report));
+    outputs.addText(dir / "bench.json", benchToJson(report).dump(2) + "\n");
+    outputs.addText(dir / "bench.csv", benchToCsv(report));
 
     std::string md = "# Strata demo report\n\nScene `builtin:default` (an opaque room with transparent, intersecting "
                      "and coplanar objects and a field of repeated models), every technique against the exact "
                      "reference `abuffer`. Produced by `strata demo` without a display.\n\n```\n" + table + "```\n\n";
     for (const auto& m : report.modes) md += "![" + m.id + "](images/" + m.id + ".png)\n";
-    writeTextFile(dir / "README.md", md);
+    outputs.addText(dir / "README.md", md);
+    outputs.commit();
     std::cout << table << "\nreport written to " << fs::absolute(dir).string() << "/ (README.md, bench.json, "
               << "bench.csv, images/)\n";
 }

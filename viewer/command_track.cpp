@@ -173,6 +173,8 @@ void runTrack(const TrackOptions& o) {
     auto predictors = selectPredictors(o.predictors);
     const auto deflects = selectDeflects(o.deflects);
 
+    // Every file (the traces written, the JSON, the CSV) appears only if the whole run succeeds.
+    OutputBatch outputs;
     Trace measured, truth;
     std::string source, truthSource;
     if (synthetic) {
@@ -185,13 +187,13 @@ void runTrack(const TrackOptions& o) {
         source = HeadMotionModel(params).describe();
         truthSource = "the noise-free model sampled at 1000 Hz";
         if (!o.writeTraces.empty()) {
-            writeTextFile(o.writeTraces + "-measured.path",
+            outputs.addText(o.writeTraces + "-measured.path",
                           formatAnimationPath(measured, "measured (noisy) trace; " + source));
             // Truth at 240 Hz keeps the shipped file small; slerp between samples 4 ms apart is
             // within 0.01 deg of the model on min-jerk turns.
             Trace truth240;
             for (double t = 0.0; t <= params.duration + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
-            writeTextFile(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
+            outputs.addText(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
         }
     } else {
         measured = readTrace(o.trace);
@@ -255,9 +257,10 @@ void runTrack(const TrackOptions& o) {
                                  {"max_deg", r.stats.maxDeg},
                                  {"mean_mm", r.stats.meanMm},
                                  {"update_ns", r.updateNs}});
-        writeTextFile(o.json, j.dump(2) + "\n");
+        outputs.addText(o.json, j.dump(2) + "\n");
     }
-    if (!o.sweepCsv.empty()) writeTextFile(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
+    if (!o.sweepCsv.empty()) outputs.addText(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
+    outputs.commit();
 }
 
 }  // namespace

@@ -158,10 +158,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 referenceImage = std::move(image);
                 referenceKey = keyOf(f);
                 if (options.referenceFrame) options.referenceFrame(f, referenceImage);
-                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), referenceImage);
+                if (f == 0 && options.firstFrame) options.firstFrame(id, referenceImage);
             } else {
                 error.add(image, referenceImage);
-                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), image);
+                if (f == 0 && options.firstFrame) options.firstFrame(id, image);
             }
         }
         // A fixed camera needs no more reference renders: free the reference's buffers now.
