@@ -131,6 +131,9 @@ rm -f "$work/plain-file"
 expect_error "camera.path: no such file" bench builtin:layers:2 --size 8x8 --frames 1 --images "$work/imgs" --camera-path "$tmp/camera.path"
 # Options that would be ignored are refused.
 expect_error "strata render: --time requires --camera-path" render builtin:layers:2 --time 3 --out "$work/out.png"
+expect_error "strata view: --stereo requires --immersive" view --stereo
+expect_error "strata view: --predictor requires --immersive" view --predictor cv
+expect_error "strata view: --screenshot requires --exit-after-frames" view --screenshot "$work/shot.png"
 if [ "$(id -u)" -ne 0 ]; then  # root writes into read-only folders
   mkdir -p "$work/locked" && chmod a-w "$work/locked"
   expect_error "cannot write in" render builtin:layers:2 --size 8x8 --out "$work/locked/out.png"

@@ -64,12 +64,17 @@ void writeReport(const DemoArgs& a) {
 void registerDemoCommand(CLI::App& app) {
     auto args = std::make_shared<DemoArgs>();
     auto* cmd = app.add_subcommand("demo", "the main job on the built-in default scene (viewer, or a report headless)");
-    cmd->add_option("--out", args->out, "report folder when headless")->capture_default_str();
-    cmd->add_option("--size", args->size, "report image size WxH")->capture_default_str();
-    cmd->add_option("--frames", args->frames, "frames per technique")->check(CLI::Range(1, 1000))->capture_default_str();
+    auto* out = cmd->add_option("--out", args->out, "report folder when headless")->capture_default_str();
+    auto* size = cmd->add_option("--size", args->size, "report image size WxH")->capture_default_str();
+    auto* frames =
+        cmd->add_option("--frames", args->frames, "frames per technique")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_flag("--headless", args->headless, "write the report even when a display is present");
-    cmd->callback([args] {
+    cmd->callback([args, out, size, frames] {
         if (!args->headless && displayAvailable()) {
+            // The report's options mean nothing to the viewer: refused, not ignored.
+            for (const CLI::Option* o : {out, size, frames})
+                if (o->count() > 0)
+                    throw std::runtime_error("demo: " + o->get_name() + " is for the report; add --headless (a display was found, so the viewer would open)");
             ViewOptions view;
             view.scene = "builtin:default";
             runViewer(view);
