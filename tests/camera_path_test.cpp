@@ -168,6 +168,9 @@ TEST_CASE("camera path: malformed input names the file and line") {
         {"long.txt", good + "1 0 0 0 0 0 0 1 9\n", ":2: expected 8 numbers (time px py pz qx qy qz qw), got 9"},
         {"word.txt", "\n\n0 0 abc 0 0 0 0 1\n", ":3: 'abc' is not a number"},
         {"suffix.txt", "0 0 1.5x 0 0 0 0 1\n", ":1: '1.5x' is not a number"},
+        // A line of a million tokens is counted, not stored.
+        {"many.txt", [] { std::string s; for (int i = 0; i < 1000000; ++i) s += "1 "; return s; }(),
+         ":1: expected 8 numbers (time px py pz qx qy qz qw), got 1000000"},
         // A 10 MB token is quoted as its first 40 characters; control bytes are escaped.
         {"token.txt", "0 0 " + std::string(10 << 20, '9') + "x 0 0 0 0 1\n", ":1: '" + std::string(40, '9') + "...' is not a number"},
         {"escape.txt", "0 0 \x1b[2J 0 0 0 0 1\n", ":1: '\\x1B[2J' is not a number"},

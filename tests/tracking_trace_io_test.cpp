@@ -73,6 +73,11 @@ TEST_CASE("animation path: malformed lines name file and line") {
     // A 10 MB token is quoted cut; UTF-16 is named as such.
     CHECK(errorOf("i.path", ok + "0.1 " + std::string(10 << 20, 'z') + " 0 0 0 0 0 1\n") ==
           tempPath("i.path") + ":2: field 2 `" + std::string(40, 'z') + "...` is not a number");
+    // A line of a million one-character fields is counted, not split into a million strings.
+    std::string many;
+    for (int i = 0; i < 1000000; ++i) many += "1 ";
+    CHECK(errorOf("l.path", many + "\n") == tempPath("l.path") + ":1: expected 8 fields `time px py pz qx qy qz qw`, found 1000000");
+    CHECK(errorOf("m.csv", std::string(2000, ',') + "\n") == tempPath("m.csv") + ":1: header has 2001 columns, more than 1024");
     CHECK(errorOf("j.path", std::string("\xff\xfe" "0\0 \0", 6)) == tempPath("j.path") + ":1: NUL byte: not a text file (UTF-16?)");
     CHECK(errorOf("k.csv", "Timestamp,UnitQuaternion.x,UnitQuaternion.y,UnitQuaternion.z,UnitQuaternion.w,HmdPosition.x,"
                            "HmdPosition.y,HmdPosition.z\n0,0,0,0,1,0,1e300,0\n") ==

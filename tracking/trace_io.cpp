@@ -3,6 +3,7 @@
 #include "io/bounded_read.hpp"
 #include "io/printable.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -51,6 +52,22 @@ std::vector<std::string> splitWhitespace(const std::string& line) {
     }
     return out;
 }
+
+// Counted before splitting, so that a line of millions of one-character fields is refused
+// without becoming millions of strings (a 64 MiB trace could otherwise take a gigabyte).
+std::size_t countWhitespaceFields(const std::string& line) {
+    std::size_t n = 0;
+    bool inField = false;
+    for (char c : line) {
+        const bool space = c == ' ' || c == '\t' || c == '\r';
+        if (!space && !inField) ++n;
+        inField = !space;
+    }
+    return n;
+}
+
+// A header names the dataset's nine columns and perhaps a few more; far more is not a trace.
+constexpr std::size_t kMaxCsvColumns = 1024;
 
 std::vector<std::string> splitComma(const std::string& line) {
     std::vector<std::string> out;
@@ -135,11 +152,11 @@ Trace parseAnimationPath(std::istream& in, const std::string& name) {
         checkText(raw, name, lineNo);
         const auto hash = raw.find('#');
         const std::string line = hash == std::string::npos ? raw : raw.substr(0, hash);
+        const std::size_t count = countWhitespaceFields(line);
+        if (count == 0) continue;
+        if (count != 8)
+            throw TraceError(name, lineNo, "expected 8 fields `time px py pz qx qy qz qw`, found " + std::to_string(count));
         const auto tokens = splitWhitespace(line);
-        if (tokens.empty()) continue;
-        if (tokens.size() != 8)
-            throw TraceError(name, lineNo,
-                             "expected 8 fields `time px py pz qx qy qz qw`, found " + std::to_string(tokens.size()));
         double v[8];
         for (int i = 0; i < 8; ++i) {
             if (!parseDouble(tokens[std::size_t(i)], v[i]))
@@ -217,6 +234,13 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
         checkText(raw, name, lineNo);
         const std::string line = trim(raw);
         if (line.empty()) continue;
+        const std::size_t count = std::size_t(std::count(line.begin(), line.end(), ',')) + 1;
+        if (!haveHeader && count > kMaxCsvColumns)
+            throw TraceError(name, lineNo, "header has " + std::to_string(count) + " columns, more than " +
+                                               std::to_string(kMaxCsvColumns));
+        if (haveHeader && count != columnCount)
+            throw TraceError(name, lineNo, "expected " + std::to_string(columnCount) + " comma-separated fields, found " +
+                                               std::to_string(count));
         const auto fields = splitComma(line);
         if (!haveHeader) {
             std::map<std::string, std::size_t> byName;
@@ -231,9 +255,6 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
             haveHeader = true;
             continue;
         }
-        if (fields.size() != columnCount)
-            throw TraceError(name, lineNo, "expected " + std::to_string(columnCount) + " comma-separated fields, found " +
-                                               std::to_string(fields.size()));
         double t = 0.0;
         const std::string& ts = fields[index[0]];
         if (!parseDouble(ts, t) && !parseDateTimeSeconds(ts, t))

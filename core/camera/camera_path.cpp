@@ -32,15 +32,18 @@ std::string shortest(T value) {
     return std::string(buf.data(), end);
 }
 
-std::vector<std::string_view> splitWhitespace(std::string_view line) {
+// At most `maxTokens` tokens are kept; `count` gets how many there are. A line of millions of
+// one-character tokens is counted, not stored.
+std::vector<std::string_view> splitWhitespace(std::string_view line, std::size_t maxTokens, std::size_t& count) {
     std::vector<std::string_view> tokens;
+    count = 0;
     std::size_t i = 0;
     auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
     while (i < line.size()) {
         while (i < line.size() && space(line[i])) ++i;
         std::size_t start = i;
         while (i < line.size() && !space(line[i])) ++i;
-        if (i > start) tokens.push_back(line.substr(start, i - start));
+        if (i > start && count++ < maxTokens) tokens.push_back(line.substr(start, i - start));
     }
     return tokens;
 }
@@ -100,10 +103,10 @@ CameraPath CameraPath::parse(std::string_view text, const std::string& fileName)
         // A NUL byte (a UTF-16 file, a binary file) is no separator and no number: say so rather
         // than let it pass as part of a token or cut the message short.
         if (view.find('\0') != std::string_view::npos) fail("NUL byte: not a text file (UTF-16?)");
-        auto tokens = splitWhitespace(view);
-        if (tokens.empty()) continue;
-        if (tokens.size() != 8)
-            fail("expected 8 numbers (time px py pz qx qy qz qw), got " + std::to_string(tokens.size()));
+        std::size_t count = 0;
+        auto tokens = splitWhitespace(view, 8, count);
+        if (count == 0) continue;
+        if (count != 8) fail("expected 8 numbers (time px py pz qx qy qz qw), got " + std::to_string(count));
         std::array<double, 8> v{};
         for (std::size_t i = 0; i < 8; ++i) {
             if (!parseNumber(tokens[i], v[i])) fail("'" + printable(tokens[i], 40) + "' is not a number");

@@ -241,6 +241,9 @@ int main(int argc, char** argv) {
         }
         gIndex = std::sig_atomic_t(i);
         ::alarm(kHangSeconds);
+        if (i > 0 && i % 100000 == 0)  // progress of long runs
+            std::fprintf(stderr, "strata_fuzz %s: %lld inputs, %.0f s\n", name.c_str(), i,
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         try {
             (target.run(input, s.file) ? loaded : refused)++;
         } catch (const std::exception& e) {
