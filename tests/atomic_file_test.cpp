@@ -173,3 +173,18 @@ TEST_CASE("output batch: folders that cannot be made are refused before anything
     OutputBatch batch;
     CHECK(errorOf([&] { batch.createFolder(tmp.dir / "file" / "images"); }).find("file/images: ") != std::string::npos);
 }
+
+TEST_CASE("output batch: a rename that fails at commit names its output and removes the temporaries left") {
+    TempDir tmp;
+    std::string error = errorOf([&] {
+        OutputBatch batch;
+        batch.addText(tmp.dir / "a.json", "a");
+        batch.addText(tmp.dir / "b.json", "b");
+        batch.addText(tmp.dir / "c.json", "c");
+        fs::create_directories(tmp.dir / "b.json" / "inside");  // put in b's place after the checks
+        batch.commit();
+    });
+    CHECK(error.rfind((tmp.dir / "b.json").string() + ": ", 0) == 0);
+    // a was renamed before the failure and stays; c's temporary is gone; nothing else is left.
+    CHECK(listing(tmp.dir) == std::set<std::string>{"a.json", "b.json", "b.json/inside"});
+}

@@ -86,12 +86,9 @@ void checkFolderCreatable(const fs::path& folder) {
     if (existing.empty()) existing = ".";
     if (!fs::is_directory(existing, ec))
         throw failure(folder, existing == folder ? std::string("is not a folder") : existing.string() + " is not a folder");
-    if (existing != folder) {
-        if (::access(existing.c_str(), W_OK) != 0)
-            throw failure(folder, "cannot create in " + existing.string() + ": " + errnoText(errno));
-    } else if (::access(existing.c_str(), W_OK) != 0) {
+    // The folder itself when it exists (outputs go into it), else the part that exists.
+    if (::access(existing.c_str(), W_OK) != 0)
         throw failure(folder, "cannot write in " + existing.string() + ": " + errnoText(errno));
-    }
 }
 
 namespace {
@@ -157,13 +154,13 @@ void OutputBatch::addText(const fs::path& path, std::string_view text) {
 
 void OutputBatch::commit() {
     for (std::size_t i = 0; i < staged_.size(); ++i) {
-        const Staged& s = staged_[i];
-        if (::rename(s.temporary.c_str(), s.path.c_str()) != 0) {
+        if (::rename(staged_[i].temporary.c_str(), staged_[i].path.c_str()) != 0) {
             int error = errno;
+            const fs::path path = staged_[i].path;
             // Those renamed stay; the destructor removes the temporaries not yet renamed.
             staged_.erase(staged_.begin(), staged_.begin() + std::ptrdiff_t(i));
             // A folder or file put in the destination's place since checkPlace.
-            throw failure(s.path, error == EISDIR ? std::string("is a folder") : "cannot move into place: " + errnoText(error));
+            throw failure(path, error == EISDIR ? std::string("is a folder") : "cannot move into place: " + errnoText(error));
         }
     }
     committed_ = true;
