@@ -127,3 +127,64 @@ TEST_CASE("atomic file: destinations that cannot be written are refused, naming 
         CHECK(fs::is_empty(tmp.dir / "locked"));
     }
 }
+
+TEST_CASE("output batch: every output appears at commit, none before") {
+    TempDir tmp;
+    OutputBatch batch;
+    batch.createFolder(tmp.dir / "report" / "images");
+    batch.addText(tmp.dir / "report" / "images" / "a.png", "image");
+    batch.addText(tmp.dir / "report" / "bench.json", "{}");
+    // Written to temporaries already, under no final name yet.
+    CHECK_FALSE(fs::exists(tmp.dir / "report" / "bench.json"));
+    CHECK_FALSE(fs::exists(tmp.dir / "report" / "images" / "a.png"));
+    batch.commit();
+    CHECK(listing(tmp.dir) == std::set<std::string>{"report", "report/images", "report/images/a.png", "report/bench.json"});
+    CHECK(contents(tmp.dir / "report" / "bench.json") == "{}");
+}
+
+TEST_CASE("output batch: a failure on the way leaves no output, no temporary and no folder it made") {
+    TempDir tmp;
+    fs::create_directories(tmp.dir / "kept");
+    writeTextFile(tmp.dir / "image.png", "old image");
+    std::string error = errorOf([&] {
+        OutputBatch batch;
+        batch.createFolder(tmp.dir / "kept" / "new" / "deeper");
+        batch.addText(tmp.dir / "kept" / "new" / "deeper" / "x.png", "x");
+        batch.addText(tmp.dir / "image.png", "new image");  // the main image: written, not committed
+        // The secondary output fails (a heatmap that cannot be written): the batch is dropped.
+        batch.add(tmp.dir / "heat.exr", [](const fs::path&) { throw std::runtime_error("cannot write image: full"); });
+        batch.commit();
+    });
+    CHECK(error == (tmp.dir / "heat.exr").string() + ": cannot write image: full");
+    // The folder that existed stays; the ones the batch made are gone; the old image is untouched.
+    CHECK(listing(tmp.dir) == std::set<std::string>{"kept", "image.png"});
+    CHECK(contents(tmp.dir / "image.png") == "old image");
+}
+
+TEST_CASE("output batch: folders that cannot be made are refused before anything is made") {
+    TempDir tmp;
+    writeTextFile(tmp.dir / "file", "x");
+    CHECK(errorOf([&] { checkFolderCreatable(tmp.dir / "file"); }) == (tmp.dir / "file").string() + ": is not a folder");
+    CHECK(errorOf([&] { checkFolderCreatable(tmp.dir / "file" / "images"); }) ==
+          (tmp.dir / "file" / "images").string() + ": " + (tmp.dir / "file").string() + " is not a folder");
+    CHECK_NOTHROW(checkFolderCreatable(tmp.dir / "new" / "images"));
+    CHECK_NOTHROW(checkFolderCreatable(tmp.dir));
+    CHECK(listing(tmp.dir) == std::set<std::string>{"file"});
+    OutputBatch batch;
+    CHECK(errorOf([&] { batch.createFolder(tmp.dir / "file" / "images"); }).find("file/images: ") != std::string::npos);
+}
+
+TEST_CASE("output batch: a rename that fails at commit names its output and removes the temporaries left") {
+    TempDir tmp;
+    std::string error = errorOf([&] {
+        OutputBatch batch;
+        batch.addText(tmp.dir / "a.json", "a");
+        batch.addText(tmp.dir / "b.json", "b");
+        batch.addText(tmp.dir / "c.json", "c");
+        fs::create_directories(tmp.dir / "b.json" / "inside");  // put in b's place after the checks
+        batch.commit();
+    });
+    CHECK(error.rfind((tmp.dir / "b.json").string() + ": ", 0) == 0);
+    // a was renamed before the failure and stays; c's temporary is gone; nothing else is left.
+    CHECK(listing(tmp.dir) == std::set<std::string>{"a.json", "b.json", "b.json/inside"});
+}

@@ -168,9 +168,17 @@ TEST_CASE("camera path: malformed input names the file and line") {
         {"long.txt", good + "1 0 0 0 0 0 0 1 9\n", ":2: expected 8 numbers (time px py pz qx qy qz qw), got 9"},
         {"word.txt", "\n\n0 0 abc 0 0 0 0 1\n", ":3: 'abc' is not a number"},
         {"suffix.txt", "0 0 1.5x 0 0 0 0 1\n", ":1: '1.5x' is not a number"},
+        // A line of a million tokens is counted, not stored.
+        {"many.txt", [] { std::string s; for (int i = 0; i < 1000000; ++i) s += "1 "; return s; }(),
+         ":1: expected 8 numbers (time px py pz qx qy qz qw), got 1000000"},
+        // A 10 MB token is quoted as its first 40 characters; control bytes are escaped.
+        {"token.txt", "0 0 " + std::string(10 << 20, '9') + "x 0 0 0 0 1\n", ":1: '" + std::string(40, '9') + "...' is not a number"},
+        {"escape.txt", "0 0 \x1b[2J 0 0 0 0 1\n", ":1: '\\x1B[2J' is not a number"},
+        // UTF-16 (what a Windows editor may save): named as such, not cut at the first NUL.
+        {"utf16.txt", std::string("\xff\xfe" "0\0 \0" "0\0", 8), ":1: NUL byte: not a text file (UTF-16?)"},
         {"nan.txt", good + "1 nan 0 0 0 0 0 1\n", ":2: non-finite value"},
         {"inf.txt", "inf 0 0 0 0 0 0 1\n", ":1: non-finite value"},
-        {"huge.txt", "0 1e300 0 0 0 0 0 1\n", ":1: non-finite value"},
+        {"huge.txt", "0 1e300 0 0 0 0 0 1\n", ":1: value 1e+300 does not fit a float"},
         {"order.txt", "2.0 0 0 0 0 0 0 1\n1.5 0 0 0 0 0 0 1\n", ":2: time 1.5 before previous time 2"},
         {"zeroq.txt", good + "1 0 0 0 0 0 0 0\n", ":2: quaternion has zero length"},
         {"tinyq.txt", "0 0 0 0 1e-9 0 0 1e-9\n", ":1: quaternion has zero length"},
@@ -183,7 +191,7 @@ TEST_CASE("camera path: malformed input names the file and line") {
         CHECK(errorOf(file) == file.string() + c.message);
     }
     auto missing = tmp.dir / "missing.txt";
-    CHECK(errorOf(missing) == missing.string() + ": cannot open camera path");
+    CHECK(errorOf(missing) == missing.string() + ": no such file");
 }
 
 TEST_CASE("camera path: a failed write leaves nothing behind") {

@@ -56,7 +56,7 @@ expect_error "no technique run has a setting 'capacty'" bench builtin:layers:2 -
 expect_error "unknown technique 'llx'" bench builtin:layers:2 --modes ll --set llx.capacity=4 --json "$work/out.png"
 expect_error "technique kbuffer is not among those run (abuffer, ll)" bench builtin:layers:2 --modes ll --set kbuffer.capacity=4 --json "$work/out.png"
 expect_error "not of the form [technique.]name=value" render builtin:layers:2 --set capacity --out "$work/out.png"
-expect_error "missing.json: not a readable regular file" render builtin:layers:2 --settings "$tmp/missing.json" --out "$work/out.png"
+expect_error "missing.json: no such file" render builtin:layers:2 --settings "$tmp/missing.json" --out "$work/out.png"
 printf '{"capacity": 4,' >"$tmp/broken.json"
 expect_error "broken.json: " render builtin:layers:2 --mode ll --settings "$tmp/broken.json" --out "$work/out.png"
 printf '{"capacity": "four"}' >"$tmp/string.json"
@@ -85,6 +85,30 @@ if "$strata" track --help >/dev/null 2>&1; then
   expect_error "strata track: --trace excludes --synthetic" track --trace "$tmp/path.txt" --synthetic 1
   expect_error "strata track: --display-hz" track --synthetic 1 --display-hz -5
   expect_error "--motion \`run\`: expected seated, walk or scan" track --synthetic 1 --motion run
+  # Numbers that would ask for unbounded work or memory, or that are not numbers: refused while
+  # parsing, naming the option, before anything is generated.
+  expect_error "strata track: --synthetic: must be a number in (0, 600] s, got inf" track --synthetic inf
+  expect_error "strata track: --synthetic: must be a number in (0, 600] s, got 1e7" track --synthetic 1e7
+  expect_error "strata track: --synthetic: must be a number in (0, 600] s, got nan" track --synthetic nan
+  expect_error "strata track: --display-hz: must be a number in (0, 1000] Hz, got 1e300" track --synthetic 1 --display-hz 1e300
+  expect_error "strata track: --display-hz: must be a number in (0, 1000] Hz, got nan" track --synthetic 1 --display-hz nan
+  expect_error "strata track: --latency-ms: must be a number in [0, 1000] ms, got nan" track --synthetic 1 --latency-ms nan
+  expect_error "strata track: --reread-ms: must be a number in [0, 1000] ms, got nan" track --synthetic 1 --reread-ms nan
+  expect_error "strata track: --seed: must be a non-negative integer, got -1" track --synthetic 1 --seed -1
+  # Options that do nothing without another are refused, not ignored.
+  expect_error "strata track: --seed requires --synthetic" track --trace "$tmp/path.txt" --seed 3
+  expect_error "strata track: --write-traces requires --synthetic" track --trace "$tmp/path.txt" --write-traces "$work/t"
+  # A trace whose samples lie far apart would be scored frame by frame: bounded before scoring.
+  printf '0 0 0 0 0 0 0 1\n1000000 0 0 0 0 0 0 1\n' >"$tmp/far.path"
+  expect_error "far.path: spans 1e+06 s, 9e+07 frames at 90 Hz; at most 1e+06 frames are scored" track --trace "$tmp/far.path"
+  # The truth trace is named when it is the one without motion to score.
+  printf '0 0 0 0 0 0 0 1\n' >"$tmp/one.path"
+  printf '1 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n' >"$tmp/still.path"
+  printf '0 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n' >"$tmp/two.path"
+  expect_error "one.path: needs at least 2 samples, has 1" track --trace "$tmp/two.path" --truth "$tmp/one.path"
+  expect_error "still.path: all 2 samples are at time 1; a trace must span some time" track --trace "$tmp/two.path" --truth "$tmp/still.path"
+  expect_error "one.path: needs at least 2 samples, has 1" track --trace "$tmp/one.path"
+  expect_error "/dev/zero: is a character device, not a regular file" track --trace /dev/zero
 fi
 # Help is not a rejection: it prints and exits 0.
 if "$strata" bench --help >"$tmp/stdout" 2>"$tmp/stderr" && grep -q -- "--frames" "$tmp/stdout" && [ ! -s "$tmp/stderr" ]
@@ -97,6 +121,20 @@ expect_error "a-folder: is a folder" render builtin:layers:2 --size 8x8 --out "$
 expect_error "does not exist" render builtin:layers:2 --out "$work/no/such/folder/out.png"
 expect_error "a-folder: is a folder" bench builtin:layers:2 --size 8x8 --frames 1 --json "$work/a-folder"
 expect_error "does not exist" bench builtin:layers:2 --size 8x8 --frames 1 --csv "$work/missing/b.csv"
+expect_error "h.jpg: unsupported image type" render builtin:layers:2 --size 8x8 --out "$work/ok.png" --heatmap "$work/h.jpg"
+# Folders are made after every input was checked, and removed again when the command fails.
+expect_error "argument '0' must be an integer" bench builtin:layers:0 --images "$work/imgs"
+expect_error "size '0x0' is not WxH" demo --headless --size 0x0 --out "$work/rep"
+expect_error "unknown technique" bench builtin:layers:2 --modes nope --images "$work/imgs"
+printf 'x' >"$work/plain-file"
+expect_error "plain-file is not a folder" demo --headless --out "$work/plain-file"
+rm -f "$work/plain-file"
+expect_error "camera.path: no such file" bench builtin:layers:2 --size 8x8 --frames 1 --images "$work/imgs" --camera-path "$tmp/camera.path"
+# Options that would be ignored are refused.
+expect_error "strata render: --time requires --camera-path" render builtin:layers:2 --time 3 --out "$work/out.png"
+expect_error "strata view: --stereo requires --immersive" view --stereo
+expect_error "strata view: --predictor requires --immersive" view --predictor cv
+expect_error "strata view: --screenshot requires --exit-after-frames" view --screenshot "$work/shot.png"
 if [ "$(id -u)" -ne 0 ]; then  # root writes into read-only folders
   mkdir -p "$work/locked" && chmod a-w "$work/locked"
   expect_error "cannot write in" render builtin:layers:2 --size 8x8 --out "$work/locked/out.png"
@@ -109,6 +147,8 @@ expect_file_too_large() {
   read -r passed failed <"$tmp/counts"
 }
 expect_file_too_large "big.exr: cannot write image" render builtin:shells:3 --size 96x96 --out "$work/big.exr"
+# The image is written (a 520-byte PNG), then its heatmap fails (a 1.7 kB EXR): neither appears.
+expect_file_too_large "h.exr: cannot write image" render builtin:layers:2 --size 128x128 --out "$work/o.png" --heatmap "$work/h.exr"
 if "$strata" track --help >/dev/null 2>&1; then
   expect_error "a-folder: is a folder" track --synthetic 1 --json "$work/a-folder"
   expect_file_too_large "t.json: write failed: File too large" track --synthetic 2 --json "$work/t.json"

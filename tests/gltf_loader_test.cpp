@@ -418,18 +418,47 @@ TEST_CASE("gltf: bad inputs give one clear line naming the file") {
         {"draco", [](GltfBuilder& b, int) { b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"}; },
          "required extension KHR_draco_mesh_compression is not supported"},
         {"mistyped", [](GltfBuilder& b, int) { b.doc["nodes"][0]["mesh"] = "zero"; }, "nodes[0].mesh: expected an unsigned integer"},
+        // Finite doubles that are infinite floats: checked as the float each becomes, by key.
+        {"hugeTranslation", [](GltfBuilder& b, int) { b.doc["nodes"][0]["translation"] = {1e308, 0, 0}; },
+         "node 0: translation 1e+308 does not fit a float"},
+        {"hugeScale", [](GltfBuilder& b, int) { b.doc["nodes"][0]["scale"] = {1, 1e39, 1}; },
+         "node 0: scale 1e+39 does not fit a float"},
+        {"hugeRotation", [](GltfBuilder& b, int) { b.doc["nodes"][0]["rotation"] = {0, 0, 0, 1e300}; },
+         "node 0: rotation 1e+300 does not fit a float"},
+        {"hugeMatrix", [](GltfBuilder& b, int) {
+             b.doc["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1e300, 0, 0, 1}; },
+         "node 0: matrix 1e+300 does not fit a float"},
+        {"hugeCutoff", [](GltfBuilder& b, int) {
+             b.material({{"alphaMode", "MASK"}, {"alphaCutoff", 1e300}});
+             b.doc["meshes"][0]["primitives"][0]["material"] = 0; },
+         "material 0: alphaCutoff 1e+300 does not fit a float"},
+        // A chain of large scales: every node is fine, the world transform of the last is not.
+        {"overflowChain", [](GltfBuilder& b, int) {
+             b.doc["nodes"].push_back({{"children", {0}}, {"scale", {1e30, 1e30, 1e30}}});
+             b.doc["nodes"].push_back({{"children", {1}}, {"scale", {1e30, 1e30, 1e30}}}); },
+         "node 1: its transform times its ancestors' overflows a float"},
+        // A buffer URI naming a folder was once "out of memory": the reader says what it is.
+        {"folderBuffer", [](GltfBuilder& b, int) { b.bufferUri = "."; },
+         ": is a folder, not a regular file"},
+        {"deviceBuffer", [](GltfBuilder& b, int) {
+             std::error_code ec;
+             std::filesystem::remove(tempDir() / "zero-device", ec);
+             std::filesystem::create_symlink("/dev/zero", tempDir() / "zero-device");
+             b.bufferUri = "zero-device"; },
+         "zero-device : is a character device, not a regular file"},
     };
     for (const Case& c : cases) {
         std::string name = c.name;
         CAPTURE(name);
         GltfBuilder b = quad(c.edit);
         std::string error = loadError(b.writeGltf(c.name));
+        CAPTURE(error);
         CHECK(error.find(c.error) != std::string::npos);
         CHECK(error.find(std::string(c.name) + ".gltf: ") != std::string::npos);
         CHECK(error.find('\n') == std::string::npos);
     }
 
-    CHECK(loadError(tempDir() / "absent.glb").find("absent.glb: file not found") != std::string::npos);
+    CHECK(loadError(tempDir() / "absent.glb").find("absent.glb: no such file") != std::string::npos);
     writeFile(tempDir() / "garbage.gltf", "{ \"asset\": ");
     CHECK(loadError(tempDir() / "garbage.gltf").find("garbage.gltf: JSON parse error") != std::string::npos);
     writeFile(tempDir() / "deep.gltf", std::string(100000, '[') + std::string(100000, ']'));

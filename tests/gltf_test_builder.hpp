@@ -100,12 +100,17 @@ struct GltfBuilder {
         return int(doc["materials"].size()) - 1;
     }
 
+    // Where writeGltf's buffer points instead of its own .bin, when set (bad-input tests).
+    std::string bufferUri;
+
     // .gltf with the buffer in a .bin beside it (or inline as base64 when embed is true).
     std::filesystem::path writeGltf(const std::string& name, bool embed = false) {
         auto path = tempDir() / (name + ".gltf");
         json d = doc;
         if (!bin.empty()) {
-            if (embed) {
+            if (!bufferUri.empty()) {
+                d["buffers"] = {{{"byteLength", bin.size()}, {"uri", bufferUri}}};
+            } else if (embed) {
                 d["buffers"] = {{{"byteLength", bin.size()},
                                  {"uri", "data:application/octet-stream;base64," + base64(bin)}}};
             } else {

@@ -135,6 +135,21 @@ TEST_CASE("scene description: transforms, overrides and merged indices") {
     CHECK(hasTransparency(s, objects));
 }
 
+TEST_CASE("scene description: vectors near the float limit that can render are accepted") {
+    std::string model = quadModel().string();
+    // The camera's offset (6e38) and the light's length (4.2e38) overflow a float, not a double.
+    auto path = writeDescription("near-limit", R"({
+      "camera": {"position": [3e38, 0, 0], "target": [-3e38, 0, 0]},
+      "light_direction": [3e38, 3e38, 0],
+      "objects": [{"model": ")" + model + R"("}]})");
+    Scene s = loadSceneDescription(path);
+    CHECK(s.lightDirection.x == doctest::Approx(0.70710678f));
+    CHECK(s.lightDirection.y == doctest::Approx(0.70710678f));
+    REQUIRE(s.camera.has_value());
+    glm::vec3 forward = s.camera->orientation * glm::vec3(0, 0, -1);
+    CHECK(forward.x == doctest::Approx(-1.0f));
+}
+
 TEST_CASE("scene description: errors name the file and the problem") {
     std::string model = quadModel().string();
     auto obj = [&](const std::string& extra) {
@@ -152,11 +167,26 @@ TEST_CASE("scene description: errors name the file and the problem") {
         {"badmode", obj(R"(, "material": {"alpha_mode": "GLASS"})"), "object 0: material.alpha_mode: unknown mode 'GLASS'"},
         {"badalpha", obj(R"(, "material": {"alpha": 2})"), "object 0: material.alpha: must be in [0, 1]"},
         // 1e39 is a finite JSON number but an infinite float: tau must stay finite for the shaders.
-        {"hugetau", obj(R"(, "material": {"tau": [1, 1e39, 1]})"), "object 0: material.tau: components must be in [0, 10000]"},
+        {"hugetau", obj(R"(, "material": {"tau": [1, 1e39, 1]})"), "object 0: material.tau: 1e+39 does not fit a float"},
         {"negativetau", obj(R"(, "material": {"tau": [-1, 0, 0]})"), "object 0: material.tau: components must be in [0, 10000]"},
         {"badscale", obj(R"(, "scale": 0)"), "object 0: scale: must not be zero"},
         {"tworotations", obj(R"(, "rotate_deg": [0, 0, 0], "rotate_axis_angle": [0, 1, 0, 90])"), "not both"},
         {"badcamera", R"({"camera": {"position": [0, 0, 0], "target": [0, 0, 0]}, "objects": []})", "camera: position and target coincide"},
+        // Finite doubles that are infinite floats, each named by its key.
+        {"hugetranslate", obj(R"(, "translate": [1e308, 0, 0])"), "object 0: translate: 1e+308 does not fit a float"},
+        {"hugerotate", obj(R"(, "rotate_deg": [0, 1e308, 0])"), "object 0: rotate_deg: 1e+308 does not fit a float"},
+        {"hugescale", obj(R"(, "scale": 1e308)"), "object 0: scale: 1e+308 does not fit a float"},
+        {"hugefit", obj(R"(, "fit": 1e308)"), "object 0: fit: 1e+308 does not fit a float"},
+        {"hugecamera", R"({"camera": {"position": [1e308, 0, 0], "target": [0, 0, 0]}, "objects": []})",
+         "camera.position: 1e+308 does not fit a float"},
+        {"hugelight", R"({"light_direction": [0, 1e308, 0], "objects": []})", "light_direction: 1e+308 does not fit a float"},
+        {"hugebackground", R"({"background": [0, 0, 1e308], "objects": []})", "background: 1e+308 does not fit a float"},
+        // Each part fits; together they do not. Near the float limit, a difference or a length
+        // overflows a float though not a double: the camera and the light stay valid.
+        {"fitoverflow", obj(R"(, "fit": 3e38, "scale": 3e38)"), "object 0: fit: the transform with the model's bounds overflows a float"},
+        // JSON's own overflow: the number is not even a double. The file is named.
+        {"overflow", obj(R"(, "translate": [1e400, 0, 0])"), "overflow.json: JSON number overflow parsing '1e400'"},
+        {"deep", std::string(1000, '[') + std::string(1000, ']'), "deep.json: JSON nested deeper than 16 levels"},
         {"missingmodel", R"({"objects": [{"model": ")" + model + R"("}, {"model": "nowhere.glb"}]})",
          "missingmodel.json: object 1: "},
     };
@@ -168,8 +198,8 @@ TEST_CASE("scene description: errors name the file and the problem") {
         CHECK(error.find('\n') == std::string::npos);
     }
     std::string missing = descriptionError(tempDir() / "missingmodel.json");
-    CHECK(missing.find("nowhere.glb: file not found") != std::string::npos);
-    CHECK(descriptionError(tempDir() / "absent.json").find("absent.json: file not found") != std::string::npos);
+    CHECK(missing.find("nowhere.glb: no such file") != std::string::npos);
+    CHECK(descriptionError(tempDir() / "absent.json").find("absent.json: no such file") != std::string::npos);
 
     // A model that fails to load: the loader's own message follows the object number.
     GltfBuilder b;

@@ -68,13 +68,27 @@ TEST_CASE("animation path: malformed lines name file and line") {
     CHECK(errorOf("d.path", ok + "0.1 0 0 0 0 0 0 2\n").rfind(tempPath("d.path") + ":2: quaternion is not unit", 0) == 0);
     CHECK(errorOf("e.path", "1 0 0 0 0 0 0 1\n0.5 0 0 0 0 0 0 1\n").rfind(tempPath("e.path") + ":2: time", 0) == 0);
     CHECK(errorOf("f.path", ok + "0.1 0 0 nan 0 0 0 1\n") == tempPath("f.path") + ":2: field 4 is not finite");
+    // A position beyond float range turns every error figure into inf: refused, with its value.
+    CHECK(errorOf("h.path", ok + "0.1 0 1e300 0 0 0 0 1\n") == tempPath("h.path") + ":2: position 1e+300 does not fit a float");
+    // A 10 MB token is quoted cut; UTF-16 is named as such.
+    CHECK(errorOf("i.path", ok + "0.1 " + std::string(10 << 20, 'z') + " 0 0 0 0 0 1\n") ==
+          tempPath("i.path") + ":2: field 2 `" + std::string(40, 'z') + "...` is not a number");
+    // A line of a million one-character fields is counted, not split into a million strings.
+    std::string many;
+    for (int i = 0; i < 1000000; ++i) many += "1 ";
+    CHECK(errorOf("l.path", many + "\n") == tempPath("l.path") + ":1: expected 8 fields `time px py pz qx qy qz qw`, found 1000000");
+    CHECK(errorOf("m.csv", std::string(2000, ',') + "\n") == tempPath("m.csv") + ":1: header has 2001 columns, more than 1024");
+    CHECK(errorOf("j.path", std::string("\xff\xfe" "0\0 \0", 6)) == tempPath("j.path") + ":1: NUL byte: not a text file (UTF-16?)");
+    CHECK(errorOf("k.csv", "Timestamp,UnitQuaternion.x,UnitQuaternion.y,UnitQuaternion.z,UnitQuaternion.w,HmdPosition.x,"
+                           "HmdPosition.y,HmdPosition.z\n0,0,0,0,1,0,1e300,0\n") ==
+          tempPath("k.csv") + ":2: position 1e+300 does not fit a float");
     // One line, no newline inside: the message is printable as is.
     CHECK(errorOf("g.path", "x\n").find('\n') == std::string::npos);
     try {
         (void)readTrace(tempPath("does-not-exist.path"));
         FAIL("no error");
     } catch (const strata::TraceError& e) {
-        CHECK(std::string(e.what()).find("does-not-exist.path:0: cannot open") != std::string::npos);
+        CHECK(std::string(e.what()) == tempPath("does-not-exist.path") + ": no such file");
     }
 }
 

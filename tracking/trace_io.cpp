@@ -1,16 +1,22 @@
 #include "tracking/trace_io.hpp"
 
+#include "io/bounded_read.hpp"
+#include "io/printable.hpp"
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
+#include <limits>
 #include <map>
 #include <vector>
 
 namespace strata {
 
+// The file name is quoted like any other input: a message stays one short, printable line.
 TraceError::TraceError(const std::string& file, int line, const std::string& what)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + what), file_(file), line_(line) {}
+    : std::runtime_error(printable(file, 120) + ":" + std::to_string(line) + ": " + what), file_(file), line_(line) {}
 
 }  // namespace strata
 
@@ -47,6 +53,22 @@ std::vector<std::string> splitWhitespace(const std::string& line) {
     return out;
 }
 
+// Counted before splitting, so that a line of millions of one-character fields is refused
+// without becoming millions of strings (a 64 MiB trace could otherwise take a gigabyte).
+std::size_t countWhitespaceFields(const std::string& line) {
+    std::size_t n = 0;
+    bool inField = false;
+    for (char c : line) {
+        const bool space = c == ' ' || c == '\t' || c == '\r';
+        if (!space && !inField) ++n;
+        inField = !space;
+    }
+    return n;
+}
+
+// A header names the dataset's nine columns and perhaps a few more; far more is not a trace.
+constexpr std::size_t kMaxCsvColumns = 1024;
+
 std::vector<std::string> splitComma(const std::string& line) {
     std::vector<std::string> out;
     std::size_t start = 0;
@@ -68,6 +90,23 @@ Eigen::Quaterniond checkedQuaternion(double x, double y, double z, double w, con
         throw TraceError(name, line, "quaternion is not unit (norm " + std::to_string(n) + ")");
     q.coeffs() /= n;
     return q;
+}
+
+// A NUL byte (a UTF-16 or binary file) is neither a separator nor part of a number: name it
+// rather than report a puzzling field.
+void checkText(const std::string& line, const std::string& name, int lineNo) {
+    if (line.find('\0') != std::string::npos) throw TraceError(name, lineNo, "NUL byte: not a text file (UTF-16?)");
+}
+
+// Positions are metres that the renderer and the metrics square and convert to float; a value
+// beyond float range (1e300) would turn every error figure into inf.
+void checkFloatRange(const double* v, int n, const std::string& name, int lineNo) {
+    for (int i = 0; i < n; ++i)
+        if (!(std::abs(v[i]) <= double(std::numeric_limits<float>::max()))) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%g", v[i]);
+            throw TraceError(name, lineNo, std::string("position ") + text + " does not fit a float");
+        }
 }
 
 void checkTimeOrder(double t, double previousT, const std::string& name, int line) {
@@ -110,21 +149,23 @@ Trace parseAnimationPath(std::istream& in, const std::string& name) {
     double previousT = std::nan("");
     while (std::getline(in, raw)) {
         ++lineNo;
+        checkText(raw, name, lineNo);
         const auto hash = raw.find('#');
         const std::string line = hash == std::string::npos ? raw : raw.substr(0, hash);
+        const std::size_t count = countWhitespaceFields(line);
+        if (count == 0) continue;
+        if (count != 8)
+            throw TraceError(name, lineNo, "expected 8 fields `time px py pz qx qy qz qw`, found " + std::to_string(count));
         const auto tokens = splitWhitespace(line);
-        if (tokens.empty()) continue;
-        if (tokens.size() != 8)
-            throw TraceError(name, lineNo,
-                             "expected 8 fields `time px py pz qx qy qz qw`, found " + std::to_string(tokens.size()));
         double v[8];
         for (int i = 0; i < 8; ++i) {
             if (!parseDouble(tokens[std::size_t(i)], v[i]))
-                throw TraceError(name, lineNo, "field " + std::to_string(i + 1) + " `" + tokens[std::size_t(i)] +
-                                                   "` is not a number");
+                throw TraceError(name, lineNo, "field " + std::to_string(i + 1) + " `" +
+                                                   printable(tokens[std::size_t(i)], 40) + "` is not a number");
             if (!std::isfinite(v[i]))
                 throw TraceError(name, lineNo, "field " + std::to_string(i + 1) + " is not finite");
         }
+        checkFloatRange(v + 1, 3, name, lineNo);
         checkTimeOrder(v[0], previousT, name, lineNo);
         previousT = v[0];
         trace.push_back(PoseSample{v[0], Eigen::Vector3d(v[1], v[2], v[3]),
@@ -134,9 +175,21 @@ Trace parseAnimationPath(std::istream& in, const std::string& name) {
     return trace;
 }
 
+namespace {
+
+// The whole trace file, within kTraceLimit (io/bounded_read.hpp), as a stream for the parsers.
+std::istringstream openTrace(const std::string& path) {
+    try {
+        return std::istringstream(readBoundedFile(path, kTraceLimit));
+    } catch (const ReadError& e) {
+        throw TraceError(e.what());
+    }
+}
+
+}  // namespace
+
 Trace readAnimationPath(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw TraceError(path, 0, "cannot open trace file");
+    std::istringstream f = openTrace(path);
     return parseAnimationPath(f, path);
 }
 
@@ -178,11 +231,19 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
     double firstT = 0.0, previousT = std::nan("");
     while (std::getline(in, raw)) {
         ++lineNo;
+        checkText(raw, name, lineNo);
         std::string line = trim(raw);
         // A UTF-8 byte-order mark before the header: .NET's StreamWriter (Unity's logger) writes
         // one by default, and it would otherwise become part of the first column's name.
         if (!haveHeader && line.rfind("\xEF\xBB\xBF", 0) == 0) line = trim(line.substr(3));
         if (line.empty()) continue;
+        const std::size_t count = std::size_t(std::count(line.begin(), line.end(), ',')) + 1;
+        if (!haveHeader && count > kMaxCsvColumns)
+            throw TraceError(name, lineNo, "header has " + std::to_string(count) + " columns, more than " +
+                                               std::to_string(kMaxCsvColumns));
+        if (haveHeader && count != columnCount)
+            throw TraceError(name, lineNo, "expected " + std::to_string(columnCount) + " comma-separated fields, found " +
+                                               std::to_string(count));
         const auto fields = splitComma(line);
         if (!haveHeader) {
             std::map<std::string, std::size_t> byName;
@@ -197,19 +258,18 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
             haveHeader = true;
             continue;
         }
-        if (fields.size() != columnCount)
-            throw TraceError(name, lineNo, "expected " + std::to_string(columnCount) + " comma-separated fields, found " +
-                                               std::to_string(fields.size()));
         double t = 0.0;
         const std::string& ts = fields[index[0]];
         if (!parseDouble(ts, t) && !parseDateTimeSeconds(ts, t))
-            throw TraceError(name, lineNo, "Timestamp `" + ts + "` is neither seconds nor YYYY-MM-DD HH:MM:SS.fff");
+            throw TraceError(name, lineNo, "Timestamp `" + printable(ts, 40) + "` is neither seconds nor YYYY-MM-DD HH:MM:SS.fff");
         double v[7];
         for (int c = 1; c < 8; ++c) {
             const std::string& f = fields[index[c]];
             if (!parseDouble(f, v[c - 1]) || !std::isfinite(v[c - 1]))
-                throw TraceError(name, lineNo, std::string(kColumns[c]) + " `" + f + "` is not a finite number");
+                throw TraceError(name, lineNo, std::string(kColumns[c]) + " `" + printable(f, 40) + "` is not a finite number");
         }
+        checkFloatRange(v + 4, 3, name, lineNo);
+        if (!std::isfinite(t)) throw TraceError(name, lineNo, "Timestamp is not finite");
         if (trace.empty()) firstT = t;
         t -= firstT;
         checkTimeOrder(t, previousT, name, lineNo);
@@ -224,8 +284,7 @@ Trace parseHeadMovementCsv(std::istream& in, const std::string& name) {
 }
 
 Trace readHeadMovementCsv(const std::string& path) {
-    std::ifstream f(path);
-    if (!f) throw TraceError(path, 0, "cannot open trace file");
+    std::istringstream f = openTrace(path);
     return parseHeadMovementCsv(f, path);
 }
 

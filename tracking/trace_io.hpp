@@ -18,6 +18,10 @@
 // +Z forward); samples are converted to this project's right-handed, -Z-forward frame by
 // mirroring Z: p = (x, y, -z), q = (-qx, -qy, qz, qw).
 //
+// Files are read through readBoundedFile (io/bounded_read.hpp): a regular file of at most
+// kTraceLimit bytes, else `file: problem` naming the limit and the size. A NUL byte (UTF-16) and
+// a position beyond float range are errors of their line.
+//
 // Every failure throws strata::TraceError whose what() is one line: `file:line: problem`.
 #include "tracking/pose.hpp"
 

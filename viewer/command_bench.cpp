@@ -4,7 +4,9 @@
 
 #include "bench/bench.hpp"
 #include "gl/context.hpp"
+#include "image/image.hpp"
 #include "io/atomic_file.hpp"
+#include "render/frame_size.hpp"
 #include "settings_options.hpp"
 
 #include <cstdio>
@@ -49,20 +51,26 @@ void run(const BenchArgs& a) {
     // Settings are checked against every mode before the scene loads or a frame renders.
     options.settings = resolveSettingsArgs(benchModeIds(options.modes), a.settings);
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
-    if (!a.images.empty()) {
-        std::filesystem::create_directories(a.images);
-        options.imagesDir = a.images;
-    }
+    if (!a.images.empty()) checkFolderCreatable(a.images);
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
     Scene scene = openSceneAndWarn(a.scene);
     gl::HeadlessContext context;
+    checkFrameSize(options.size);
     GpuScene gpu(std::move(scene));
+    // Every output (images as they are rendered, then JSON and CSV) appears only once the whole
+    // run succeeded; the images folder is made last, after every input was checked.
+    OutputBatch outputs;
+    if (!a.images.empty()) {
+        outputs.createFolder(a.images);
+        options.firstFrame = [&](const std::string& id, const Image& frame) {
+            writeImage(outputs, std::filesystem::path(a.images) / (id + ".png"), frame);
+        };
+    }
     BenchReport report = runBench(gpu, options);
-    // Everything is computed before anything is written: no half-written outputs on failure.
-    std::string json = benchToJson(report).dump(2) + "\n";
-    if (!a.json.empty()) writeTextFile(a.json, json);
-    if (!a.csv.empty()) writeTextFile(a.csv, benchToCsv(report));
+    if (!a.json.empty()) outputs.addText(a.json, benchToJson(report).dump(2) + "\n");
+    if (!a.csv.empty()) outputs.addText(a.csv, benchToCsv(report));
+    outputs.commit();
     std::cout << benchToTable(report);
 }
 

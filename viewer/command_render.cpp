@@ -9,6 +9,7 @@
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
 #include "render/coplanarity.hpp"
+#include "render/frame_size.hpp"
 #include "frame/frame_renderer.hpp"
 #include "settings_options.hpp"
 
@@ -34,10 +35,11 @@ void run(const RenderArgs& a) {
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
     const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
     // Images are written after the frame: refuse an unwritable destination before rendering.
-    checkWritable(a.out);
-    if (!a.heatmap.empty()) checkWritable(a.heatmap);
+    checkImageWritable(a.out);
+    if (!a.heatmap.empty()) checkImageWritable(a.heatmap);
     Scene scene = openSceneAndWarn(a.scene);
     gl::HeadlessContext context;
+    checkFrameSize(size);  // before the scene is uploaded or a target allocated
     GpuScene gpu(std::move(scene));
     auto technique = createConfiguredTechnique(a.mode, settings);
     Camera camera = defaultCamera(gpu.scene(), gpu.objects());
@@ -59,8 +61,11 @@ void run(const RenderArgs& a) {
         heat = coplanarityHeatmap(renderer.coplanarity()->readPixels().largestLayer, size.x, size.y);
         gl::checkGl("coplanarity read back");
     }
-    writeImage(a.out, image);
-    if (!a.heatmap.empty()) writeImage(a.heatmap, heat);
+    // The image and its heatmap appear together or not at all.
+    OutputBatch outputs;
+    writeImage(outputs, a.out, image);
+    if (!a.heatmap.empty()) writeImage(outputs, a.heatmap, heat);
+    outputs.commit();
     const auto& s = result.stats;
     std::printf("%s: %s %dx%d, %.3f ms GPU (%d passes), %llu of %llu fragments%s\n", a.out.c_str(), a.mode.c_str(),
                 size.x, size.y, result.gpuMs, s.passes, (unsigned long long)s.fragmentsCaptured,
@@ -92,8 +97,9 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("scene", args->scene, "builtin:NAME[:ARG], a .gltf/.glb, a .json description, or a scenes/ name")->required();
     cmd->add_option("--mode", args->mode, "technique id (see `strata modes`)")->capture_default_str();
     cmd->add_option("--size", args->size, "WxH")->capture_default_str();
-    cmd->add_option("--camera-path", args->cameraPath, "camera path file (time px py pz qx qy qz qw)");
-    cmd->add_option("--time", args->time, "time on the camera path, seconds");
+    auto* path = cmd->add_option("--camera-path", args->cameraPath, "camera path file (time px py pz qx qy qz qw)");
+    // A time without a path would be ignored: refused instead.
+    cmd->add_option("--time", args->time, "time on the camera path, seconds")->needs(path);
     cmd->add_option("--out", args->out, "output image (.png sRGB 8-bit or .exr linear half)")->required();
     cmd->add_option("--heatmap", args->heatmap, "coplanarity heatmap image: per pixel the largest number of fragments in one depth layer, "
                    "in Fig. 13's colours (GPU detector); prints C_p");

@@ -2,6 +2,7 @@
 // image deflection, and reports the viewing error each combination leaves and what an update
 // costs. No GL: everything here runs on the CPU (tracking/ library).
 #include "io/atomic_file.hpp"
+#include "io/printable.hpp"
 #include "tracking/activity_motion.hpp"
 #include "tracking/kalman.hpp"
 #include "tracking/predictor.hpp"
@@ -13,7 +14,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -79,6 +82,56 @@ Intrinsics parseIntrinsics(const std::string& size, double fovDeg) {
     return Intrinsics::fromFov(w, h, fovDeg);
 }
 
+// Bounds on what the numbers on the command line may ask for, checked before anything is
+// generated or allocated: memory and time grow with the frames scored and the samples made.
+constexpr double kMaxSyntheticSeconds = 600.0;  // 600k truth samples at 1000 Hz, ~40 MB
+constexpr double kMaxDisplayHz = 1000.0;
+constexpr double kMaxLatencyMs = 1000.0;
+constexpr double kMaxFramesScored = 1e6;        // ~200 MB of frame poses per predictor
+
+// A finite number in [low, high] (low excluded when `open`), checked on the option's text while
+// the command line is parsed, so the message names the option (CLI11's PositiveNumber lets NaN
+// through: every comparison with it is false).
+CLI::Validator finiteIn(double low, double high, bool open, const char* unit) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            const bool number = !text.empty() && end == text.c_str() + text.size();
+            if (number && std::isfinite(v) && (open ? v > low : v >= low) && v <= high) return {};
+            char message[160];
+            std::snprintf(message, sizeof message, "must be a number in %s%g, %g] %s, got ", open ? "(" : "[", low,
+                          high, unit);
+            return message + printable(text, 40);
+        },
+        "");
+}
+
+// A trace is scored from warm-up to its end at the display rate: a trace whose samples lie far
+// apart (two samples 1e6 s apart) would ask for billions of frames. Checked before scoring.
+void checkScoredSpan(const std::string& source, const Trace& measured, const Trace& truth, double displayHz) {
+    const double span = std::min(measured.back().t, truth.back().t) - std::max(measured.front().t, truth.front().t);
+    if (!(span * displayHz <= kMaxFramesScored)) {
+        char text[200];
+        std::snprintf(text, sizeof text, ": spans %g s, %g frames at %g Hz; at most %g frames are scored "
+                      "(use a shorter trace or a lower --display-hz)", span, span * displayHz, displayHz, kMaxFramesScored);
+        throw std::runtime_error(printable(source, 120) + text);
+    }
+}
+
+// A trace that gives no motion to score: fewer than two samples, or all at one time. `file`
+// is the one named: the truth trace is checked on its own, not blamed on the measured one.
+void checkHasSpan(const std::string& file, const Trace& trace) {
+    if (trace.size() < 2)
+        throw std::runtime_error(printable(file, 120) + ": needs at least 2 samples, has " + std::to_string(trace.size()));
+    if (!(trace.back().t > trace.front().t)) {
+        char text[100];
+        std::snprintf(text, sizeof text, ": all %zu samples are at time %g; a trace must span some time", trace.size(),
+                      trace.front().t);
+        throw std::runtime_error(printable(file, 120) + text);
+    }
+}
+
 struct Row {
     std::string predictor;
     Deflect deflect;
@@ -136,9 +189,9 @@ std::string sweepCsv(const std::vector<std::unique_ptr<Predictor>>& predictors, 
 }
 
 void runTrack(const TrackOptions& o) {
-    if (o.trace.empty() == (o.synthetic <= 0.0))
+    const bool synthetic = o.synthetic > 0.0;  // 0: not given (the option's check refuses 0 given)
+    if (o.trace.empty() == !synthetic)
         throw std::runtime_error("track: give exactly one of --trace FILE or --synthetic SECONDS");
-    if (o.latencyMs < 0.0 || o.rereadMs < 0.0) throw std::runtime_error("track: latency and reread must be >= 0");
     const Intrinsics k = parseIntrinsics(o.size, o.fovDeg);
     // Outputs are written last; a folder that is not there is noticed before the work.
     for (const std::string& out : {o.json, o.sweepCsv})
@@ -147,9 +200,11 @@ void runTrack(const TrackOptions& o) {
     auto predictors = selectPredictors(o.predictors);
     const auto deflects = selectDeflects(o.deflects);
 
+    // Every file (the traces written, the JSON, the CSV) appears only if the whole run succeeds.
+    OutputBatch outputs;
     Trace measured, truth;
     std::string source, truthSource;
-    if (o.synthetic > 0.0 && o.motion != "seated") {
+    if (synthetic && o.motion != "seated") {
         ActivityParams params;
         try {
             params.activity = parseActivity(o.motion);
@@ -164,12 +219,13 @@ void runTrack(const TrackOptions& o) {
         source = ActivityModel(params).describe();
         truthSource = "the noise-free model sampled at 1000 Hz";
         if (!o.writeTraces.empty()) {
-            writeTextFile(o.writeTraces + "-measured.path", formatAnimationPath(measured, "measured (noisy) trace; " + source));
+            outputs.addText(o.writeTraces + "-measured.path",
+                            formatAnimationPath(measured, "measured (noisy) trace; " + source));
             Trace truth240;
             for (double t = 0.0; t <= params.duration + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
-            writeTextFile(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
+            outputs.addText(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
         }
-    } else if (o.synthetic > 0.0) {
+    } else if (synthetic) {
         HeadMotionParams params;
         params.duration = o.synthetic;
         params.seed = o.seed;
@@ -179,26 +235,27 @@ void runTrack(const TrackOptions& o) {
         source = HeadMotionModel(params).describe();
         truthSource = "the noise-free model sampled at 1000 Hz";
         if (!o.writeTraces.empty()) {
-            writeTextFile(o.writeTraces + "-measured.path",
+            outputs.addText(o.writeTraces + "-measured.path",
                           formatAnimationPath(measured, "measured (noisy) trace; " + source));
             // Truth at 240 Hz keeps the shipped file small; slerp between samples 4 ms apart is
             // within 0.01 deg of the model on min-jerk turns.
             Trace truth240;
             for (double t = 0.0; t <= params.duration + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
-            writeTextFile(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
+            outputs.addText(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
         }
     } else {
         measured = readTrace(o.trace);
-        if (measured.size() < 2) throw std::runtime_error(o.trace + ": needs at least 2 samples");
+        checkHasSpan(o.trace, measured);
         source = o.trace;
         if (o.truth.empty()) {
             truth = measured;
             truthSource = "NONE GIVEN: the measured trace is used as truth (its noise counts as error)";
         } else {
             truth = readTrace(o.truth);
-            if (truth.empty()) throw std::runtime_error(o.truth + ": trace is empty");
+            checkHasSpan(o.truth, truth);
             truthSource = o.truth;
         }
+        checkScoredSpan(o.trace, measured, truth, o.displayHz);
     }
 
     TwoStepConfig config;
@@ -218,8 +275,12 @@ void runTrack(const TrackOptions& o) {
     for (const auto& p : predictors) {
         if (auto a = adaptedNoise(*p, measured)) adapted.push_back(*a);
         const auto frames = simulateTwoStep(*p, measured, truth, config);
-        if (frames.empty())
-            throw std::runtime_error(source + ": trace too short to score any frame (warm-up 0.5 s plus latency)");
+        if (frames.empty()) {
+            // The truth names itself when it is what ends before the first scored frame.
+            const bool truthShort = !o.truth.empty() && truth.back().t - truth.front().t < measured.back().t - measured.front().t;
+            throw std::runtime_error(printable(truthShort ? o.truth : source, 120) +
+                                     ": too short to score any frame (warm-up 0.5 s plus latency)");
+        }
         const double ns = measureUpdateNs(*p, measured);
         for (Deflect d : deflects) rows.push_back(Row{std::string(p->name()), d, summarize(frames, d, k), ns});
     }
@@ -267,9 +328,10 @@ void runTrack(const TrackOptions& o) {
                                     {"orientation_scale_median", a.scaleMedian},
                                     {"orientation_scale_p95", a.scaleP95},
                                     {"orientation_nis", a.last.orientationNis}});
-        writeTextFile(o.json, j.dump(2) + "\n");
+        outputs.addText(o.json, j.dump(2) + "\n");
     }
-    if (!o.sweepCsv.empty()) writeTextFile(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
+    if (!o.sweepCsv.empty()) outputs.addText(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
+    outputs.commit();
 }
 
 }  // namespace
@@ -283,21 +345,33 @@ void registerTrackCommand(CLI::App& app) {
                                   "measured trace: animation path (time px py pz qx qy qz qw) or Wu et al. CSV");
     sub->add_option("--truth", opts->truth, "truth trace (default: the measured trace itself)")->needs(trace);
     auto* synthetic = sub->add_option("--synthetic", opts->synthetic,
-                                      "generate SECONDS of synthetic head motion instead of reading a trace");
+                                      "generate SECONDS of synthetic head motion instead of reading a trace")
+                          ->check(finiteIn(0.0, kMaxSyntheticSeconds, true, "s"));
     trace->excludes(synthetic);
-    sub->add_option("--seed", opts->seed, "seed of the synthetic head motion")->capture_default_str();
+    // CLI11 reads "-1" into an unsigned seed as 2^64-1; a seed is refused rather than wrapped.
+    sub->add_option("--seed", opts->seed, "seed of the synthetic head motion")
+        ->capture_default_str()
+        ->needs(synthetic)
+        ->check([](const std::string& text) {
+            return text.find('-') == std::string::npos ? std::string() : "must be a non-negative integer, got " + text;
+        });
     sub->add_option("--motion", opts->motion,
                     "with --synthetic: seated (turns, sway, tremor; IMU-like 120 Hz sensor), walk or scan "
                     "(tracking/activity_motion.hpp; camera-like 90 Hz sensor)")
         ->capture_default_str()
         ->needs(synthetic);
     sub->add_option("--write-traces", opts->writeTraces,
-                    "with --synthetic: also write PREFIX-measured.path and PREFIX-truth.path (240 Hz)");
-    sub->add_option("--latency-ms", opts->latencyMs, "frame start to display")->capture_default_str();
-    sub->add_option("--reread-ms", opts->rereadMs, "second tracker read before display")->capture_default_str();
+                    "with --synthetic: also write PREFIX-measured.path and PREFIX-truth.path (240 Hz)")
+        ->needs(synthetic);
+    sub->add_option("--latency-ms", opts->latencyMs, "frame start to display")
+        ->capture_default_str()
+        ->check(finiteIn(0.0, kMaxLatencyMs, false, "ms"));
+    sub->add_option("--reread-ms", opts->rereadMs, "second tracker read before display")
+        ->capture_default_str()
+        ->check(finiteIn(0.0, kMaxLatencyMs, false, "ms"));
     sub->add_option("--display-hz", opts->displayHz, "frames scored per second")
         ->capture_default_str()
-        ->check(CLI::PositiveNumber);
+        ->check(finiteIn(0.0, kMaxDisplayHz, true, "Hz"));
     sub->add_option("--predictor", opts->predictors, "none,cv,desp,kalman (adaptive),kalman-fixed,kalman-cv or all")->capture_default_str();
     sub->add_option("--deflect", opts->deflects, "none,shift,homography or all")->capture_default_str();
     sub->add_option("--size", opts->size, "view size for the deflection (WIDTHxHEIGHT)")->capture_default_str();

@@ -27,17 +27,21 @@ void registerViewCommand(CLI::App& app) {
     addSettingsOptions(cmd, *settings);
     cmd->add_option("--path", *play, "play this camera path");
     cmd->add_option("--record", *record, "record the camera to this path file (R toggles)");
-    cmd->add_flag("--immersive", options->immersive, "head-tracked mode driven by --trace");
+    // Options that only act with another are refused without it rather than ignored.
+    auto* immersive = cmd->add_flag("--immersive", options->immersive, "head-tracked mode driven by --trace");
     cmd->add_option("--trace", *trace, "head-pose trace for --immersive");
     cmd->add_option("--predictor", options->predictor, "immersive: none, cv, desp, kalman (adaptive), kalman-fixed, kalman-cv")
-        ->capture_default_str();
-    cmd->add_option("--deflect", options->deflect, "immersive: none, shift, homography")->capture_default_str();
-    cmd->add_flag("--stereo", options->stereo, "immersive: side-by-side stereo");
-    cmd->add_option("--ipd", options->ipdMm, "immersive: interpupillary distance, mm")->capture_default_str();
+        ->capture_default_str()
+        ->needs(immersive);
+    cmd->add_option("--deflect", options->deflect, "immersive: none, shift, homography")->capture_default_str()->needs(immersive);
+    cmd->add_flag("--stereo", options->stereo, "immersive: side-by-side stereo")->needs(immersive);
+    cmd->add_option("--ipd", options->ipdMm, "immersive: interpupillary distance, mm")->capture_default_str()->needs(immersive);
     cmd->add_option("--extra-latency", options->extraLatencyMs, "immersive: ms added to the measured frame time")
-        ->capture_default_str();
-    cmd->add_option("--exit-after-frames", options->exitAfterFrames, "render N frames, then exit (smoke tests)");
-    cmd->add_option("--screenshot", *screenshot, "with --exit-after-frames: save the window here (.png)");
+        ->capture_default_str()
+        ->needs(immersive);
+    auto* exitAfter =
+        cmd->add_option("--exit-after-frames", options->exitAfterFrames, "render N frames, then exit (smoke tests)");
+    cmd->add_option("--screenshot", *screenshot, "with --exit-after-frames: save the window here (.png)")->needs(exitAfter);
     cmd->add_option("--size", *size, "window size WxH")->capture_default_str();
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);

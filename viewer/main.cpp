@@ -1,17 +1,21 @@
 // strata: the command line. Errors are caught here, once, and printed as one line.
 #include "commands.hpp"
 
+#include "io/printable.hpp"
+
 #include <cstdio>
 #include <exception>
 #include <string>
 
 namespace {
 
-// CLI11 messages are one line today, but the contract must not depend on that.
+// The last guard of the message contract (one line, printable, short), whatever a library or
+// a path put in the text: line breaks become spaces, other control bytes and non-UTF-8 are
+// escaped, and an overlong message keeps its head and tail. Loaders cut quoted input themselves.
 std::string oneLine(std::string text) {
     for (char& c : text)
         if (c == '\n' || c == '\r') c = ' ';
-    return text;
+    return strata::printableMessage(text);
 }
 
 // "strata bench" when the rejection came while parsing a subcommand's arguments, else "strata".

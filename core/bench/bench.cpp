@@ -179,10 +179,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 reference.image = std::move(image);
                 reference.key = keyOf(f);
                 if (options.referenceFrame && id == "abuffer") options.referenceFrame(f, reference.image);
-                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), reference.image);
+                if (f == 0 && options.firstFrame) options.firstFrame(id, reference.image);
             } else {
                 error.add(image, reference.image);
-                if (f == 0 && options.imagesDir) writeImage(*options.imagesDir / (id + ".png"), image);
+                if (f == 0 && options.firstFrame) options.firstFrame(id, image);
             }
         }
         // A fixed camera needs no more reference renders: free the reference's buffers now.

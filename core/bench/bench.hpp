@@ -30,7 +30,9 @@ struct BenchOptions {
     int warmupFrames = 2;
     std::optional<CameraPath> cameraPath;   // else the scene's default camera, fixed
     SettingsById settings;                  // from resolveSettings(benchModeIds(modes), ...); defaults where absent
-    std::optional<std::filesystem::path> imagesDir;  // first frame of each mode as PNG
+    // Sees the first frame of each mode (the reference's too) with its id, e.g. to save it; may
+    // be empty. The bench itself writes no files.
+    std::function<void(const std::string& id, const Image& frame)> firstFrame;
     std::function<void(const std::string&)> progress;  // one line per step, may be empty
     // Sees every reference frame the techniques are compared against, with its frame index, as
     // soon as it is read back; may be empty. The reference is what every error figure rests on,

@@ -1,6 +1,8 @@
 #include "camera/camera_path.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/bounded_read.hpp"
+#include "io/printable.hpp"
 #include "scene/load_error.hpp"
 
 #include <glm/gtc/constants.hpp>
@@ -9,7 +11,6 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -31,15 +32,18 @@ std::string shortest(T value) {
     return std::string(buf.data(), end);
 }
 
-std::vector<std::string_view> splitWhitespace(std::string_view line) {
+// At most `maxTokens` tokens are kept; `count` gets how many there are. A line of millions of
+// one-character tokens is counted, not stored.
+std::vector<std::string_view> splitWhitespace(std::string_view line, std::size_t maxTokens, std::size_t& count) {
     std::vector<std::string_view> tokens;
+    count = 0;
     std::size_t i = 0;
     auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
     while (i < line.size()) {
         while (i < line.size() && space(line[i])) ++i;
         std::size_t start = i;
         while (i < line.size() && !space(line[i])) ++i;
-        if (i > start) tokens.push_back(line.substr(start, i - start));
+        if (i > start && count++ < maxTokens) tokens.push_back(line.substr(start, i - start));
     }
     return tokens;
 }
@@ -74,31 +78,43 @@ glm::quat normalized(const glm::quat& q) {
 }  // namespace
 
 CameraPath CameraPath::read(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw LoadError(name + ": cannot open camera path");
+    std::string text;
+    try {
+        text = readBoundedFile(path, kCameraPathLimit);
+    } catch (const ReadError& e) {
+        throw LoadError(e.what());
+    }
+    return parse(text, path.string());
+}
+
+CameraPath CameraPath::parse(std::string_view text, const std::string& fileName) {
+    const std::string name = printable(fileName, 120);
     CameraPath out;
-    std::string line;
     int lineNumber = 0;
     auto fail = [&](const std::string& what) {
         throw LoadError(name + ":" + std::to_string(lineNumber) + ": " + what);
     };
-    while (std::getline(in, line)) {
+    while (!text.empty()) {
         ++lineNumber;
-        std::string_view view(line);
+        std::size_t newline = text.find('\n');
+        std::string_view view = text.substr(0, newline);
+        text = newline == std::string_view::npos ? std::string_view() : text.substr(newline + 1);
         if (auto hash = view.find('#'); hash != std::string_view::npos) view = view.substr(0, hash);
-        auto tokens = splitWhitespace(view);
-        if (tokens.empty()) continue;
-        if (tokens.size() != 8)
-            fail("expected 8 numbers (time px py pz qx qy qz qw), got " + std::to_string(tokens.size()));
+        // A NUL byte (a UTF-16 file, a binary file) is no separator and no number: say so rather
+        // than let it pass as part of a token or cut the message short.
+        if (view.find('\0') != std::string_view::npos) fail("NUL byte: not a text file (UTF-16?)");
+        std::size_t count = 0;
+        auto tokens = splitWhitespace(view, 8, count);
+        if (count == 0) continue;
+        if (count != 8) fail("expected 8 numbers (time px py pz qx qy qz qw), got " + std::to_string(count));
         std::array<double, 8> v{};
         for (std::size_t i = 0; i < 8; ++i) {
-            if (!parseNumber(tokens[i], v[i])) fail("'" + std::string(tokens[i]) + "' is not a number");
+            if (!parseNumber(tokens[i], v[i])) fail("'" + printable(tokens[i], 40) + "' is not a number");
             if (!std::isfinite(v[i])) fail("non-finite value");
         }
         // Float range is part of "finite": 1e300 metres would become inf on conversion.
         for (std::size_t i = 1; i < 8; ++i)
-            if (!std::isfinite(float(v[i]))) fail("non-finite value");
+            if (!std::isfinite(float(v[i]))) fail("value " + shortest(v[i]) + " does not fit a float");
         PathSample s;
         s.time = v[0];
         s.position = glm::vec3(float(v[1]), float(v[2]), float(v[3]));
@@ -107,7 +123,6 @@ CameraPath CameraPath::read(const std::filesystem::path& path) {
         s.orientation = normalized(s.orientation);
         out.samples_.push_back(s);
     }
-    if (in.bad()) throw LoadError(name + ": read error");
     if (out.samples_.empty()) throw LoadError(name + ": no samples");
     return out;
 }

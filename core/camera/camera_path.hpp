@@ -21,6 +21,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace strata {
@@ -34,7 +36,11 @@ struct PathSample {
 class CameraPath {
 public:
     // Throws LoadError (bad content, missing file) naming the file and, for content, the line.
+    // The file is read through readBoundedFile (io/bounded_read.hpp): a regular file of at most
+    // kCameraPathLimit bytes.
     static CameraPath read(const std::filesystem::path& path);
+    // The same from text already in memory; `fileName` names it in messages.
+    static CameraPath parse(std::string_view text, const std::string& fileName);
     // Writes every sample with round-trip precision through writeTextFile (io/atomic_file.hpp),
     // so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
     void write(const std::filesystem::path& path) const;

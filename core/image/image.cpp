@@ -78,11 +78,32 @@ double ErrorAccumulator::psnr() const {
     return e > 0.0 ? std::min(100.0, 20.0 * std::log10(1.0 / e)) : 100.0;
 }
 
-void writeImage(const fs::path& path, const Image& image) {
+namespace {
+
+void checkImageType(const fs::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (ext != ".png" && ext != ".exr")
         throw std::runtime_error(path.string() + ": unsupported image type (use .png or .exr)");
+}
+
+}  // namespace
+
+void checkImageWritable(const fs::path& path) {
+    checkWritable(path);
+    checkImageType(path);
+}
+
+void writeImage(const fs::path& path, const Image& image) {
+    OutputBatch batch;
+    writeImage(batch, path, image);
+    batch.commit();
+}
+
+void writeImage(OutputBatch& batch, const fs::path& path, const Image& image) {
+    checkImageType(path);
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
     if (image.width <= 0 || image.height <= 0) throw std::runtime_error(path.string() + ": empty image");
 
     // Top row first for the file; PNG holds sRGB-encoded 8-bit colour, EXR linear half floats.
@@ -100,7 +121,7 @@ void writeImage(const fs::path& path, const Image& image) {
         }
     }
 
-    writeFileAtomically(path, [&](const fs::path& temporary) {
+    batch.add(path, [&](const fs::path& temporary) {
         auto fail = [](const std::string& why) { throw std::runtime_error("cannot write image: " + why); };
         auto out = OIIO::ImageOutput::create(temporary.string());
         if (!out) fail(OIIO::geterror());
@@ -111,6 +132,13 @@ void writeImage(const fs::path& path, const Image& image) {
                       : out->write_image(OIIO::TypeDesc::FLOAT, pixels.data());
         if (!ok) fail(out->geterror());
         if (!out->close()) fail(out->geterror());
+        // OpenEXR's writer can report success although its last write failed (a full disk, a
+        // file-size limit: seen truncated at the limit with every call returning true), so the
+        // file is read back whole before it may take the destination's name.
+        auto in = OIIO::ImageInput::open(temporary.string());
+        std::vector<float> check(pixels.size());
+        if (!in || !in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, check.data()))
+            fail("the written file does not read back: " + (in ? in->geterror() : OIIO::geterror()));
     });
 }
 

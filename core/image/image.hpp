@@ -1,6 +1,8 @@
 #pragma once
 // A linear-RGB float image, bottom row first (OpenGL's convention), and what we do with it:
 // write PNG (sRGB-encoded 8 bit) or EXR (linear half), read, and compare.
+#include "io/atomic_file.hpp"
+
 #include <glm/glm.hpp>
 
 #include <filesystem>
@@ -60,6 +62,11 @@ private:
 // Writes .png (sRGB 8-bit) or .exr (linear half) through writeFileAtomically (io/atomic_file.hpp),
 // so a failure leaves nothing half-written. Throws std::runtime_error naming the file.
 void writeImage(const std::filesystem::path& path, const Image& image);
+// The same as one output of `batch`: the file appears when the batch commits.
+// Throws what writeImage would for `path` before any pixel exists: an unsupported extension, or
+// what checkWritable (io/atomic_file.hpp) finds. Commands call it before rendering.
+void checkImageWritable(const std::filesystem::path& path);
+void writeImage(OutputBatch& batch, const std::filesystem::path& path, const Image& image);
 Image readImage(const std::filesystem::path& path);  // .exr linear; .png decoded from sRGB
 
 float linearToSrgb(float v);

@@ -58,6 +58,18 @@ void syncToDisk(const fs::path& file) {
     if (rc != 0) throw std::runtime_error("cannot flush to disk: " + errnoText(error));
 }
 
+void writeBytes(const fs::path& file, std::string_view text) {
+    std::FILE* f = std::fopen(file.c_str(), "wb");
+    if (!f) throw std::runtime_error("cannot write: " + errnoText(errno));
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    int error = errno;
+    if (std::fclose(f) != 0 && ok) {
+        ok = false;
+        error = errno;
+    }
+    if (!ok) throw std::runtime_error("write failed: " + errnoText(error));
+}
+
 }  // namespace
 
 void checkWritable(const fs::path& path) {
@@ -66,7 +78,24 @@ void checkWritable(const fs::path& path) {
     if (::access(folder.c_str(), W_OK) != 0) throw failure(path, "cannot write in " + folder.string() + ": " + errnoText(errno));
 }
 
-void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
+void checkFolderCreatable(const fs::path& folder) {
+    std::error_code ec;
+    fs::path existing = folder;
+    while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+        existing = existing.parent_path();
+    if (existing.empty()) existing = ".";
+    if (!fs::is_directory(existing, ec))
+        throw failure(folder, existing == folder ? std::string("is not a folder") : existing.string() + " is not a folder");
+    // The folder itself when it exists (outputs go into it), else the part that exists.
+    if (::access(existing.c_str(), W_OK) != 0)
+        throw failure(folder, "cannot write in " + existing.string() + ": " + errnoText(errno));
+}
+
+namespace {
+
+// Writes `path`'s content to a fresh temporary beside it and flushes it; returns the temporary.
+// On failure the temporary is removed and "<path>: <what>" thrown.
+fs::path stage(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
     checkPlace(path);
     const fs::path temporary = temporaryName(path);
     // O_EXCL: the name is ours alone; an existing file of that name is never overwritten.
@@ -87,26 +116,64 @@ void writeFileAtomically(const fs::path& path, const std::function<void(const fs
         removeTemporary();
         throw;
     }
-    if (::rename(temporary.c_str(), path.c_str()) != 0) {
-        int error = errno;
-        removeTemporary();
-        // A folder or file put in the destination's place since checkPlace.
-        throw failure(path, error == EISDIR ? std::string("is a folder") : "cannot move into place: " + errnoText(error));
+    return temporary;
+}
+
+}  // namespace
+
+OutputBatch::~OutputBatch() {
+    if (committed_) return;
+    std::error_code ignored;
+    for (const Staged& s : staged_) fs::remove(s.temporary, ignored);
+    // Deepest first; fs::remove leaves a folder that holds anything it did not create.
+    for (auto f = createdFolders_.rbegin(); f != createdFolders_.rend(); ++f) fs::remove(*f, ignored);
+}
+
+void OutputBatch::createFolder(const fs::path& folder) {
+    std::vector<fs::path> missing;
+    std::error_code ec;
+    for (fs::path p = folder; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+        missing.push_back(p);
+        if (p == p.parent_path()) break;
     }
+    for (auto p = missing.rbegin(); p != missing.rend(); ++p) {
+        if (!fs::create_directory(*p, ec) && ec) throw failure(*p, "cannot create folder: " + ec.message());
+        createdFolders_.push_back(*p);
+    }
+    if (!fs::is_directory(folder, ec)) throw failure(folder, "is not a folder");
+}
+
+void OutputBatch::add(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
+    if (committed_) throw std::logic_error("OutputBatch::add after commit");
+    staged_.push_back({path, stage(path, write)});
+}
+
+void OutputBatch::addText(const fs::path& path, std::string_view text) {
+    add(path, [&](const fs::path& temporary) { writeBytes(temporary, text); });
+}
+
+void OutputBatch::commit() {
+    for (std::size_t i = 0; i < staged_.size(); ++i) {
+        if (::rename(staged_[i].temporary.c_str(), staged_[i].path.c_str()) != 0) {
+            int error = errno;
+            const fs::path path = staged_[i].path;
+            // Those renamed stay; the destructor removes the temporaries not yet renamed.
+            staged_.erase(staged_.begin(), staged_.begin() + std::ptrdiff_t(i));
+            // A folder or file put in the destination's place since checkPlace.
+            throw failure(path, error == EISDIR ? std::string("is a folder") : "cannot move into place: " + errnoText(error));
+        }
+    }
+    committed_ = true;
+}
+
+void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path& temporary)>& write) {
+    OutputBatch batch;
+    batch.add(path, write);
+    batch.commit();
 }
 
 void writeTextFile(const fs::path& path, std::string_view text) {
-    writeFileAtomically(path, [&](const fs::path& temporary) {
-        std::FILE* f = std::fopen(temporary.c_str(), "wb");
-        if (!f) throw std::runtime_error("cannot write: " + errnoText(errno));
-        bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-        int error = errno;
-        if (std::fclose(f) != 0 && ok) {
-            ok = false;
-            error = errno;
-        }
-        if (!ok) throw std::runtime_error("write failed: " + errnoText(error));
-    });
+    writeFileAtomically(path, [&](const fs::path& temporary) { writeBytes(temporary, text); });
 }
 
 }  // namespace strata

@@ -1,14 +1,13 @@
 #include "oit/technique_settings.hpp"
 
+#include "io/bounded_read.hpp"
+#include "io/printable.hpp"
 #include "oit/technique.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace strata {
@@ -113,23 +112,21 @@ std::vector<SettingAssignment> commandLineAssignments(const std::vector<std::str
 }
 
 std::vector<SettingAssignment> readSettingsPreset(const std::string& path) {
-    // A preset is a few lines; a limit keeps /dev/zero or a mistaken model file from being read whole.
-    constexpr std::uintmax_t kMaxBytes = 1 << 20;
-    auto fail = [&](const std::string& why) { throw std::invalid_argument(path + ": " + why); };
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail("not a readable regular file");
-    if (std::filesystem::file_size(path, ec) > kMaxBytes) fail("larger than 1 MiB; a settings preset is a small JSON object");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail("cannot open");
-    std::ostringstream text;
-    text << in.rdbuf();
+    auto fail = [&](const std::string& why) { throw std::invalid_argument(printable(path, 120) + ": " + why); };
+    // A preset is a few lines; the limit keeps /dev/zero or a mistaken model file from being read whole.
+    std::string text;
+    try {
+        text = readBoundedFile(path, kSettingsPresetLimit);
+    } catch (const ReadError& e) {
+        throw std::invalid_argument(e.what());
+    }
     nlohmann::ordered_json doc;
     try {
-        doc = nlohmann::ordered_json::parse(text.str());
+        doc = nlohmann::ordered_json::parse(text);
     } catch (const nlohmann::json::exception& e) {
         std::string what = e.what();
         auto bracket = what.find("] ");
-        fail(bracket == std::string::npos ? what : what.substr(bracket + 2));
+        fail(printable(bracket == std::string::npos ? what : what.substr(bracket + 2), 160));
     }
     if (!doc.is_object()) fail("expected a JSON object of \"[technique.]name\": value");
     std::vector<SettingAssignment> out;
@@ -141,7 +138,7 @@ std::vector<SettingAssignment> readSettingsPreset(const std::string& path) {
             char number[40];
             std::snprintf(number, sizeof number, "%.17g", value.get<double>());
             text = number;
-        } else fail("\"" + key + "\" is not a number or a boolean");
+        } else fail("\"" + printable(key, 40) + "\" is not a number or a boolean");
         out.push_back({key + "=" + text, path});
     }
     return out;

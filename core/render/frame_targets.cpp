@@ -1,15 +1,21 @@
 #include "render/frame_targets.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 namespace strata {
 namespace {
 
-void requireComplete(GLuint fbo, const char* what) {
+// The size is in the message: an incomplete framebuffer here is almost always a size the
+// driver could not allocate (checkFrameSize, frame_size.hpp, refuses most of those earlier).
+void requireComplete(GLuint fbo, const char* what, glm::ivec2 size) {
     GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error(std::string(what) + " framebuffer incomplete (status 0x" +
-                                 std::to_string(status) + ")");
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s framebuffer of %dx%d incomplete (status 0x%X)", what, size.x, size.y,
+                      unsigned(status));
+        throw std::runtime_error(text);
+    }
 }
 
 }  // namespace
@@ -26,11 +32,11 @@ void FrameTargets::resize(glm::ivec2 size) {
     opaqueFbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(opaqueFbo_.id(), GL_COLOR_ATTACHMENT0, opaqueColor_.id(), 0);
     glNamedFramebufferTexture(opaqueFbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    requireComplete(opaqueFbo_.id(), "opaque");
+    requireComplete(opaqueFbo_.id(), "opaque", size);
     outputFbo_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(outputFbo_.id(), GL_COLOR_ATTACHMENT0, outputColor_.id(), 0);
     glNamedFramebufferTexture(outputFbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
-    requireComplete(outputFbo_.id(), "output");
+    requireComplete(outputFbo_.id(), "output", size);
 }
 
 void FrameTargets::copyOpaqueToOutput() const {

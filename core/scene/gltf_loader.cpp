@@ -1,5 +1,7 @@
 #include "scene/gltf_loader.hpp"
 
+#include "io/bounded_read.hpp"
+#include "io/printable.hpp"
 #include "scene/gltf_ignored.hpp"
 #include "scene/gltf_schema.hpp"
 
@@ -15,7 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
+#include <cstdio>
 #include <limits>
 #include <new>
 #include <numeric>
@@ -46,12 +48,50 @@ std::string oneLine(const std::string& text) {
     return out;
 }
 
-// The message is printed on a terminal: control bytes from a corrupt file (nlohmann quotes
-// what it "last read") must not reach it.
-std::string printable(std::string text) {
-    for (char& c : text)
-        if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
-    return text;
+// tinygltf reads external buffers (and images) through these: every file a glTF names is
+// held to the same checks and limit as the glTF itself (a buffer URI of "." is a folder, not
+// "out of memory"; /dev/zero is a device, not 4 GB of zeros).
+bool fileExists(const std::string& path, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);
+}
+
+std::string expandPath(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    try {
+        std::string bytes = readBoundedFile(path, kGltfLimit);
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const ReadError& e) {
+        // tinygltf writes "File read error : <path> : " before this; keep only the cause.
+        std::string what = e.what(), named = printable(path, 120) + ": ";
+        if (err) *err = what.rfind(named, 0) == 0 ? what.substr(named.size()) : what;
+        return false;
+    }
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err = "the loader writes no files";
+    return false;
+}
+
+// A float from a glTF number: finite as a double is not enough (1e308 becomes inf as a float).
+float toFloat(double v, const std::string& what) {
+    if (!std::isfinite(v)) fail(what + " is not finite");
+    if (!std::isfinite(float(v))) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", v);
+        fail(what + " " + text + " does not fit a float");
+    }
+    return float(v);
+}
+
+bool finiteMatrix(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
 }
 
 // Textures are never used, so every image is accepted and dropped; this keeps missing or
@@ -359,10 +399,10 @@ struct Converter {
             if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
             else if (g.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
             else if (g.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
-            else fail(what + ": unknown alphaMode '" + g.alphaMode + "'");
+            else fail(what + ": unknown alphaMode '" + printable(g.alphaMode, 40) + "'");
             if (!std::isfinite(g.alphaCutoff) || g.alphaCutoff < 0.0)
                 fail(what + ": alphaCutoff must be a finite number >= 0");
-            m.alphaCutoff = float(g.alphaCutoff);
+            m.alphaCutoff = toFloat(g.alphaCutoff, what + ": alphaCutoff");
             m.doubleSided = g.doubleSided;
             // Albedo stays 0 (a purely absorbing or thin surface) unless the material declares a
             // volume; then the single-scattering albedo is taken from the base colour, the only
@@ -487,43 +527,63 @@ struct Converter {
     }
 
     glm::mat4 localTransform(const tinygltf::Node& n, const std::string& what) {
-        auto finite = [&](const std::vector<double>& v) {
-            for (double x : v)
-                if (!std::isfinite(x)) fail(what + ": non-finite transform");
+        // Each number is checked as the float it becomes, naming the property.
+        auto floats = [&](const std::vector<double>& v, const char* key, float* out) {
+            for (std::size_t i = 0; i < v.size(); ++i) out[i] = toFloat(v[i], what + ": " + key);
         };
         if (!n.matrix.empty()) {
             if (n.matrix.size() != 16) fail(what + ": matrix must have 16 numbers");
-            finite(n.matrix);
-            glm::mat4 m;
+            float m[16];
+            floats(n.matrix, "matrix", m);
+            glm::mat4 out;
             for (int c = 0; c < 4; ++c)
-                for (int r = 0; r < 4; ++r) m[c][r] = float(n.matrix[std::size_t(c * 4 + r)]);  // column major
-            return m;
+                for (int r = 0; r < 4; ++r) out[c][r] = m[c * 4 + r];  // column major
+            return out;
         }
         glm::vec3 t(0.0f), s(1.0f);
         glm::quat q(1.0f, 0.0f, 0.0f, 0.0f);
         if (!n.translation.empty()) {
             if (n.translation.size() != 3) fail(what + ": translation must have 3 numbers");
-            finite(n.translation);
-            t = glm::vec3(float(n.translation[0]), float(n.translation[1]), float(n.translation[2]));
+            floats(n.translation, "translation", &t.x);
         }
         if (!n.rotation.empty()) {
             if (n.rotation.size() != 4) fail(what + ": rotation must have 4 numbers");
-            finite(n.rotation);
-            // glTF stores x, y, z, w; glm's constructor takes w first.
-            q = glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
-            float len = glm::length(q);
-            if (!(len > 1e-6f)) fail(what + ": rotation is a zero quaternion");
+            float r[4];
+            floats(n.rotation, "rotation", r);
+            // glTF stores x, y, z, w; the length in double, as components near the float limit
+            // would overflow its square.
+            glm::dquat d(r[3], r[0], r[1], r[2]);
+            double len = std::sqrt(glm::dot(d, d));
+            if (!(len > 1e-6)) fail(what + ": rotation is a zero quaternion");
             // Beyond float round-off of a written unit quaternion (validator: ROTATION_NON_UNIT).
-            if (std::abs(len - 1.0f) > 1e-3f)
+            if (std::abs(len - 1.0) > 1e-3)
                 ignored.note("rotation not unit", "rotation is not a unit quaternion: normalized", what);
-            q = q / len;
+            q = glm::quat(d / len);
         }
         if (!n.scale.empty()) {
             if (n.scale.size() != 3) fail(what + ": scale must have 3 numbers");
-            finite(n.scale);
-            s = glm::vec3(float(n.scale[0]), float(n.scale[1]), float(n.scale[2]));
+            floats(n.scale, "scale", &s.x);
         }
-        return glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), s);
+        glm::mat4 m = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), s);
+        if (!finiteMatrix(m)) fail(what + ": translation, rotation and scale overflow a float together");
+        return m;
+    }
+
+    // Every node's world transform (its ancestors' times its own) must be finite in float: a
+    // chain of large scales overflows although each node's own transform is fine. Walked with
+    // an explicit stack over the checked forest.
+    void checkWorldTransforms() const {
+        std::vector<std::pair<int, glm::mat4>> stack;
+        for (int r : scene.roots) stack.push_back({r, glm::mat4(1.0f)});
+        while (!stack.empty()) {
+            auto [index, parentWorld] = stack.back();
+            stack.pop_back();
+            const Node& node = scene.nodes[std::size_t(index)];
+            glm::mat4 world = parentWorld * node.local;
+            if (!finiteMatrix(world))
+                fail("node " + str(index) + ": its transform times its ancestors' overflows a float");
+            for (int c : node.children) stack.push_back({c, world});
+        }
     }
 
     // The node graph must be a forest: every child index exists, no node has two parents and
@@ -617,29 +677,28 @@ struct Converter {
     }
 };
 
-tinygltf::Model parseFile(const std::filesystem::path& file, GltfLoadReport& report, detail::IgnoredLog& ignored) {
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) fail("file not found");
-    if (!std::filesystem::is_regular_file(file, ec)) fail("not a regular file");
+tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path& file, GltfLoadReport& report,
+                           detail::IgnoredLog& ignored) {
+    if (bytes.empty()) fail("empty file");
     // tinygltf replaces mistyped properties by defaults; refuse them instead (see gltf_schema.hpp).
-    if (std::string problem = detail::checkGltfSchema(file, &ignored); !problem.empty()) fail(problem);
+    if (std::string problem = detail::checkGltfSchema(bytes, &ignored); !problem.empty()) fail(problem);
     // The container is decided by the magic bytes, not the extension (.glb renamed .gltf happens).
-    char magic[4] = {0, 0, 0, 0};
-    {
-        std::ifstream in(file, std::ios::binary);
-        if (!in) fail("cannot open file");
-        in.read(magic, 4);
-    }
-    bool binary = std::memcmp(magic, "glTF", 4) == 0;
+    bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&ignoreImage, nullptr);
+    loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, nullptr});
     tinygltf::Model model;
     std::string err, warn;
-    bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
-                     : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
+    // Buffers and images are found beside the file, as tinygltf's own file loaders do.
+    const std::string baseDir = file.parent_path().string();
+    // The size fits an unsigned int: kGltfLimit is far below 4 GiB.
+    const auto size = static_cast<unsigned int>(bytes.size());
+    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                                   reinterpret_cast<const unsigned char*>(bytes.data()), size, baseDir)
+                     : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
     if (!ok) fail(err.empty() ? std::string("not a valid glTF file") : oneLine(err));
-    if (!warn.empty()) report.warnings.push_back(file.string() + ": " + printable(oneLine(warn)));
+    if (!warn.empty()) report.warnings.push_back(printable(file.string(), 120) + ": " + printableMessage(oneLine(warn)));
     return model;
 }
 
@@ -651,30 +710,44 @@ Scene loadGltf(const std::filesystem::path& file) {
 }
 
 Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report) {
+    std::string bytes;
+    try {
+        bytes = readBoundedFile(file, kGltfLimit);
+    } catch (const ReadError& e) {
+        throw LoadError(e.what());
+    }
+    return loadGltfFromMemory(bytes, file, report);
+}
+
+Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& file, GltfLoadReport& report) {
+    const std::string name = printable(file.string(), 120);
     try {
         detail::IgnoredLog ignored;
-        tinygltf::Model model = parseFile(file, report, ignored);
+        tinygltf::Model model = parseBytes(bytes, file, report, ignored);
         Converter conv{model, report, ignored, {}, {}};
         conv.scene.name = file.stem().string();
         conv.convertMaterials();
         conv.convertMeshes();
         conv.convertNodes();
+        conv.checkWorldTransforms();
         detail::noteIgnoredFeatures(model, ignored);
         if (conv.reachableTriangles() == 0) {
             std::string skipped = report.skippedPrimitives
                 ? " (" + std::to_string(report.skippedPrimitives) + " point/line primitives skipped)" : "";
             fail("no triangle geometry" + skipped);
         }
-        for (std::string& line : ignored.lines(file.string())) report.warnings.push_back(printable(std::move(line)));
+        for (std::string& line : ignored.lines(file.string())) report.warnings.push_back(printableMessage(line));
         return std::move(conv.scene);
     } catch (const Bad& e) {
-        throw LoadError(file.string() + ": " + printable(e.what()));
+        throw LoadError(name + ": " + printableMessage(e.what(), 200));
     } catch (const std::bad_alloc&) {
-        throw LoadError(file.string() + ": out of memory");
+        // Every file is within kGltfLimit, so this is a model whose content needs more memory
+        // than the machine has (a huge accessor count), not a misread file.
+        throw LoadError(name + ": out of memory converting the model");
     } catch (const LoadError&) {
         throw;
     } catch (const std::exception& e) {  // tinygltf's JSON parser may throw on malformed input
-        throw LoadError(file.string() + ": " + printable(oneLine(e.what())));
+        throw LoadError(name + ": " + printableMessage(oneLine(e.what()), 200));
     }
 }
 

@@ -24,7 +24,14 @@ struct GltfLoadReport {
 // Loads a glTF file. Scene::name is the file stem; materials[0] is a default material and
 // glTF material i is materials[i + 1]; every triangle primitive becomes one Mesh and a node's
 // `meshes` lists those of its glTF mesh. Throws LoadError("<file>: <what is wrong>").
+// The file and every buffer it names are read through readBoundedFile (io/bounded_read.hpp):
+// regular files of at most kGltfLimit bytes each. Every number that becomes a float (node
+// transforms, alphaCutoff) is checked as a float, and every node's world transform must be finite.
 Scene loadGltf(const std::filesystem::path& file);
 Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report);
+
+// The same from the file's bytes already in memory; `file` names it in messages and its folder
+// is where external buffers are found.
+Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& file, GltfLoadReport& report);
 
 }  // namespace strata

@@ -7,8 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <string_view>
 #include <stdexcept>
 #include <vector>
 
@@ -228,28 +227,17 @@ std::uint32_t le32(const unsigned char* p) {
 }
 
 // The JSON text of a .gltf, or the first (JSON) chunk of a .glb, with the GLB framing checked.
-std::string jsonText(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw Problem("cannot open file");
-    unsigned char header[20] = {};
-    in.read(reinterpret_cast<char*>(header), sizeof header);
-    std::size_t got = std::size_t(in.gcount());
-    if (got >= 4 && std::memcmp(header, "glTF", 4) == 0) {
-        std::error_code ec;
-        auto fileSize = std::uintmax_t(std::filesystem::file_size(file, ec));
-        if (ec || got < 20) throw Problem("GLB: truncated header");
+std::string_view jsonText(std::string_view bytes) {
+    const auto* header = reinterpret_cast<const unsigned char*>(bytes.data());
+    if (bytes.size() >= 4 && std::memcmp(header, "glTF", 4) == 0) {
+        if (bytes.size() < 20) throw Problem("GLB: truncated header");
         if (le32(header + 4) != 2) throw Problem("GLB: version " + std::to_string(le32(header + 4)) + ", expected 2");
         std::uint32_t chunkLength = le32(header + 12);
         if (le32(header + 16) != 0x4E4F534Au) throw Problem("GLB: first chunk is not JSON");
-        if (chunkLength > fileSize - 20) throw Problem("GLB: JSON chunk exceeds the file");
-        std::string text(chunkLength, '\0');
-        in.read(text.data(), std::streamsize(chunkLength));
-        if (std::size_t(in.gcount()) != chunkLength) throw Problem("GLB: truncated JSON chunk");
-        return text;
+        if (chunkLength > bytes.size() - 20) throw Problem("GLB: JSON chunk exceeds the file");
+        return bytes.substr(20, chunkLength);
     }
-    in.clear();
-    in.seekg(0);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return bytes;
 }
 
 // Deep nesting is never legitimate glTF; refusing it up front protects every recursive JSON
@@ -258,9 +246,9 @@ constexpr int kMaxDepth = 64;
 
 }  // namespace
 
-std::string checkGltfSchema(const std::filesystem::path& file, IgnoredLog* ignored) {
+std::string checkGltfSchema(std::string_view bytes, IgnoredLog* ignored) {
     try {
-        std::string text = jsonText(file);
+        std::string_view text = jsonText(bytes);
         json doc = json::parse(text, [](int depth, json::parse_event_t, json&) {
             if (depth > kMaxDepth) throw Problem("JSON nested deeper than " + std::to_string(kMaxDepth) + " levels");
             return true;

@@ -5,17 +5,17 @@
 // "successfully" but wrongly; this check turns those into errors. It covers the core properties
 // (types only; index ranges are checked by the loader), rejects absurd nesting depth, and
 // refuses files whose extensionsRequired names an extension the loader cannot honour.
-#include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace strata::detail {
 
 class IgnoredLog;
 
-// Returns "" when the JSON (of a .gltf, or the JSON chunk of a .glb) passes, otherwise one line
-// saying what is wrong, e.g. "materials[0].pbrMetallicRoughness: expected an object". What only
-// the JSON shows and tinygltf then drops without a word (a node's translation, rotation and scale
-// beside its matrix) is noted in `ignored` when given.
-std::string checkGltfSchema(const std::filesystem::path& file, IgnoredLog* ignored = nullptr);
+// `bytes` are the whole file. Returns "" when the JSON (of a .gltf, or the JSON chunk of a .glb)
+// passes, otherwise one line saying what is wrong, e.g. "materials[0].pbrMetallicRoughness:
+// expected an object". What only the JSON shows and tinygltf then drops without a word (a node's
+// translation, rotation and scale beside its matrix) is noted in `ignored` when given.
+std::string checkGltfSchema(std::string_view bytes, IgnoredLog* ignored = nullptr);
 
 }  // namespace strata::detail

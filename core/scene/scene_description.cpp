@@ -1,5 +1,7 @@
 #include "scene/scene_description.hpp"
 
+#include "io/bounded_read.hpp"
+#include "io/printable.hpp"
 #include "scene/gltf_loader.hpp"
 
 #include <nlohmann/json.hpp>
@@ -7,12 +9,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include <cmath>
-#include <fstream>
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <initializer_list>
+#include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
 
 namespace strata {
@@ -27,27 +29,55 @@ struct Bad : std::runtime_error {
 
 [[noreturn]] void fail(const std::string& what) { throw Bad(what); }
 
+// A description is a flat list of objects; nothing legitimate nests deeper than a few levels.
+constexpr int kMaxDepth = 16;
+
 void onlyKeys(const json& obj, std::initializer_list<const char*> allowed, const std::string& where) {
     for (const auto& item : obj.items()) {
         bool known = false;
         for (const char* k : allowed) known = known || item.key() == k;
-        if (!known) fail(where + "unknown key '" + item.key() + "'");
+        if (!known) fail(where + "unknown key '" + printable(item.key(), 40) + "'");
     }
 }
 
-double number(const json& v, const std::string& where) {
+std::string shortText(double d) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", d);
+    return text;
+}
+
+// Every number of a description ends up in a float: it is checked as the float it becomes
+// (1e308 is a finite double and an infinite float).
+float number(const json& v, const std::string& where) {
     if (!v.is_number()) fail(where + ": expected a number");
     double d = v.get<double>();
     if (!std::isfinite(d)) fail(where + ": expected a finite number");
-    return d;
+    if (!std::isfinite(float(d))) fail(where + ": " + shortText(d) + " does not fit a float");
+    return float(d);
 }
 
 template <int N>
 glm::vec<N, float> vector(const json& v, const std::string& where) {
     if (!v.is_array() || v.size() != N) fail(where + ": expected an array of " + std::to_string(N) + " numbers");
     glm::vec<N, float> out;
-    for (int i = 0; i < N; ++i) out[i] = float(number(v[std::size_t(i)], where));
+    for (int i = 0; i < N; ++i) out[i] = number(v[std::size_t(i)], where);
     return out;
+}
+
+bool finite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// A unit vector from `v`, its length taken in double so that components near the float limit
+// do not overflow on the way; fails with `zeroMessage` when it is zero.
+glm::vec3 unitVector(const glm::vec3& v, const std::string& zeroMessage) {
+    glm::dvec3 d(v);
+    double length = glm::length(d);
+    if (!(length > 1e-6)) fail(zeroMessage);
+    return glm::vec3(d / length);
 }
 
 glm::vec3 unitRange3(const json& v, const std::string& where) {
@@ -70,7 +100,7 @@ Material parseMaterial(const json& m, const std::string& where) {
     }
     if (m.contains("base_color")) mat.baseColor = unitRange3(m["base_color"], w + "base_color");
     if (m.contains("alpha")) {
-        mat.alpha = float(number(m["alpha"], w + "alpha"));
+        mat.alpha = number(m["alpha"], w + "alpha");
         if (mat.alpha < 0.0f || mat.alpha > 1.0f) fail(w + "alpha: must be in [0, 1]");
     }
     // A description that lowers alpha means "see through"; requiring BLEND as well is a trap.
@@ -81,17 +111,17 @@ Material parseMaterial(const json& m, const std::string& where) {
         if (mode == "OPAQUE") mat.alphaMode = AlphaMode::Opaque;
         else if (mode == "MASK") mat.alphaMode = AlphaMode::Mask;
         else if (mode == "BLEND") mat.alphaMode = AlphaMode::Blend;
-        else fail(w + "alpha_mode: unknown mode '" + mode + "' (OPAQUE, MASK or BLEND)");
+        else fail(w + "alpha_mode: unknown mode '" + printable(mode, 40) + "' (OPAQUE, MASK or BLEND)");
     }
     if (m.contains("alpha_cutoff")) {
-        mat.alphaCutoff = float(number(m["alpha_cutoff"], w + "alpha_cutoff"));
+        mat.alphaCutoff = number(m["alpha_cutoff"], w + "alpha_cutoff");
         if (mat.alphaCutoff < 0.0f) fail(w + "alpha_cutoff: must be >= 0");
     }
     if (m.contains("tau")) {
         mat.tau = vector<3>(m["tau"], w + "tau");
         mat.volume = true;  // a medium: the volumetric techniques render its inside
         for (int k = 0; k < 3; ++k)
-            if (!(mat.tau[k] >= 0.0f && mat.tau[k] <= kMaxTau))  // 1e300 is finite JSON but an infinite float
+            if (!(mat.tau[k] >= 0.0f && mat.tau[k] <= kMaxTau))
                 fail(w + "tau: components must be in [0, " + std::to_string(int(kMaxTau)) + "] per metre");
     }
     if (m.contains("albedo")) mat.albedo = unitRange3(m["albedo"], w + "albedo");
@@ -116,17 +146,19 @@ glm::mat4 objectTransform(const json& o, const std::string& where) {
     }
     if (o.contains("rotate_axis_angle")) {
         glm::vec4 aa = vector<4>(o["rotate_axis_angle"], where + "rotate_axis_angle");
-        glm::vec3 axis(aa);
-        if (!(glm::length(axis) > 1e-6f)) fail(where + "rotate_axis_angle: the axis is zero");
-        r = glm::rotate(glm::mat4(1.0f), glm::radians(aa.w), glm::normalize(axis));
+        glm::vec3 axis = unitVector(glm::vec3(aa), where + "rotate_axis_angle: the axis is zero");
+        r = glm::rotate(glm::mat4(1.0f), glm::radians(aa.w), axis);
     }
     if (o.contains("scale")) {
         const json& sc = o["scale"];
-        glm::vec3 f = sc.is_array() ? vector<3>(sc, where + "scale") : glm::vec3(float(number(sc, where + "scale")));
+        glm::vec3 f = sc.is_array() ? vector<3>(sc, where + "scale") : glm::vec3(number(sc, where + "scale"));
         if (f.x == 0.0f || f.y == 0.0f || f.z == 0.0f) fail(where + "scale: must not be zero");
         s = glm::scale(glm::mat4(1.0f), f);
     }
-    return t * r * s;
+    glm::mat4 m = t * r * s;
+    // Each part fits a float, yet their product may not (a huge translate and scale together).
+    if (!finite(m)) fail(where + "translate, rotate and scale: the transform overflows a float");
+    return m;
 }
 
 // Centres the model's bounds at the origin and scales its largest extent to `size`.
@@ -166,18 +198,18 @@ void parseCamera(Scene& scene, const json& c) {
     glm::vec3 position = vector<3>(c["position"], "camera.position");
     glm::vec3 target = vector<3>(c["target"], "camera.target");
     glm::vec3 up = c.contains("up") ? vector<3>(c["up"], "camera.up") : glm::vec3(0, 1, 0);
-    glm::vec3 dir = target - position;
-    if (!(glm::length(dir) > 1e-6f)) fail("camera: position and target coincide");
-    dir = glm::normalize(dir);
-    if (!(glm::length(up) > 1e-6f)) fail("camera.up: is zero");
-    up = glm::normalize(up);
+    // In double: the difference of two points near the float limit overflows a float.
+    glm::dvec3 toTarget = glm::dvec3(target) - glm::dvec3(position);
+    if (!(glm::length(toTarget) > 1e-6)) fail("camera: position and target coincide");
+    glm::vec3 dir(glm::normalize(toTarget));
+    up = unitVector(up, "camera.up: is zero");
     // Looking straight along `up` leaves the roll undefined; pick another up then.
     if (std::abs(glm::dot(dir, up)) > 0.999f) up = std::abs(dir.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
     CameraPose pose;
     pose.position = position;
     pose.orientation = glm::quatLookAtRH(dir, up);  // maps the camera's -Z onto dir
     if (c.contains("fov_y_deg")) {
-        pose.fovYDegrees = float(number(c["fov_y_deg"], "camera.fov_y_deg"));
+        pose.fovYDegrees = number(c["fov_y_deg"], "camera.fov_y_deg");
         if (pose.fovYDegrees <= 0.0f || pose.fovYDegrees >= 180.0f) fail("camera.fov_y_deg: must be in (0, 180)");
     }
     scene.camera = pose;
@@ -195,9 +227,7 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
     scene.materials.push_back(Material{});  // index 0 always exists
     if (doc.contains("camera")) parseCamera(scene, doc["camera"]);
     if (doc.contains("light_direction")) {
-        glm::vec3 l = vector<3>(doc["light_direction"], "light_direction");
-        if (!(glm::length(l) > 1e-6f)) fail("light_direction: is zero");
-        scene.lightDirection = glm::normalize(l);
+        scene.lightDirection = unitVector(vector<3>(doc["light_direction"], "light_direction"), "light_direction: is zero");
     }
     if (doc.contains("background")) {
         scene.background = vector<3>(doc["background"], "background");
@@ -228,7 +258,7 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
         if (o.contains("material")) override = parseMaterial(o["material"], where);
         float fit = 0.0f;
         if (o.contains("fit")) {
-            fit = float(number(o["fit"], where + "fit"));
+            fit = number(o["fit"], where + "fit");
             if (fit <= 0.0f) fail(where + "fit: must be > 0");
         }
 
@@ -242,7 +272,11 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
         if (warnings)
             for (const std::string& line : report.warnings)
                 if (std::find(warnings->begin(), warnings->end(), line) == warnings->end()) warnings->push_back(line);
-        if (fit > 0.0f) node.local = node.local * fitTransform(loaded, fit);
+        if (fit > 0.0f) {
+            node.local = node.local * fitTransform(loaded, fit);
+            // A tiny model fitted to a huge size, or a model whose bounds overflow, cannot render.
+            if (!finite(node.local)) fail(where + "fit: the transform with the model's bounds overflows a float");
+        }
         if (override) node.materialOverride = scene.addMaterial(std::move(*override));
         merge(scene, std::move(loaded), std::move(node));
     }
@@ -252,22 +286,34 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
 }  // namespace
 
 Scene loadSceneDescription(const std::filesystem::path& jsonFile, std::vector<std::string>* warnings) {
-    std::string prefix = jsonFile.string() + ": ";
-    std::ifstream in(jsonFile, std::ios::binary);
-    if (!in) throw LoadError(prefix + (std::filesystem::exists(jsonFile) ? "cannot open file" : "file not found"));
-    std::stringstream text;
-    text << in.rdbuf();
+    std::string text;
+    try {
+        text = readBoundedFile(jsonFile, kSceneDescriptionLimit);
+    } catch (const ReadError& e) {
+        throw LoadError(e.what());
+    }
+    return parseSceneDescription(text, jsonFile, warnings);
+}
+
+Scene parseSceneDescription(std::string_view text, const std::filesystem::path& jsonFile,
+                            std::vector<std::string>* warnings) {
+    std::string prefix = printable(jsonFile.string(), 120) + ": ";
     json doc;
     try {
-        doc = json::parse(text.str());
-    } catch (const json::parse_error& e) {
-        // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ...".
+        // Nesting deeper than any description needs is refused while parsing.
+        doc = json::parse(text, [](int depth, json::parse_event_t, json&) {
+            if (depth > kMaxDepth) throw Bad("JSON nested deeper than " + std::to_string(kMaxDepth) + " levels");
+            return true;
+        });
+    } catch (const Bad& e) {
+        throw LoadError(prefix + e.what());
+    } catch (const json::exception& e) {
+        // nlohmann says "[json.exception.parse_error.101] parse error at line L, column C: ..." or
+        // "[json.exception.out_of_range.406] number overflow parsing '1e400'"; it quotes raw input.
         std::string what = e.what();
         auto close = what.find("] ");
         what = close == std::string::npos ? what : what.substr(close + 2);
-        for (char& c : what)  // it quotes raw input; keep control bytes off the terminal
-            if ((unsigned char)c < 0x20 || c == 0x7f) c = '?';
-        throw LoadError(prefix + "JSON " + what);
+        throw LoadError(prefix + "JSON " + printable(what, 160));
     }
     try {
         return parse(doc, jsonFile, warnings);

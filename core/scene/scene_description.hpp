@@ -30,6 +30,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace strata {
@@ -38,6 +39,14 @@ namespace strata {
 // "<json file>: object N: <the loader's message>". The glTF loader's warnings for the models
 // (GltfLoadReport::warnings, each naming its model file) are appended to `warnings` when given,
 // each line once however many objects place that model.
+// The file is read through readBoundedFile (io/bounded_read.hpp): a regular file of at most
+// kSceneDescriptionLimit bytes. Every number is checked as the float it becomes, and each
+// object's transform (with its fit) must be finite in float: the message names the key.
 Scene loadSceneDescription(const std::filesystem::path& jsonFile, std::vector<std::string>* warnings = nullptr);
+
+// The same from text already in memory; `jsonFile` names it and is the folder models are
+// resolved against.
+Scene parseSceneDescription(std::string_view text, const std::filesystem::path& jsonFile,
+                            std::vector<std::string>* warnings = nullptr);
 
 }  // namespace strata
