@@ -204,43 +204,36 @@ void runTrack(const TrackOptions& o) {
     OutputBatch outputs;
     Trace measured, truth;
     std::string source, truthSource;
-    if (synthetic && o.motion != "seated") {
-        ActivityParams params;
-        try {
-            params.activity = parseActivity(o.motion);
-        } catch (const std::invalid_argument&) {
-            throw std::runtime_error("--motion `" + o.motion + "`: expected seated, walk or scan");
+    if (synthetic) {
+        SyntheticTraces traces;
+        if (o.motion != "seated") {
+            ActivityParams params;
+            try {
+                params.activity = parseActivity(o.motion);
+            } catch (const std::invalid_argument&) {
+                throw std::runtime_error("--motion `" + o.motion + "`: expected seated, walk or scan");
+            }
+            params.duration = o.synthetic;
+            params.seed = o.seed;
+            traces = generateActivityMotion(params);
+            source = ActivityModel(params).describe();
+        } else {
+            HeadMotionParams params;
+            params.duration = o.synthetic;
+            params.seed = o.seed;
+            traces = generateHeadMotion(params);
+            source = HeadMotionModel(params).describe();
         }
-        params.duration = o.synthetic;
-        params.seed = o.seed;
-        SyntheticTraces traces = generateActivityMotion(params);
         measured = std::move(traces.measured);
         truth = std::move(traces.truth);
-        source = ActivityModel(params).describe();
         truthSource = "the noise-free model sampled at 1000 Hz";
         if (!o.writeTraces.empty()) {
             outputs.addText(o.writeTraces + "-measured.path",
                             formatAnimationPath(measured, "measured (noisy) trace; " + source));
-            Trace truth240;
-            for (double t = 0.0; t <= params.duration + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
-            outputs.addText(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
-        }
-    } else if (synthetic) {
-        HeadMotionParams params;
-        params.duration = o.synthetic;
-        params.seed = o.seed;
-        const SyntheticTraces traces = generateHeadMotion(params);
-        measured = traces.measured;
-        truth = traces.truth;
-        source = HeadMotionModel(params).describe();
-        truthSource = "the noise-free model sampled at 1000 Hz";
-        if (!o.writeTraces.empty()) {
-            outputs.addText(o.writeTraces + "-measured.path",
-                          formatAnimationPath(measured, "measured (noisy) trace; " + source));
             // Truth at 240 Hz keeps the shipped file small; slerp between samples 4 ms apart is
             // within 0.01 deg of the model on min-jerk turns.
             Trace truth240;
-            for (double t = 0.0; t <= params.duration + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
+            for (double t = 0.0; t <= o.synthetic + 1e-9; t += 1.0 / 240.0) truth240.push_back(sampleAt(truth, t));
             outputs.addText(o.writeTraces + "-truth.path", formatAnimationPath(truth240, "truth trace (240 Hz); " + source));
         }
     } else {

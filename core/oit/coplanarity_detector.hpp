@@ -15,6 +15,7 @@
 //
 // Runs inside a frame, after the opaque pass: it reads the opaque depth through the output
 // framebuffer (frame/frame_renderer.cpp calls it when FrameOptions::detectCoplanarity is set).
+#include "oit/fragment_lists.hpp"
 #include "oit/technique.hpp"
 #include "render/coplanarity.hpp"
 #include "render/scene_program.hpp"
@@ -57,23 +58,17 @@ public:
     int regrows() const { return regrows_; }
 
 private:
-    struct Tile {
-        glm::ivec2 origin;
-        glm::ivec2 size;
-    };
     void prepare(glm::ivec2 size);
-    void ensurePool();
-    std::uint64_t store(const FrameContext& frame, const Tile& tile);
-    void resolve(const FrameContext& frame, const Tile& tile);
+    void resolve(const FrameContext& frame, const FragmentLists::Tile& tile);
 
     double maxBlockMiB_;
+    FragmentLists lists_{"coplanarity"};
     SceneProgram storeProgram_;
     gl::Program resolveProgram_;
-    GLint capacityLocation_ = -1, tileLocation_ = -1;
-    gl::Buffer counter_, nodes_, totals_;
-    gl::Texture heads_, largestLayer_, heatmap_;
+    GLint tileLocation_ = -1;
+    gl::Buffer totals_;
+    gl::Texture largestLayer_, heatmap_;
     glm::ivec2 size_{0, 0};
-    std::uint64_t capacity_ = 0, poolCapacity_ = 0;
     int passes_ = 0, tiles_ = 0, regrows_ = 0;
 };
 
