@@ -329,3 +329,243 @@ TEST_CASE("silhouette opacity: point sampling grows opaque toward the rim, the m
         else CHECK(std::abs(rimOpacity - centreOpacity) < 0.05);
     }
 }
+
+namespace {
+
+// A width x height quad facing +Z as cells x cells squares, two triangles each.
+Mesh makeFineGrid(float width, float height, int cells) {
+    Mesh m;
+    for (int j = 0; j <= cells; ++j)
+        for (int i = 0; i <= cells; ++i) {
+            m.positions.push_back({width * (float(i) / cells - 0.5f), height * (float(j) / cells - 0.5f), 0.0f});
+            m.normals.push_back({0, 0, 1});
+        }
+    for (int j = 0; j < cells; ++j)
+        for (int i = 0; i < cells; ++i) {
+            const std::uint32_t a = std::uint32_t(j * (cells + 1) + i), b = a + 1, c = a + std::uint32_t(cells + 1), d = c + 1;
+            m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+        }
+    return m;
+}
+
+// Supersampled pixels per scene unit at eye depth `depth` for an image `height` pixels tall at
+// supersampling n (the camera's vertical field of view `fovYDegrees`).
+double samplesPerUnit(int height, int n, double fovYDegrees, double depth) {
+    return double(height) * n / (2.0 * depth * std::tan(glm::radians(fovYDegrees) / 2.0));
+}
+
+bool finiteUnit(const Image& image) {
+    for (float v : image.rgba)
+        if (!std::isfinite(v) || v < 0.0f || v > 1.0f) return false;
+    return true;
+}
+
+}  // namespace
+
+TEST_CASE("screen-door: triangles smaller than one sample still cover alpha of the surface") {
+    // A 2 x 2 quad at depth 2 filling the 32x32 view, made of 200 x 200 cells: at n = 4 a sample
+    // is 2 * 2 tan(25 deg) / 128 = 0.0146 units, so a cell is 0.69 samples wide and each triangle
+    // covers 0.24 samples: most triangles hold no sample centre at all. The surface is still
+    // covered once per sample: the rasterizer gives each sample centre to exactly one triangle of
+    // the tessellation, and screendoor-object-sw's lattice is one per object (a phase per object,
+    // axes from the camera), so each of its points falls in exactly one triangle and a face-on
+    // surface gets one point per sample. Each sample is kept with probability alpha: as in the
+    // flat-quad test, the mean over K = 32 * 32 * 16 = 16384 samples is alpha within 5 standard
+    // deviations of at most 4 samples per texel, 5 sqrt(4 alpha (1 - alpha) / K) = 0.039 at
+    // alpha 0.5, plus the 8-bit quantization of the mask levels. A technique that drops or
+    // under-samples triangles smaller than a sample (a lattice that starts at each triangle's
+    // own corner and rounds its point count down, a texel scale from the sub-sample edge) shows
+    // far less.
+    const int cells = 200;
+    const glm::ivec2 size(32, 32);
+    const int n = 4;
+    const float alpha = 0.5f;
+    Scene s = emptyTestScene();
+    place(s, makeFineGrid(2.0f, 2.0f, cells), transparentMaterial(glm::vec3(0.0f), alpha), at({0, 0, -2}));
+    test::Fixture f(std::move(s));
+    const double cellSamples = 2.0 / cells * samplesPerUnit(size.y, n, f.camera.fovYDegrees, 2.0);
+    REQUIRE(cellSamples < 0.75);
+    const double samples = double(size.x) * size.y * n * n;
+    const double tolerance = 5.0 * std::sqrt(4.0 * alpha * (1.0 - alpha) / samples) + 0.5 / 255.0;
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        // One chunk of lattice points per triangle is plenty for sub-sample triangles.
+        std::vector<std::string> settings{"supersampling=4"};
+        if (id == "screendoor-object-sw") settings.push_back("max_triangle_samples=64");
+        test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, settings));
+        REQUIRE(finiteUnit(r.image));
+        const double opacity = 1.0 - meanRed(r.image);
+        MESSAGE(id << ": " << 2 * cells * cells << " triangles of " << 0.5 * cellSamples * cellSamples
+                   << " samples, mean opacity " << opacity << " (tolerance " << tolerance << ")");
+        CHECK(std::abs(opacity - alpha) <= tolerance);
+        CHECK_FALSE(r.result.stats.overflowed);
+    }
+}
+
+TEST_CASE("screen-door: a triangle crossing the near plane and the eye plane draws what is in front, no NaN") {
+    // A floor triangle 0.03 below the eye, from behind the eye (z = 0.5) to z = -6: it crosses
+    // the eye plane, and the near plane (0.1) cuts it where the view sees it, at rows whose rays
+    // meet the floor nearer than 0.1 (the bottom 18% of the image). Pixels whose whole footprint
+    // (the rays through its four corners) misses the drawn part (above the horizon, beside the
+    // triangle, or nearer than the near plane) stay exactly white; every value is finite and in
+    // [0, 1]; pixels wholly inside are covered. The mask techniques keep alpha of the samples on
+    // average: the mask is scaled for the centroid's depth (1.67), so near the near plane a texel
+    // spans up to (1.67 / 0.1)^2 * |N_z| <= 81 samples (|N_z| <= 0.29 on this floor), and the mean
+    // over the K covered samples is alpha within 5 sqrt(81 alpha (1 - alpha) / K). Point sampling
+    // lays its lattice at the centroid's depth too, so it under-samples the floor nearer than the
+    // centroid (fewer than one point per sample) and over-samples it beyond (silhouette opacity):
+    // its coverage is checked against that expectation (below), not against alpha.
+    const float alpha = 0.5f, floorY = -0.03f, nearPlane = 0.1f;
+    const glm::vec3 a0(-3.0f, floorY, 0.5f), a1(3.0f, floorY, 0.5f), a2(0.0f, floorY, -6.0f);
+    Mesh tri;
+    tri.positions = {a0, a1, a2};
+    tri.normals.assign(3, glm::vec3(0, 1, 0));
+    tri.indices = {0, 1, 2};
+    Scene s = emptyTestScene();
+    place(s, std::move(tri), transparentMaterial(glm::vec3(0.0f), alpha), glm::mat4(1.0f));
+    test::Fixture f(std::move(s));
+    f.camera.nearPlane = nearPlane;
+    f.camera.farPlane = 100.0f;
+    const glm::ivec2 size(32, 32);
+    const double t = std::tan(glm::radians(f.camera.fovYDegrees) / 2.0);
+    // Whether the ray through image point (u, v) (pixel units) meets the drawn part of the triangle.
+    auto drawn = [&](double u, double v) {
+        const glm::dvec3 dir((u / size.x * 2.0 - 1.0) * t, (v / size.y * 2.0 - 1.0) * t, -1.0);
+        if (dir.y >= 0.0) return false;
+        const double depth = floorY / dir.y;  // eye depth: dir.z = -1
+        if (depth < nearPlane || depth > f.camera.farPlane) return false;
+        const glm::dvec2 p(dir.x * depth, -depth), b0(a0.x, a0.z), b1(a1.x, a1.z), b2(a2.x, a2.z);
+        auto edge = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 q) { return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x); };
+        const double e0 = edge(b0, b1, p), e1 = edge(b1, b2, p), e2 = edge(b2, b0, p);
+        return (e0 >= 0 && e1 >= 0 && e2 >= 0) || (e0 <= 0 && e1 <= 0 && e2 <= 0);
+    };
+    std::vector<int> footprint(std::size_t(size.x) * size.y);  // 0 outside, 1 partly, 2 inside
+    int inside = 0, outside = 0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            const int hits = int(drawn(x, y)) + int(drawn(x + 1, y)) + int(drawn(x, y + 1)) + int(drawn(x + 1, y + 1));
+            const int k = hits == 0 ? 0 : hits == 4 ? 2 : 1;
+            footprint[std::size_t(y) * size.x + x] = k;
+            inside += k == 2;
+            outside += k == 0;
+        }
+    REQUIRE(inside > 150);
+    REQUIRE(outside > 500);
+    for (const std::string id : {"crow", "screendoor", "screendoor-object", "screendoor-object-sw"}) {
+        CAPTURE(id);
+        std::vector<std::string> settings;
+        if (test::hasSetting(id, "supersampling")) settings.push_back("supersampling=4");
+        test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, settings));
+        REQUIRE(finiteUnit(r.image));
+        double sum = 0.0;
+        int leaks = 0, empty = 0;
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const double opacity = 1.0 - r.image.at(x, y).r;
+                const int k = footprint[std::size_t(y) * size.x + x];
+                if (k == 0 && opacity != 0.0) ++leaks;
+                if (k != 2) continue;
+                sum += opacity;
+                if (opacity == 0.0) ++empty;
+            }
+        const double mean = sum / inside;
+        MESSAGE(id << ": mean opacity inside " << mean << ", empty inside " << empty << ", drawn outside " << leaks
+                   << ", overflow " << r.result.stats.overflowed);
+        CHECK(leaks == 0);
+        if (id == "crow") {
+            // Crow: at most amax = 0.9 on one surface, at least the face-on alpha.
+            CHECK(empty == 0);
+            CHECK(mean >= alpha);
+            CHECK(mean <= 0.9 + 1e-6);
+        } else if (id != "screendoor-object-sw") {
+            const double samples = double(inside) * 16.0;
+            CHECK(std::abs(mean - alpha) <= 5.0 * std::sqrt(81.0 * alpha * (1.0 - alpha) / samples));
+        } else {
+            // The lattice (spacing one sample at the centroid's eye depth d_c = 5/3) seen at a
+            // sample whose ray (dx, dy, -1) meets the floor at eye depth d: the sample's footprint
+            // on the floor is d^2 / (s^2 |dy|) (s samples per unit at depth 1), the lattice holds
+            // s^2 / d_c^2 points per unit area, so rho = d^2 / (d_c^2 |dy|) points fall in it. A
+            // regular lattice puts floor(rho) or floor(rho) + 1 points in each sample, the second
+            // in a fraction frac(rho) of them, each kept with probability alpha. The mean of that
+            // over the covered samples is the expectation; tolerance 5 sqrt(0.25 / K) for the
+            // kept draws plus 0.02 for rho varying across a sample (first order cancels).
+            const double centroidDepth = 5.0 / 3.0;
+            double predicted = 0.0;
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) {
+                    if (footprint[std::size_t(y) * size.x + x] != 2) continue;
+                    for (int j = 0; j < 4; ++j)
+                        for (int i = 0; i < 4; ++i) {
+                            const double dy = ((y + (j + 0.5) / 4.0) / size.y * 2.0 - 1.0) * t;
+                            const double d = floorY / dy;
+                            const double rho = d * d / (centroidDepth * centroidDepth * std::abs(dy));
+                            const double k = std::floor(rho), frac = rho - k;
+                            const double through = (1.0 - frac) * std::pow(1.0 - alpha, k) + frac * std::pow(1.0 - alpha, k + 1.0);
+                            predicted += (1.0 - through) / 16.0;
+                        }
+                }
+            predicted /= inside;
+            MESSAGE(id << ": predicted from the lattice density " << predicted);
+            CHECK(std::abs(mean - predicted) <= 5.0 * std::sqrt(0.25 / (16.0 * inside)) + 0.02);
+        }
+    }
+}
+
+TEST_CASE("screendoor-object-sw: a very large triangle gets a bounded lattice, counted as overflow") {
+    // A 40 x 40 quad (two triangles) at depth 2, far larger than the 16x16 view at n = 16: at
+    // s = 256 / (2 * 2 tan 25 deg) = 137.3 samples per unit each triangle wants 800 s^2 = 15.1M
+    // lattice points, past max_triangle_samples = 2^18. Each gets a coarser lattice of that many:
+    // spacing g = sqrt(15.1M / 2^18) = 7.6 samples, so the view's K = 256^2 samples hold K / g^2
+    // = 1138 points, each kept with probability alpha, each on its own sample: mean opacity
+    // alpha / g^2 = 0.0087 at alpha 0.5 instead of 0.5. Counted: both triangles bounded, overflow
+    // set. Tolerance: the lattice axes follow the image's, so the view holds (256 / g +- 1)^2
+    // points (+-6%), and the kept count is within 5 sqrt(1138 alpha (1 - alpha)) = 84 (7%): 15%.
+    const float alpha = 0.5f;
+    Scene s = emptyTestScene();
+    place(s, makeQuad(40.0f, 40.0f), transparentMaterial(glm::vec3(0.0f), alpha), at({0, 0, -2}));
+    test::Fixture f(std::move(s));
+    f.camera.nearPlane = 0.5f;
+    f.camera.farPlane = 10.0f;
+    const glm::ivec2 size(16, 16);
+    const int n = 16, bound = 1 << 18;
+    const double perUnit = samplesPerUnit(size.y, n, f.camera.fovYDegrees, 2.0);
+    const double wanted = 0.5 * 40.0 * 40.0 * perUnit * perUnit;
+    REQUIRE(wanted > 16.0 * bound);
+    const double spacing = std::sqrt(wanted / bound);
+    const double expected = alpha / (spacing * spacing);
+    auto technique = test::makeTechnique("screendoor-object-sw", {"supersampling=16", "max_triangle_samples=262144"});
+    test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+    REQUIRE(finiteUnit(r.image));
+    const double opacity = 1.0 - meanRed(r.image);
+    MESSAGE("lattice spacing " << spacing << " samples: mean opacity " << opacity << ", expected " << expected);
+    CHECK(std::abs(opacity - expected) <= 0.15 * expected);
+    CHECK(r.result.stats.primitivesBounded == 2);
+    CHECK(r.result.stats.overflowed);
+    CHECK(r.result.stats.fragmentsDropped == 0);
+}
+
+TEST_CASE("screendoor-object-sw: points past max_points_millions are counted, not stored") {
+    // An 8 x 8 grid of unit cells (no triangle past the bound) at 32x32, n = 16: 274.5
+    // samples per unit at depth 2, so 64 * 274.5^2 = 4.82M lattice points, 2.41M kept at
+    // alpha 0.5, past the 2^20 points of max_points_millions = 1. The buffer grows once to
+    // 2^20 and the rest are counted as dropped: kept - 2^20 = 1.36M. The kept count is off its
+    // expectation by the lattice's boundary (+-1 point per row of each cell: 0.2%) and the draws
+    // (5 sqrt(4.82M / 4) = 5500: 0.2%); checked within 1% of the kept count.
+    const float alpha = 0.5f;
+    const int n = 16;
+    Scene grid = emptyTestScene();
+    place(grid, makeGrid(8.0f, 8.0f), transparentMaterial(glm::vec3(0.0f), alpha), at({0, 0, -2}));
+    test::Fixture g(std::move(grid));
+    const glm::ivec2 gridSize(32, 32);
+    const double gridPerUnit = samplesPerUnit(gridSize.y, n, g.camera.fovYDegrees, 2.0);
+    const double kept = alpha * 64.0 * gridPerUnit * gridPerUnit;
+    auto capped = test::makeTechnique("screendoor-object-sw", {"supersampling=16", "max_points_millions=1"});
+    test::Rendered c = test::renderWith(*g.gpu, g.camera, gridSize, *capped);
+    REQUIRE(finiteUnit(c.image));
+    const double dropped = double(c.result.stats.fragmentsDropped);
+    MESSAGE("kept points expected " << kept << ", dropped " << dropped << " past " << (1 << 20));
+    CHECK(std::abs(dropped - (kept - double(1 << 20))) <= 0.01 * kept);
+    CHECK(c.result.stats.overflowed);
+    CHECK(c.result.stats.primitivesBounded == 0);
+    CHECK(c.result.stats.regrows == 1);
+}

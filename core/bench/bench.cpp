@@ -171,6 +171,8 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.objectDraws += r.stats.objectDraws;
             mode.objectDrawsSkipped += r.stats.objectDrawsSkipped;
             mode.fragmentsTail += r.stats.fragmentsTail;
+            mode.fragmentsDropped += r.stats.fragmentsDropped;
+            mode.primitivesBounded += r.stats.primitivesBounded;
 
             Image image = renderer.readOutput();
             if (isReference) {

@@ -60,6 +60,8 @@ struct BenchMode {
     std::uint64_t objectDraws = 0;           // summed over frames
     std::uint64_t objectDrawsSkipped = 0;    // summed over frames
     std::uint64_t fragmentsTail = 0;         // summed over frames
+    std::uint64_t fragmentsDropped = 0;      // summed over frames: counted but not stored
+    std::uint64_t primitivesBounded = 0;     // summed over frames: sampled coarser than asked
     double rmse = 0, psnr = 100, maxAbsError = 0;
     std::vector<std::pair<std::string, double>> passMsMedian;  // per pass name
     std::vector<SettingDescription> settingDescriptions;       // what the mode ran with

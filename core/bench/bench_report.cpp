@@ -50,6 +50,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"robustness_ratio", finite(m.robustnessRatio)}, {"overflowed", m.overflowed},
             {"regrows", m.regrows}, {"tiles", m.tiles}, {"object_draws", m.objectDraws},
             {"object_draws_skipped", m.objectDrawsSkipped}, {"fragments_tail", m.fragmentsTail},
+            {"fragments_dropped", m.fragmentsDropped}, {"primitives_bounded", m.primitivesBounded},
             {"rmse", finite(m.rmse)}, {"psnr", finite(m.psnr)}, {"max_abs_error", finite(m.maxAbsError)},
         });
         if (floorTime) modes.back()["ms_over_floor"] = finite(m.msMedian / *floorTime);

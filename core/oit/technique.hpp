@@ -43,6 +43,8 @@ struct TechniqueStats {
     std::uint64_t objectDraws = 0;        // draw calls issued for transparent objects
     std::uint64_t objectDrawsSkipped = 0; // draws avoided (objects already peeled, culled by queries)
     std::uint64_t fragmentsTail = 0;      // overflowed fragments blended approximately ("tail" option)
+    std::uint64_t primitivesBounded = 0;  // primitives sampled coarser than asked (screendoor-object-sw's
+                                          // max_triangle_samples); each also sets `overflowed`
 };
 
 struct FrameContext {

@@ -55,6 +55,7 @@ public:
         stats_.regrows = sampling.regrows;
         stats_.bytes += points_.bytes();
         stats_.fragmentsDropped = sampling.pointsWanted - sampling.pointsStored;
+        stats_.primitivesBounded = sampling.trianglesBounded;
         stats_.overflowed = stats_.fragmentsDropped > 0 || sampling.trianglesBounded > 0;
     }
 
