@@ -6,8 +6,10 @@
 //     Its coverage is alpha per pixel whatever the slope: no silhouette opacity.
 //   `screendoor-object` (section 4.2, hardware-assisted): a geometry stage maps the mask on each
 //     triangle so one texel covers about one supersampled pixel at the triangle's distance
-//     (4.2.1). The mask is sampled nearest, so a pixel that many texels fall in (at a silhouette)
-//     still keeps one of them: no silhouette opacity either (the paper's section 5).
+//     (4.2.1). Sampled nearest, a sample that many texels fall in (at a silhouette) would keep
+//     one of them and show no silhouette opacity (the paper's section 5); the fragment stage
+//     reads the mask across the sample's footprint and keeps the sample if any read is kept
+//     (the Max filter the paper asks for), so silhouettes grow opaque as 1 - (1 - a)^n.
 #include "oit/draw_transparent.hpp"
 #include "oit/screendoor/screendoor_pass.hpp"
 #include "oit/screendoor/screendoor_settings.hpp"
@@ -56,7 +58,8 @@ TechniqueEntry screendoorEntry() {
 TechniqueEntry screendoorObjectEntry() {
     TechniqueInfo info{"screendoor-object", "baseline", false, false, "(2 + log2 n) per tile", screendoor::kMaskMemory,
                        "object-space screen-door (Sen et al. 4.2): random masks per alpha level mapped on each "
-                       "triangle at one texel per sample, n x n supersampled and box-filtered"};
+                       "triangle at one texel per sample, read across each sample's footprint (silhouette opacity), "
+                       "n x n supersampled and box-filtered"};
     return techniqueEntry<screendoor::MaskScreenDoor>(
         info, std::vector<std::string>{"oit/screendoor/object_mask.geom.glsl", "oit/screendoor/screendoor_object.frag.glsl"});
 }
