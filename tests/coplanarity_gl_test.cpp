@@ -120,9 +120,17 @@ TEST_CASE("coplanarity detector equals the CPU ray cast on every builtin scene")
             CHECK(s.coplanarityProbability() == (k >= 2 ? 1.0 : 0.0));
             CHECK(s.oneFragmentPerLayerRobustness() == doctest::Approx(1.0 / k));
         }
-        if (spec.rfind("layers:", 0) == 0 || spec == "cubes:separated") {
+        if (spec.rfind("layers:", 0) == 0) {
+            // Quads 0.25 apart: no rounding on any GPU brings them within the tie tolerance.
             CHECK(s.coplanarityProbability() == 0.0);
             CHECK(s.oneFragmentPerLayerRobustness() == 1.0);
+        }
+        if (spec == "cubes:separated") {
+            // No face planes shared; only a pixel centre where two faces of one cube meet ties
+            // (they are at one depth there), and which pixel centres land on such an edge depends
+            // on the rasterizer's subpixel snapping: a few pixels at most, not none.
+            CHECK(s.coplanarityProbability() <= 0.01);
+            CHECK(s.oneFragmentPerLayerRobustness() >= 0.99);
         }
         if (spec == "cubes" || spec.rfind("shells:", 0) == 0) CHECK(s.coplanarityProbability() > 0.0);
     }
@@ -148,6 +156,9 @@ TEST_CASE("coplanarity detector: lists longer than the registers, tiles and subm
         FrameOptions reversed;
         reversed.reverseSubmission = true;
         const Detected flipped = detect(*f.gpu, f.camera, size, reversed);
+        // Integer counts, not depths: coverage does not depend on the scissor or the draw order,
+        // and the depths of one surface differ by a few ulps at most between the runs, far inside
+        // the 64-ulp tie tolerance, so the layers are the same on any GPU.
         CHECK(tiles.pixels.largestLayer == whole.pixels.largestLayer);
         CHECK(tiles.pixels.fragments == whole.pixels.fragments);
         CHECK(tiles.result.coplanarity->pixelsByLargestLayer == whole.result.coplanarity->pixelsByLargestLayer);

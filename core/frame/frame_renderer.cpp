@@ -1,5 +1,7 @@
 #include "frame/frame_renderer.hpp"
 
+#include "render/texture_readback.hpp"
+
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
 
@@ -85,18 +87,9 @@ std::uint64_t FrameRenderer::countFragments(const FrameContext& frame) {
     drawTransparent(frame, countProgram_, frame.transparentOrder);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint count = 0;
-    glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
-    return count;
+    return gl::readUint(counter_);
 }
 
-Image FrameRenderer::readOutput() const {
-    glm::ivec2 size = targets_.size();
-    Image image(size.x, size.y);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(targets_.outputColor(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
-                      image.rgba.data());
-    return image;
-}
+Image FrameRenderer::readOutput() const { return readRgbaTexture(targets_.outputColor(), targets_.size()); }
 
 }  // namespace strata

@@ -33,4 +33,10 @@ void allocateBuffer(Buffer& buffer, std::size_t bytes, GLenum usage, const char*
                                  std::to_string(bytes) + " bytes)");
 }
 
+GLuint readUint(const Buffer& buffer) {
+    GLuint value = 0;
+    glGetNamedBufferSubData(buffer.id(), 0, sizeof(GLuint), &value);
+    return value;
+}
+
 }  // namespace strata::gl

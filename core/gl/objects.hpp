@@ -76,6 +76,9 @@ Texture createTexture2D(GLenum internalFormat, int width, int height);
 // force tiling on small frames). At least 1.
 std::uint64_t storageBlockElements(std::uint64_t elementBytes, double capMiB);
 
+// The first uint of `buffer`: a counter the GPU wrote (the caller issues the barrier first).
+GLuint readUint(const Buffer& buffer);
+
 // A buffer with mutable-size semantics (glNamedBufferData) so it can be grown.
 // Throws std::runtime_error naming `what` when the driver reports GL_OUT_OF_MEMORY.
 void allocateBuffer(Buffer& buffer, std::size_t bytes, GLenum usage, const char* what);

@@ -68,12 +68,7 @@ public:
         stats_.regrows = run.regrows;
         stats_.objectDraws = run.objectDraws;
         stats_.bytes = lists_.bytes();
-        if (volume_) {
-            stats_.bytes += volume_->bytes();
-            const std::uint64_t ignored = volume_->nestingOverflow();
-            stats_.fragmentsDropped += ignored;
-            stats_.overflowed = stats_.overflowed || ignored > 0;
-        }
+        if (volume_) volume_->addStats(stats_);
     }
 
 private:

@@ -1,5 +1,7 @@
 #include "oit/coplanarity_detector.hpp"
 
+#include "render/texture_readback.hpp"
+
 #include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/coplanarity_bindings.h"
@@ -97,12 +99,6 @@ CoplanarityDetector::Pixels CoplanarityDetector::readPixels() const {
     return out;
 }
 
-Image CoplanarityDetector::readHeatmap() const {
-    Image image(size_.x, size_.y);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(heatmap_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
-                      image.rgba.data());
-    return image;
-}
+Image CoplanarityDetector::readHeatmap() const { return readRgbaTexture(heatmap_.id(), size_); }
 
 }  // namespace strata

@@ -128,9 +128,7 @@ std::uint64_t FragmentLists::store(const FrameContext& frame, const Tile& tile, 
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                     GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     ++run.passes;
-    GLuint count = 0;
-    glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
-    return count;
+    return gl::readUint(counter_);
 }
 
 }  // namespace strata

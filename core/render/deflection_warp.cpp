@@ -1,5 +1,7 @@
 #include "render/deflection_warp.hpp"
 
+#include "render/texture_readback.hpp"
+
 #include "common/bindings.h"
 #include "gl/shader_program.hpp"
 
@@ -83,17 +85,9 @@ void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const Deflecti
 std::uint64_t DeflectionWarp::outsidePixels() const {
     if (!counted_) return 0;
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint count = 0;
-    glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
-    return count;
+    return gl::readUint(counter_);
 }
 
-Image DeflectionWarp::readOutput() const {
-    Image image(size_.x, size_.y);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(image.rgba.size() * sizeof(float)),
-                      image.rgba.data());
-    return image;
-}
+Image DeflectionWarp::readOutput() const { return readRgbaTexture(color_.id(), size_); }
 
 }  // namespace strata

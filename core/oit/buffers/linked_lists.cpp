@@ -48,11 +48,7 @@ private:
     }
 
     void finishResolve(TechniqueStats& stats) override {
-        if (!volume_) return;
-        stats.bytes += volume_->bytes();
-        const std::uint64_t ignored = volume_->nestingOverflow();
-        stats.fragmentsDropped += ignored;
-        stats.overflowed = stats.overflowed || ignored > 0;
+        if (volume_) volume_->addStats(stats);
     }
 
     static std::uint64_t poolNodes(const FrameContext& frame, int capacity) {

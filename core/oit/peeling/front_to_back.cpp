@@ -148,9 +148,7 @@ private:
 
     std::uint64_t readCounter() {
         glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-        GLuint count = 0;
-        glGetNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &count);
-        return count;
+        return gl::readUint(counter_);
     }
 
     static void underBlending() {

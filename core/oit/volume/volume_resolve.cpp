@@ -86,9 +86,17 @@ GLuint VolumeResolve::colorFramebuffer(const FrameContext& frame) {
 }
 
 std::uint64_t VolumeResolve::nestingOverflow() const {
-    GLuint counts[gpu::VOLUME_STAT_COUNT] = {};
-    glGetNamedBufferSubData(stats_.id(), 0, sizeof(counts), counts);
-    return counts[gpu::VOLUME_STAT_NESTING_OVERFLOW];
+    static_assert(gpu::VOLUME_STAT_NESTING_OVERFLOW == 0u, "the overflow count is the buffer's first uint");
+    // The resolve wrote the counter through an SSBO atomic: reading it back needs the barrier.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    return gl::readUint(stats_);
+}
+
+void VolumeResolve::addStats(TechniqueStats& stats) const {
+    stats.bytes += bytes();
+    const std::uint64_t ignored = nestingOverflow();
+    stats.fragmentsDropped += ignored;
+    stats.overflowed = stats.overflowed || ignored > 0;
 }
 
 std::uint64_t VolumeResolve::bytes() const {

@@ -24,6 +24,8 @@ public:
     // Volume fragments ignored because more than VOLUME_MAX_NESTED volumes overlapped (reads
     // the counter back: call after the resolve).
     std::uint64_t nestingOverflow() const;
+    // After the resolve: the table's memory, and the ignored fragments as dropped (overflowed).
+    void addStats(TechniqueStats& stats) const;
     // The volumes around the eye last prepared (object ids), for the panel and tests.
     const std::vector<int>& eyeInside() const { return eyeInside_; }
     std::uint64_t bytes() const;
