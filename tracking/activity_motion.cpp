@@ -189,11 +189,7 @@ std::string ActivityModel::describe() const {
 SyntheticTraces generateActivityMotion(const ActivityParams& params) {
     const ActivityModel model(params);
     SyntheticTraces out;
-    if (params.truthHz > 0.0) {
-        const auto n = static_cast<long long>(std::floor(params.duration * params.truthHz));
-        out.truth.reserve(std::size_t(n + 1));
-        for (long long i = 0; i <= n; ++i) out.truth.push_back(model.at(double(i) / params.truthHz));
-    }
+    out.truth = sampleModel(model, params.duration, params.truthHz);
     SeededRng rng(params.seed ^ 0xd1b54a32d192ed03ull);  // the sensor's stream, apart from the motion's
     const double noise = degToRad(params.noiseDeg);
     if (params.sampleHz > 0.0) {

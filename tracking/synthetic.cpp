@@ -75,11 +75,7 @@ std::string HeadMotionModel::describe() const {
 SyntheticTraces generateHeadMotion(const HeadMotionParams& params) {
     const HeadMotionModel model(params);
     SyntheticTraces out;
-    if (params.truthHz > 0.0) {
-        const auto n = static_cast<long long>(std::floor(params.duration * params.truthHz));
-        out.truth.reserve(std::size_t(n + 1));
-        for (long long i = 0; i <= n; ++i) out.truth.push_back(model.at(double(i) / params.truthHz));
-    }
+    out.truth = sampleModel(model, params.duration, params.truthHz);
     // Separate stream from the model's so changing the sensor leaves the motion unchanged.
     SeededRng rng(params.seed ^ 0x9e3779b97f4a7c15ull);
     const double noise = degToRad(params.noiseDeg);

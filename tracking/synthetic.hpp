@@ -28,6 +28,7 @@
 // Box-Muller normal draws, so a seed gives the same traces with any standard library.
 #include "tracking/pose.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -71,6 +72,18 @@ private:
 struct SyntheticTraces {
     Trace truth, measured;
 };
+
+// The noise-free model (anything with `Pose at(double t) const`) sampled at `hz` over
+// [0, duration]: both generators' truth traces. Empty when hz <= 0.
+template <class Model>
+Trace sampleModel(const Model& model, double duration, double hz) {
+    Trace out;
+    if (!(hz > 0.0)) return out;
+    const auto n = static_cast<long long>(std::floor(duration * hz));
+    out.reserve(std::size_t(n + 1));
+    for (long long i = 0; i <= n; ++i) out.push_back(model.at(double(i) / hz));
+    return out;
+}
 
 SyntheticTraces generateHeadMotion(const HeadMotionParams& params);
 
