@@ -74,6 +74,13 @@ vec3 segmentIntegral(vec3 tau, float len, vec3 transmittance) {
 // difference of window depths, K (d_a - d_b) / (w_a w_b) with w = d + n / (f - n): no
 // cancellation of two large eye depths, so thin segments stay exact at any near/far ratio.
 void advanceTo(float d) {
+    // Free space (no volume around the ray, so tau and scatter are zero): only the position moves,
+    // which is the whole cost of the walk on a scene without volumes.
+    if (gMembers <= 0) {
+        gReachedDepth = gAtEye ? d : min(gReachedDepth, d);
+        gAtEye = false;
+        return;
+    }
     float w = d + uDepthOffset;
     float len;
     if (gAtEye) {
@@ -84,7 +91,6 @@ void advanceTo(float d) {
     }
     gAtEye = false;
     gReachedDepth = d;
-    if (all(equal(gTau, vec3(0.0)))) return;  // free space (scatter is tau * albedo: zero too)
     len *= gRayScale;
     vec3 transmittance = exp(-gTau * len);
     gRadiance += gTransmittance * gInscattered * gScatter * segmentIntegral(gTau, len, transmittance);
