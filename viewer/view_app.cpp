@@ -230,7 +230,7 @@ private:
 
     // The frame's output, or its heatmap when that view is chosen and the frame computed one.
     GLuint shownTexture() const {
-        return showingHeatmap() ? renderer_->coplanarity()->heatmapTexture() : renderer_->targets().outputColor();
+        return showingHeatmap() ? renderer_->coplanarity()->heatmapTexture() : renderer_->outputColor();
     }
 
     void renderFrame(glm::ivec2 size) {

@@ -1,6 +1,7 @@
 #include "frame/frame_renderer.hpp"
 
 #include "render/texture_readback.hpp"
+#include "render/zoom.hpp"
 
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
@@ -13,12 +14,16 @@ namespace strata {
 FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, glm::ivec2 size,
                                   Technique* technique, const FrameOptions& options) {
     auto cpuStart = std::chrono::steady_clock::now();
+    const glm::ivec2 displaySize = size;
+    size = zoomRenderSize(displaySize, options.zoom);
     targets_.resize(size);
+    enlarged_ = false;
     if (!opaqueProgram_.program) opaqueProgram_ = buildSceneProgram("common/opaque.frag.glsl");
     gl::GpuTimer* timer = options.timePasses ? &timer_ : nullptr;
 
     glm::mat4 view = camera.view();
-    glm::mat4 projection = camera.projection(float(size.x) / float(size.y));
+    glm::mat4 projection =
+        zoomProjection(camera.projection(float(displaySize.x) / float(displaySize.y)), displaySize, options.zoom);
     FrameContext frame{scene, camera, view, projection, projection * view, size, targets_, timer,
                        scene.transparentObjects()};
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
@@ -58,6 +63,16 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
             detector_ = std::make_unique<CoplanarityDetector>(options.coplanarityMaxBlockMiB);
         result.coplanarity = detector_->detect(frame);
     }
+    if (options.zoom > 1 && options.enlarge) {
+        gl::ScopedPass pass(timer, "enlarge");
+        DeflectionParams identity;
+        identity.zoom = options.zoom;
+        identity.filter = options.zoomFilter;
+        enlarge_.apply(targets_.outputColor(), displaySize, identity);
+        enlarged_ = true;
+    }
+    result.zoom = options.zoom;
+    result.renderSize = size;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (timer) result.passTimes = timer_.resolve();
     glFinish();
@@ -65,6 +80,7 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         // The detector is an inspection tool, not part of the technique's cost.
         if (p.name.rfind(CoplanarityDetector::kPassPrefix, 0) == 0) result.coplanarityMs += p.gpuMs;
         else result.gpuMs += p.gpuMs;
+        if (p.name == "enlarge") result.enlargeMs += p.gpuMs;
     }
     result.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
     return result;
@@ -90,6 +106,8 @@ std::uint64_t FrameRenderer::countFragments(const FrameContext& frame) {
     return gl::readUint(counter_);
 }
 
-Image FrameRenderer::readOutput() const { return readRgbaTexture(targets_.outputColor(), targets_.size()); }
+Image FrameRenderer::readOutput() const {
+    return enlarged_ ? enlarge_.readOutput() : readRgbaTexture(targets_.outputColor(), targets_.size());
+}
 
 }  // namespace strata

@@ -11,6 +11,7 @@
 #include "image/image.hpp"
 #include "oit/coplanarity_detector.hpp"
 #include "oit/technique.hpp"
+#include "render/deflection_warp.hpp"
 #include "render/frame_targets.hpp"
 #include "render/gpu_scene.hpp"
 
@@ -27,6 +28,14 @@ struct FrameOptions {
     // heatmap and counts are then in coplanarity(), its figures in FrameResult::coplanarity.
     bool detectCoplanarity = false;
     double coplanarityMaxBlockMiB = 0.0;  // > 0 caps the detector's node pool (tests force tiles)
+    // Zoom rendering (render/zoom.hpp): the frame is drawn at zoomRenderSize(size, zoom), every
+    // technique's buffers sized to that, then enlarged to `size` in one pass (timed as "enlarge")
+    // by pixel replication (`nearest`) or with a blur (`bilinear`). At 1 nothing is copied.
+    int zoom = 1;
+    DeflectFilter zoomFilter = DeflectFilter::Nearest;
+    // false: keep the reduced frame (targets()) and enlarge nothing; the caller folds the
+    // enlargement into its own pass (immersive mode's deflection: DeflectionParams::zoom).
+    bool enlarge = true;
 };
 
 struct FrameResult {
@@ -38,14 +47,20 @@ struct FrameResult {
     std::optional<std::uint64_t> fragmentsTotal;
     std::optional<CoplanarityStats> coplanarity;  // when FrameOptions::detectCoplanarity
     bool transparencyPass = false;
+    int zoom = 1;
+    glm::ivec2 renderSize{0, 0};   // what was drawn: zoomRenderSize(size, zoom)
+    double enlargeMs = 0.0;        // GPU time of the enlargement (in gpuMs and passTimes too)
 };
 
 class FrameRenderer {
 public:
     FrameResult render(const GpuScene& scene, const Camera& camera, glm::ivec2 size, Technique* technique,
                        const FrameOptions& options = {});
-    // The last frame's output colour (linear RGB, alpha 1), bottom row first.
+    // The last frame's output colour (linear RGB, alpha 1) at the size asked for, bottom row first:
+    // the enlarged frame when it was zoomed, the targets' output otherwise.
     Image readOutput() const;
+    GLuint outputColor() const { return enlarged_ ? enlarge_.outputColor() : targets_.outputColor(); }
+    // The targets the frame was drawn into (the reduced frame when zoomed).
     const FrameTargets& targets() const { return targets_; }
     // The detector of the last frame that asked for one (null before any did).
     const CoplanarityDetector* coplanarity() const { return detector_.get(); }
@@ -58,6 +73,8 @@ private:
     SceneProgram opaqueProgram_, countProgram_;
     gl::Buffer counter_;
     std::unique_ptr<CoplanarityDetector> detector_;  // created on the first frame that detects
+    DeflectionWarp enlarge_;  // zoom's enlargement: the identity map at the frame's zoom
+    bool enlarged_ = false;   // the last frame's output is enlarge_'s
 };
 
 }  // namespace strata

@@ -1,6 +1,7 @@
 #include "render/deflection_warp.hpp"
 
 #include "render/texture_readback.hpp"
+#include "render/zoom.hpp"
 
 #include "common/bindings.h"
 #include "gl/shader_program.hpp"
@@ -46,6 +47,15 @@ void DeflectionWarp::resize(glm::ivec2 size) {
 }
 
 void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const DeflectionParams& params) {
+    const glm::ivec2 expected = zoomRenderSize(size, params.zoom);
+    glm::ivec2 source{0, 0};
+    glGetTextureLevelParameteriv(sourceTexture, 0, GL_TEXTURE_WIDTH, &source.x);
+    glGetTextureLevelParameteriv(sourceTexture, 0, GL_TEXTURE_HEIGHT, &source.y);
+    if (source != expected)
+        throw std::invalid_argument("deflection source is " + std::to_string(source.x) + "x" + std::to_string(source.y) +
+                                    ", zoom " + std::to_string(params.zoom) + " of " + std::to_string(size.x) + "x" +
+                                    std::to_string(size.y) + " needs " + std::to_string(expected.x) + "x" +
+                                    std::to_string(expected.y));
     resize(size);
     if (!program_) {
         program_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/deflect.frag.glsl"});
@@ -59,6 +69,8 @@ void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const Deflecti
     glProgramUniform1i(p, glGetUniformLocation(p, "uBilinear"), params.filter == DeflectFilter::Bilinear ? 1 : 0);
     glProgramUniform1i(p, glGetUniformLocation(p, "uCount"), params.countOutside ? 1 : 0);
     glProgramUniform4fv(p, glGetUniformLocation(p, "uBorder"), 1, &params.border[0]);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uZoom"), params.zoom);
+    glProgramUniform2i(p, glGetUniformLocation(p, "uDisplaySize"), size.x, size.y);
     counted_ = params.countOutside;
     if (counted_) {
         const GLuint zero = 0;

@@ -20,6 +20,12 @@
 // does not depend on the driver's filter precision or on the source texture's filter state.
 // An output pixel whose s lies outside [0, w] x [0, h] gets the border colour and, when asked,
 // is counted (one atomic counter; reading the count waits for the GPU).
+//
+// Zoom rendering (render/zoom.hpp) folds into the same pass: with `zoom` z > 1 the source is the
+// frame drawn at zoomRenderSize(size, z) and the map still speaks in display pixels; the display
+// position s is read from source texel s / z. The identity map with `nearest` is then pixel
+// replication (the paper's enlargement, exact), `bilinear` the fast blur; a deflected frame is
+// enlarged and moved at once, and a small source is what is read.
 #include "gl/objects.hpp"
 #include "image/image.hpp"
 
@@ -44,6 +50,7 @@ struct DeflectionParams {
     DeflectFilter filter = DeflectFilter::Bilinear;
     glm::vec4 border{0.0f, 0.0f, 0.0f, 1.0f};
     bool countOutside = false;       // count output pixels that sample outside the source
+    int zoom = 1;                    // display pixels per source texel, a side (render/zoom.hpp)
 };
 
 // The inverse map the pass evaluates for `params` (either mode), output -> source.
@@ -61,9 +68,10 @@ inline glm::vec2 shiftFromYDown(glm::dvec2 shiftYDown) {
 
 class DeflectionWarp {
 public:
-    // Warps `sourceTexture` (a 2D RGBA texture of `size`) into this warp's own RGBA32F target of
-    // the same size, reallocated when the size changes. Leaves framebuffer 0 bound, depth test,
-    // blending and scissor off.
+    // Warps `sourceTexture` (a 2D RGBA texture of zoomRenderSize(size, params.zoom)) into this
+    // warp's own RGBA32F target of `size`, reallocated when the size changes. Throws
+    // std::invalid_argument when the source's size is not that. Leaves framebuffer 0 bound, depth
+    // test, blending and scissor off.
     void apply(GLuint sourceTexture, glm::ivec2 size, const DeflectionParams& params);
 
     GLuint outputColor() const { return color_.id(); }

@@ -1,7 +1,10 @@
 #version 450 core
-// Image deflection (core/render/deflection_warp.hpp): each output pixel centre p, in GL window
-// coordinates (origin bottom-left corner, y up), samples the source at s = uMap * (p, 1), the
-// inverse map. Outside [0, w] x [0, h] (or behind, w <= 0) gives the border colour and counts.
+// Image deflection and zoom enlargement in one pass (core/render/deflection_warp.hpp): each
+// output pixel centre p, in GL window coordinates of the display (origin bottom-left corner, y up),
+// maps to the display position d = uMap * (p, 1), the inverse map, which lies in source texel
+// d / uZoom: the source is the frame drawn at 1/uZoom of the display's size (render/zoom.hpp), so
+// with the identity map and nearest sampling this is pixel replication. Outside the display
+// [0, W] x [0, H] (or behind, w <= 0) gives the border colour and counts.
 #include "bindings.h"
 layout(binding = BIND_SOURCE) uniform sampler2D uSource;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uOutside;
@@ -9,6 +12,8 @@ uniform mat3 uMap;
 uniform int uBilinear;   // 0: nearest texel, 1: bilinear by hand
 uniform int uCount;      // 1: count border pixels
 uniform vec4 uBorder;
+uniform int uZoom;          // display pixels per source texel, a side (1: same size)
+uniform ivec2 uDisplaySize; // the display (output) size the map's pixels refer to
 out vec4 fragColor;
 
 vec4 fetchClamped(ivec2 t, ivec2 size) {
@@ -20,9 +25,12 @@ vec4 fetchClamped(ivec2 t, ivec2 size) {
 void main() {
     ivec2 size = textureSize(uSource, 0);
     vec3 h = uMap * vec3(gl_FragCoord.xy, 1.0);
-    vec2 s = h.xy / h.z;
+    vec2 d = h.xy / h.z;
     // The negated test also sends NaN (a degenerate map) to the border.
-    bool inside = h.z > 0.0 && all(greaterThanEqual(s, vec2(0.0))) && all(lessThanEqual(s, vec2(size)));
+    bool inside = h.z > 0.0 && all(greaterThanEqual(d, vec2(0.0))) && all(lessThanEqual(d, vec2(uDisplaySize)));
+    // Display pixel centres (i + 0.5) never fall on a texel edge for an integer zoom, so floor()
+    // below replicates exactly; the division is the only rounding and is far from those edges.
+    vec2 s = d / float(uZoom);
     vec4 color = uBorder;
     if (!inside) {
         if (uCount != 0) atomicCounterIncrement(uOutside);
