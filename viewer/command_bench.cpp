@@ -7,6 +7,7 @@
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
 #include "render/frame_size.hpp"
+#include "render/zoom.hpp"
 #include "settings_options.hpp"
 
 #include <cstdio>
@@ -25,6 +26,11 @@ struct BenchArgs {
     std::string cameraPath;
     std::string json, csv, images;
     SettingsArgs settings;
+    std::string zoom = "1";
+    bool zoomBlur = false;
+    double budgetMs = 0.0;
+    std::string controller = "reactive";
+    int maxZoom = 8;
 };
 
 std::vector<std::string> splitModes(const std::string& text) {
@@ -51,6 +57,15 @@ void run(const BenchArgs& a) {
     // Settings are checked against every mode before the scene loads or a frame renders.
     options.settings = resolveSettingsArgs(benchModeIds(options.modes), a.settings);
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
+    options.zoom = parseZoom(a.zoom);
+    options.zoomFilter = a.zoomBlur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
+    if (a.budgetMs > 0.0) {
+        ZoomBudget budget;
+        budget.targetMs = a.budgetMs;
+        budget.maxZoom = a.maxZoom;
+        options.budget = budget;
+        options.zoomController = parseZoomController(a.controller);
+    }
     if (!a.images.empty()) checkFolderCreatable(a.images);
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
@@ -88,6 +103,20 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--json", args->json, "write the JSON report here");
     cmd->add_option("--csv", args->csv, "write one CSV row per technique here");
     cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
+    auto* zoom = cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16)")->capture_default_str();
+    cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
+    auto* budget = cmd->add_option("--frame-budget-ms", args->budgetMs,
+                                   "pick the zoom per frame for this frame time (with --zoom-controller)")
+                       ->check(CLI::Range(0.001, 1e6));
+    budget->excludes(zoom);
+    cmd->add_option("--zoom-controller", args->controller, "reactive or predictive (with --frame-budget-ms)")
+        ->check(CLI::IsMember({"reactive", "predictive"}))
+        ->capture_default_str()
+        ->needs(budget);
+    cmd->add_option("--zoom-max", args->maxZoom, "the largest zoom a controller may pick")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str()
+        ->needs(budget);
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

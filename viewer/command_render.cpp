@@ -10,6 +10,7 @@
 #include "oit/technique_settings.hpp"
 #include "render/coplanarity.hpp"
 #include "render/frame_size.hpp"
+#include "render/zoom.hpp"
 #include "frame/frame_renderer.hpp"
 #include "settings_options.hpp"
 
@@ -28,10 +29,13 @@ struct RenderArgs {
     std::string out;
     std::string heatmap;
     SettingsArgs settings;
+    std::string zoom = "1";
+    bool zoomBlur = false;
 };
 
 void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
+    const int zoom = parseZoom(a.zoom);
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
     const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
     // Images are written after the frame: refuse an unwritable destination before rendering.
@@ -52,13 +56,17 @@ void run(const RenderArgs& a) {
     options.countFragments = true;
     // The heatmap comes from the GPU detector on the same frame (oit/coplanarity_detector.hpp).
     options.detectCoplanarity = !a.heatmap.empty();
+    options.zoom = zoom;
+    options.zoomFilter = a.zoomBlur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
     FrameResult result = renderer.render(gpu, camera, size, technique.get(), options);
     gl::checkGl("render");
     Image image = renderer.readOutput();
     gl::checkGl("read back");
     Image heat;
     if (result.coplanarity) {
-        heat = coplanarityHeatmap(renderer.coplanarity()->readPixels().largestLayer, size.x, size.y);
+        // Of the frame drawn: at a zoom, the reduced one.
+        heat = coplanarityHeatmap(renderer.coplanarity()->readPixels().largestLayer, result.renderSize.x,
+                                  result.renderSize.y);
         gl::checkGl("coplanarity read back");
     }
     // The image and its heatmap appear together or not at all.
@@ -67,8 +75,11 @@ void run(const RenderArgs& a) {
     if (!a.heatmap.empty()) writeImage(outputs, a.heatmap, heat);
     outputs.commit();
     const auto& s = result.stats;
-    std::printf("%s: %s %dx%d, %.3f ms GPU (%d passes), %llu of %llu fragments%s\n", a.out.c_str(), a.mode.c_str(),
-                size.x, size.y, result.gpuMs, s.passes, (unsigned long long)s.fragmentsCaptured,
+    const std::string zoomed = zoom > 1 ? " (drawn at " + std::to_string(result.renderSize.x) + "x" +
+                                              std::to_string(result.renderSize.y) + ", zoom " + std::to_string(zoom) + ")"
+                                        : "";
+    std::printf("%s: %s %dx%d%s, %.3f ms GPU (%d passes), %llu of %llu fragments%s\n", a.out.c_str(), a.mode.c_str(),
+                size.x, size.y, zoomed.c_str(), result.gpuMs, s.passes, (unsigned long long)s.fragmentsCaptured,
                 (unsigned long long)result.fragmentsTotal.value_or(0), s.overflowed ? ", OVERFLOWED" : "");
     for (const auto& p : result.passTimes)
         std::printf("  %-20s %9.3f ms GPU %9.3f ms CPU\n", p.name.c_str(), p.gpuMs, p.cpuMs);
@@ -103,6 +114,9 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--out", args->out, "output image (.png sRGB 8-bit or .exr linear half)")->required();
     cmd->add_option("--heatmap", args->heatmap, "coplanarity heatmap image: per pixel the largest number of fragments in one depth layer, "
                    "in Fig. 13's colours (GPU detector); prints C_p");
+    cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16); the heatmap is of the drawn frame")
+        ->capture_default_str();
+    cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

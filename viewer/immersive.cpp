@@ -21,6 +21,7 @@ WindowModeFactory immersiveMode(const ViewOptions&, Scene) {
 
 #include "gl/context.hpp"
 #include "render/deflection_warp.hpp"
+#include "zoom_driver.hpp"
 #include "frame/frame_renderer.hpp"
 #include "tracking/deflection.hpp"
 #include "tracking/predictor.hpp"
@@ -111,6 +112,7 @@ struct Eye {
     DeflectionWarp warp;
     Camera rendered;             // camera of the rendered image (pose 1)
     std::uint64_t uncovered = 0; // border pixels of the last deflection
+    int zoom = 1;                // the rendered image is at 1/zoom of the eye's size
 };
 
 // Exponential moving average of a time in seconds; the first sample sets it.
@@ -139,6 +141,7 @@ public:
         choices_.deflection = int(tracking::parseDeflect(options.deflect));
         choices_.filter = int(DeflectFilter::Bilinear);
         choices_.stereo = options.stereo;
+        zoom_.choices() = zoomChoicesFrom(options);
         choices_.ipdMm = float(options.ipdMm);
         choices_.extraLatencyMs = float(options.extraLatencyMs);
         history_.resize(predictorNames_.size() * kDeflects.size());
@@ -171,10 +174,19 @@ public:
         lastHorizon1_ = display1 - tracking_.latestSampleTime();
         const float signs[2] = {stereo ? -1.0f : 0.0f, 1.0f};
         const std::size_t predictor = std::size_t(choices_.predictor);
+        // Section 4.2 of zoom rendering: the head's angular speed between the last two frames'
+        // predicted poses raises the zoom during fast turns. One zoom for both eyes.
+        headDegPerSecond_ = headSpeed(inFlight_.first[predictor], display1);
+        FrameOptions frameOptions;
+        frameOptions.timePasses = true;
+        frameOptions.enlarge = false;  // the deflection enlarges, in the same pass
+        zoom_.begin(scene_, eyeCamera(inFlight_.first[predictor], signs[0]), inFlight_.eyeSize, technique_.get(),
+                    frameOptions, headDegPerSecond_);
         for (int e = 0; e < eyes; ++e) {
             eyes_[e].rendered = eyeCamera(inFlight_.first[predictor], signs[e]);
-            renderEye(eyes_[e], inFlight_.eyeSize);
+            renderEye(eyes_[e], inFlight_.eyeSize, frameOptions);
         }
+        zoom_.end(frame_, technique_.get());
         // Step 2: re-read, predict again for the now better-known display time, deflect.
         inFlight_.t1 = glfwGetTime();
         const double trace1 = inFlight_.trace0 + inFlight_.paceScale * (inFlight_.t1 - inFlight_.t0);
@@ -204,6 +216,8 @@ public:
         ImmersivePanelState state;
         state.windowSize = size;
         state.eyeSize = inFlight_.eyeSize;
+        state.zoom = &zoom_;
+        state.headDegPerSecond = headDegPerSecond_;
         state.sceneName = scene_.scene().name;
         state.techniqueId = technique_->info().id;
         state.renderer = device_.renderer;
@@ -283,12 +297,21 @@ private:
         return c;
     }
 
-    void renderEye(Eye& eye, glm::ivec2 eyeSize) {
-        FrameOptions frameOptions;
-        frameOptions.timePasses = true;
-        frameOptions.countFragments = false;
+    // Degrees per second between the previous frame's predicted head orientation and this one's.
+    double headSpeed(const tracking::PoseSample& head, double displayTime) {
+        double speed = 0.0;
+        if (hasLastHead_ && displayTime > lastHeadTime_)
+            speed = tracking::radToDeg(tracking::angleBetween(lastHead_.q, head.q)) / (displayTime - lastHeadTime_);
+        lastHead_ = head;
+        lastHeadTime_ = displayTime;
+        hasLastHead_ = true;
+        return speed;
+    }
+
+    void renderEye(Eye& eye, glm::ivec2 eyeSize, const FrameOptions& frameOptions) {
         try {
             frame_ = eye.renderer.render(scene_, eye.rendered, eyeSize, technique_.get(), frameOptions);
+            eye.zoom = frame_.zoom;
         } catch (const std::exception& e) {
             if (smokeTest()) throw;
             lastError_ = e.what();
@@ -302,6 +325,7 @@ private:
         DeflectionParams params;
         params.filter = DeflectFilter(choices_.filter);
         params.countOutside = true;
+        params.zoom = eye.zoom;  // the enlargement folds into the deflection (render/deflection_warp.hpp)
         params.mode = DeflectMode::Shift;  // zero shift with nearest: an exact copy for `none`
         if (deflect == tracking::Deflect::None) {
             params.filter = DeflectFilter::Nearest;
@@ -362,6 +386,11 @@ private:
     FrameInFlight inFlight_;
     // Last deflection and errors.
     glm::vec2 lastShift_{0.0f};
+    // Zoom rendering and the head speed that drives it.
+    ZoomDriver zoom_;
+    tracking::PoseSample lastHead_;
+    double lastHeadTime_ = 0.0, headDegPerSecond_ = 0.0;
+    bool hasLastHead_ = false;
     double lastDeflectDeg_ = 0.0, lastErrorDeg_ = 0.0, lastErrorMm_ = 0.0;
     std::vector<FrameHistory> history_;  // predictor x deflection, degrees
     std::string lastError_;

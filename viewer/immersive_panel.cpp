@@ -1,4 +1,5 @@
 #include "immersive_panel.hpp"
+#include "zoom_driver.hpp"
 
 #include "panel_widgets.hpp"
 
@@ -99,6 +100,10 @@ void drawImmersivePanel(const ImmersivePanelState& state, ImmersiveChoices& choi
     ImGui::TextWrapped("%s   %s", state.sceneName.c_str(), state.techniqueId.c_str());
     ImGui::TextWrapped("%s", state.renderer.c_str());
     if (ImGui::CollapsingHeader("Head tracking", ImGuiTreeNodeFlags_DefaultOpen)) drawHeadTracking(state, choices, requests);
+    if (state.zoom && ImGui::CollapsingHeader("Zoom rendering", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Text("head %.0f deg/s", state.headDegPerSecond);
+        drawZoomSection(*state.zoom, true);
+    }
     if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("GPU %.3f ms   CPU %.3f ms per eye   %.0f fps", state.frame->gpuMs, state.frame->cpuMs,
                     ImGui::GetIO().Framerate);

@@ -17,6 +17,8 @@
 
 namespace strata {
 
+class ZoomDriver;
+
 // What the panel lets the user change; the mode uses them from the next frame on.
 struct ImmersiveChoices {
     int predictor = 0;            // index into ImmersivePanelState::predictors
@@ -33,6 +35,8 @@ struct ImmersiveRequests {
 
 struct ImmersivePanelState {
     glm::ivec2 windowSize{0}, eyeSize{0};
+    ZoomDriver* zoom = nullptr;   // zoom rendering: its section edits the driver's choices
+    double headDegPerSecond = 0.0;
     std::string sceneName, techniqueId, renderer;
     // Trace and its clock.
     std::string traceName, truthLabel;

@@ -1,4 +1,5 @@
 #include "panel.hpp"
+#include "zoom_driver.hpp"
 
 #include "panel_widgets.hpp"
 #include "settings_panel.hpp"
@@ -201,6 +202,8 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     if (ImGui::CollapsingHeader("Fragments and memory", ImGuiTreeNodeFlags_DefaultOpen)) drawFragments(state, settings);
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) drawScene(state);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(state, requests);
+    if (state.zoom && ImGui::CollapsingHeader("Zoom rendering", ImGuiTreeNodeFlags_DefaultOpen))
+        drawZoomSection(*state.zoom, false);
     if (ImGui::Checkbox("vsync", &settings.vsync)) requests.vsyncChanged = true;
     ImGui::SameLine();
     drawErrorLines(state.lastGlError, state.lastError);

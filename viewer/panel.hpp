@@ -19,6 +19,8 @@
 
 namespace strata {
 
+class ZoomDriver;
+
 // The last frame on which every transparent fragment was counted.
 struct FragmentCount {
     std::uint64_t frame = 0;
@@ -49,6 +51,7 @@ struct PanelState {
     std::string lastError;      // render or shader error, empty when none
     std::string lastGlError;
     std::string lastSaved;      // last screenshot or path written
+    ZoomDriver* zoom = nullptr; // zoom rendering: its section edits the driver's choices
 };
 
 // Settings the panel edits in place: copies, which the viewer applies between frames.

@@ -2,6 +2,7 @@
 // frame pipeline the headless commands use. Each frame renders the scene with the chosen
 // technique at the framebuffer size, presents the linear output, and draws the panel on top.
 #include "view_app.hpp"
+#include "zoom_driver.hpp"
 
 #include "camera_controls.hpp"
 #include "immersive.hpp"
@@ -52,6 +53,7 @@ public:
         technique_ = createConfiguredTechnique(techniqueId_, techniqueSettings_);
         settings_.technique = technique_->settings();
         settings_.view = options.view;
+        zoom_.choices() = zoomChoicesFrom(options);
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
             path_ = CameraPath::read(*options.playPath);
@@ -103,6 +105,7 @@ public:
         state.lastError = lastError_;
         state.lastGlError = lastGlError;
         state.lastSaved = lastSaved_;
+        state.zoom = &zoom_;
         strata::drawPanel(state, settings_, requests_);
     }
 
@@ -246,8 +249,12 @@ private:
             technique_->setSettings(settings_.technique);
             techniqueSettings_[techniqueId_] = settings_.technique;
         }
+        zoom_.begin(scene_, camera_, size, technique_.get(), frameOptions);
+        // The heatmap is of the frame drawn: shown at the window's size, it needs zoom 1.
+        if (frameOptions.detectCoplanarity) frameOptions.zoom = 1;
         try {
             frame_ = renderer_->render(scene_, camera_, size, technique_.get(), frameOptions);
+            zoom_.end(frame_, technique_.get());
             if (frame_.fragmentsTotal) count_ = FragmentCount{frameIndex_, *frame_.fragmentsTotal, frame_.stats};
         } catch (const std::exception& e) {
             if (smokeTest()) throw;
@@ -301,6 +308,7 @@ private:
     CameraControls controls_;
     Camera baseCamera_;
     std::unique_ptr<FrameRenderer> renderer_ = std::make_unique<FrameRenderer>();
+    ZoomDriver zoom_;
     std::unique_ptr<Technique> technique_;
     std::string techniqueId_;
     Camera camera_;  // this frame's, from update()

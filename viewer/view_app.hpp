@@ -31,7 +31,17 @@ struct ViewOptions {
     int exitAfterFrames = 0;
     std::optional<std::filesystem::path> screenshot;
     int width = 1280, height = 800;
+    // Zoom rendering (--zoom, or --frame-budget-ms with --zoom-controller; the panel changes them).
+    int zoom = 1;
+    bool zoomBlur = false;
+    double frameBudgetMs = 0.0;               // > 0: a controller picks the zoom
+    std::string zoomController = "reactive";
+    int zoomMax = 8;
 };
+
+// The panel's zoom choices the command line asks for.
+struct ZoomChoices;
+ZoomChoices zoomChoicesFrom(const ViewOptions& options);
 
 // Runs the window loop (viewer/window_loop.hpp) in the walkthrough mode, or with `immersive` in
 // the head-tracked mode (viewer/immersive.hpp), until the window closes or the smoke test is

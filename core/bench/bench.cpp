@@ -3,6 +3,7 @@
 #include "gl/debug.hpp"
 #include "oit/technique.hpp"
 #include "frame/frame_renderer.hpp"
+#include "frame/zoom_calibration.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +42,18 @@ std::vector<Camera> benchCameras(const GpuScene& scene, const BenchOptions& opti
 
 }  // namespace
 
+std::vector<BudgetExcursion> budgetExcursions(const std::vector<double>& ms, double targetMs, double band) {
+    std::vector<BudgetExcursion> runs;
+    const double limit = targetMs * (1.0 + band);
+    for (std::size_t f = 0; f < ms.size(); ++f) {
+        if (ms[f] <= limit) continue;
+        if (runs.empty() || runs.back().firstFrame + runs.back().frames != int(f)) runs.push_back({int(f), 0, 0.0});
+        runs.back().frames += 1;
+        runs.back().peakOverTarget = std::max(runs.back().peakOverTarget, ms[f] / targetMs);
+    }
+    return runs;
+}
+
 std::vector<std::string> benchModeIds(const std::vector<std::string>& requested) {
     std::vector<std::string> modes = requested;
     if (modes.empty())
@@ -78,6 +91,13 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     report.device = gl::currentDeviceInfo();
     report.triangles = scene.triangleCount();
     report.objects = scene.objects().size();
+    report.zoom = options.budget ? 0 : options.zoom;
+    report.zoomFilter = std::string(deflectFilterName(options.zoomFilter));
+    report.budget = options.budget;
+    if (options.budget) report.zoomController = std::string(zoomControllerName(options.zoomController));
+    // A zoomed technique is compared with the reference at zoom 1: the reference's own rows then
+    // render like any other technique's, against a reference technique of their own.
+    const bool zoomed = options.zoom > 1 || options.budget.has_value();
 
     std::vector<Camera> cameras = benchCameras(scene, options);
     {
@@ -103,33 +123,39 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         int key = -1;  // the frame the image shows (0 for every frame of a fixed camera)
     };
     std::map<std::string, Reference> references;  // by id: abuffer, abuffer-volume
-    FrameRenderer renderer;
+    // References draw in a renderer of their own, so a zoomed technique's targets keep their size.
+    FrameRenderer renderer, referenceRenderer;
     auto keyOf = [&](int f) { return options.cameraPath ? f : 0; };
-    auto referenceFor = [&](Reference& ref, int f) -> const Image& {
+    auto referenceFor = [&](Reference& ref, const std::string& referenceId, int f) -> const Image& {
         if (ref.key != keyOf(f)) {
+            if (!ref.technique) ref.technique = createConfiguredTechnique(referenceId, options.settings);
             FrameOptions untimed;
             untimed.timePasses = false;
-            renderer.render(scene, cameras[f], options.size, ref.technique.get(), untimed);
+            referenceRenderer.render(scene, cameras[f], options.size, ref.technique.get(), untimed);
             gl::checkGl("bench reference frame");
-            ref.image = renderer.readOutput();
+            ref.image = referenceRenderer.readOutput();
             ref.key = keyOf(f);
-            if (options.referenceFrame && &ref == &references.at("abuffer")) options.referenceFrame(f, ref.image);
+            if (options.referenceFrame && referenceId == "abuffer") options.referenceFrame(f, ref.image);
         }
         return ref.image;
     };
     for (std::size_t m = 0; m < modes.size(); ++m) {
         const std::string& id = modes[m];
+        const std::string referenceId = benchReferenceOf(id);
+        // Zoomed, an unrequested reference needs no rows of its own (referenceFor draws its frames).
+        if (zoomed && referenceId == id && !requested(id)) continue;
         if (options.progress)
             options.progress("bench: [" + std::to_string(m + 1) + "/" + std::to_string(modes.size()) + "] " + id);
         std::unique_ptr<Technique> owned = createConfiguredTechnique(id, options.settings);
         Technique* technique = owned.get();
-        const std::string referenceId = benchReferenceOf(id);
-        const bool isReference = referenceId == id;
+        const bool isReference = referenceId == id && !zoomed;
         Reference& reference = references[referenceId];
         if (isReference) reference.technique = std::move(owned);
 
         FrameOptions frameOptions;
         frameOptions.countFragments = true;
+        frameOptions.zoom = options.budget ? 1 : options.zoom;
+        frameOptions.zoomFilter = options.zoomFilter;
         for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique, frameOptions);
         gl::checkGl(("bench warm-up of " + id).c_str());
 
@@ -140,16 +166,42 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.handlesCoplanarity = technique->info().handlesCoplanarity;
         mode.settingDescriptions = technique->settingDescriptions();
         mode.settings = technique->settings();
-        std::vector<double> gpu, cpu, opaque;
+        std::unique_ptr<ZoomController> controller;
+        if (options.budget) {
+            ZoomCostModel model;
+            if (options.zoomController == ZoomControllerKind::Predictive)
+                model = calibrateZoomCost(*technique, options.size, options.budget->maxZoom, options.progress).model;
+            mode.calibratedModel = model;
+            controller = makeZoomController(options.zoomController, *options.budget, model);
+        }
+        mode.zoom = options.budget ? 0 : options.zoom;
+        std::vector<double> gpu, cpu, opaque, frame, enlarge;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
         for (int f = 0; f < options.frames; ++f) {
             // The reference frame first (when it is not in hand), so the technique's frame is the
             // last one rendered when its output is read.
-            if (!isReference) referenceFor(reference, f);
+            if (!isReference) referenceFor(reference, referenceId, f);
+            FrameLoad load;
+            if (controller) {
+                const Camera& c = cameras[f];
+                load.displaySize = options.size;
+                load.transparentArea = transparentScreenArea(
+                    scene, c.projection(float(options.size.x) / float(options.size.y)) * c.view(), options.size);
+                frameOptions.zoom = controller->choose(load);
+            }
             FrameResult r = renderer.render(scene, cameras[f], options.size, technique, frameOptions);
             gl::checkGl(("bench frame of " + id).c_str());
+            if (controller) {
+                const double predicted = controller->predictedMs();
+                controller->observe(FrameCost{frameOptions.zoom, r.gpuMs, fragmentsRasterized(r.stats), load});
+                mode.frameZoom.push_back(frameOptions.zoom);
+                mode.frameMs.push_back(r.gpuMs);
+                mode.framePredictedMs.push_back(std::isfinite(predicted) ? predicted : 0.0);
+            }
+            frame.push_back(r.gpuMs);
+            enlarge.push_back(r.enlargeMs);
             double techniqueMs = 0.0, opaqueMs = 0.0;
             std::map<std::string, double> frameByPass;
             for (const auto& p : r.passTimes) {
@@ -193,13 +245,19 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.msP95 = percentile(gpu, 0.95);
         mode.cpuMsMedian = percentile(cpu, 0.5);
         mode.opaqueMsMedian = percentile(opaque, 0.5);
+        mode.frameMsMedian = percentile(frame, 0.5);
+        mode.enlargeMsMedian = percentile(enlarge, 0.5);
+        if (options.budget) {
+            mode.budgetHits = budgetHits(mode.frameMs, options.budget->targetMs, options.budget->band);
+            mode.excursions = budgetExcursions(mode.frameMs, options.budget->targetMs, options.budget->band);
+        }
         for (const auto& name : passOrder) mode.passMsMedian.emplace_back(name, percentile(perPass[name], 0.5));
         mode.rmse = error.rmse();
         mode.psnr = error.psnr();
         mode.maxAbsError = error.maxAbsError();
         mode.robustnessRatio = mode.fragmentsTotal ? double(mode.fragmentsCaptured) / double(mode.fragmentsTotal) : 1.0;
         mode.reference = referenceId;
-        if (!isReference || requested(id)) report.modes.push_back(std::move(mode));
+        if (referenceId != id || requested(id)) report.modes.push_back(std::move(mode));
     }
     return report;
 }

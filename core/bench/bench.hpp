@@ -7,9 +7,11 @@
 // does not grow with the frame count. With a camera path, each technique frame is preceded by the
 // reference frame for the same camera (untimed); with a fixed camera the reference renders once.
 #include "camera/camera_path.hpp"
+#include "frame/zoom_controller.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"
 #include "oit/technique_settings.hpp"
+#include "render/deflection_warp.hpp"
 #include "render/gpu_scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -38,6 +40,22 @@ struct BenchOptions {
     // soon as it is read back; may be empty. The reference is what every error figure rests on,
     // so tests check these frames against the CPU ray cast (tests/bench_gl_test.cpp).
     std::function<void(int frame, const Image& reference)> referenceFrame;
+    // Zoom rendering (render/zoom.hpp): techniques draw at 1/zoom of `size` and are enlarged
+    // (zoomFilter: nearest replicates, bilinear blurs); the reference always draws at zoom 1, so
+    // the error includes what the zoom loses. With `budget` a controller picks the zoom per frame
+    // instead (the predictive one calibrated per technique first), and each mode reports its
+    // per-frame zoom and time.
+    int zoom = 1;
+    DeflectFilter zoomFilter = DeflectFilter::Nearest;
+    std::optional<ZoomBudget> budget;
+    ZoomControllerKind zoomController = ZoomControllerKind::Reactive;
+};
+
+// A run of consecutive frames over the budget's upper edge (target x (1 + band)).
+struct BudgetExcursion {
+    int firstFrame = 0;
+    int frames = 0;
+    double peakOverTarget = 0.0;   // the worst frame's time / target
 };
 
 struct BenchMode {
@@ -66,6 +84,17 @@ struct BenchMode {
     std::vector<std::pair<std::string, double>> passMsMedian;  // per pass name
     std::vector<SettingDescription> settingDescriptions;       // what the mode ran with
     SettingValues settings;
+    // The whole frame's GPU time (opaque pass, technique, enlargement): what a zoom speeds up.
+    double frameMsMedian = 0.0;
+    double enlargeMsMedian = 0.0;
+    int zoom = 1;                                             // fixed zoom (0 under a controller)
+    // Under a frame budget (BenchOptions::budget): per frame, the zoom, the frame time and the
+    // controller's prediction (NaN-free: 0 where it had none), and how the times met the target.
+    std::vector<int> frameZoom;
+    std::vector<double> frameMs, framePredictedMs;
+    BudgetHits budgetHits;
+    std::vector<BudgetExcursion> excursions;
+    ZoomCostModel calibratedModel;                            // predictive: what calibration fitted
 };
 
 struct BenchReport {
@@ -81,7 +110,14 @@ struct BenchReport {
     double coplanarityOnePerLayerRobustness = 1.0;  // layers / fragments: R_h of plain f2b, dual, bun
     std::size_t triangles = 0;
     std::size_t objects = 0;
+    int zoom = 1;
+    std::string zoomFilter = "nearest";
+    std::optional<ZoomBudget> budget;
+    std::string zoomController;        // "reactive" or "predictive" under a budget
 };
+
+// Maximal runs of frames over targetMs x (1 + band).
+std::vector<BudgetExcursion> budgetExcursions(const std::vector<double>& ms, double targetMs, double band);
 
 // The techniques a bench of `modes` renders (empty: all), the reference first: the set its
 // settings are resolved against. Throws std::invalid_argument for an unknown id.

@@ -63,6 +63,27 @@ nlohmann::json benchToJson(const BenchReport& r) {
             else settings[d.name] = m.settings[i];
         }
         modes.back()["settings"] = settings;
+        modes.back()["frame_ms_median"] = finite(m.frameMsMedian);
+        modes.back()["enlarge_ms_median"] = finite(m.enlargeMsMedian);
+        modes.back()["zoom"] = m.zoom;
+        if (r.budget) {
+            nlohmann::json excursions = nlohmann::json::array();
+            for (const auto& e : m.excursions)
+                excursions.push_back({{"first_frame", e.firstFrame}, {"frames", e.frames},
+                                      {"peak_over_target", finite(e.peakOverTarget)}});
+            nlohmann::json predicted = nlohmann::json::array();
+            for (double p : m.framePredictedMs) predicted.push_back(finite(p));
+            nlohmann::json times = nlohmann::json::array();
+            for (double t : m.frameMs) times.push_back(finite(t));
+            modes.back()["budget"] = {
+                {"frame_zoom", m.frameZoom}, {"frame_ms", times}, {"frame_predicted_ms", predicted},
+                {"within_band", finite(m.budgetHits.within)}, {"not_over_band", finite(m.budgetHits.notOver)},
+                {"excursions", excursions},
+                {"model", {{"fixed_ms", finite(m.calibratedModel.fixedMs)},
+                           {"ms_per_megapixel", finite(m.calibratedModel.msPerMegapixel)},
+                           {"ms_per_megafragment", finite(m.calibratedModel.msPerMegafragment)}}},
+            };
+        }
     }
     return {
         {"scene", r.scene},
@@ -75,6 +96,10 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"coplanarity_one_per_layer_robustness", finite(r.coplanarityOnePerLayerRobustness)},
         {"triangles", r.triangles},
         {"objects", r.objects},
+        {"zoom", r.zoom},
+        {"zoom_filter", r.zoomFilter},
+        {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
+        {"zoom_controller", r.zoomController},
     };
 }
 
@@ -84,8 +109,15 @@ std::string benchToTable(const BenchReport& r) {
         << r.objects << " objects, " << r.triangles << " triangles\n";
     out << "device " << r.device.renderer << " (" << r.device.vendor << ", " << r.device.version << ")\n";
     out << "coplanarity probability C_p " << fmt("%.3f", r.coplanarityProbability) << "  R_h one per layer "
-        << fmt("%.3f", r.coplanarityOnePerLayerRobustness) << "  reference " << r.reference
-        << "\n\n";
+        << fmt("%.3f", r.coplanarityOnePerLayerRobustness) << "  reference " << r.reference << "\n";
+    if (r.budget)
+        out << "zoom chosen per frame by the " << r.zoomController << " controller for " << fmt("%.2f", r.budget->targetMs)
+            << " ms (+-" << fmt("%.0f", r.budget->band * 100.0) << " %), zoom " << r.budget->minZoom << ".."
+            << r.budget->maxZoom << ", " << r.zoomFilter << "; errors against the reference at zoom 1\n";
+    else if (r.zoom > 1)
+        out << "zoom " << r.zoom << " (" << r.zoomFilter << "): drawn at 1/" << r.zoom
+            << " size and enlarged; errors against the reference at zoom 1\n";
+    out << "\n";
     const std::optional<double> floorTime = floorMs(r);
     char line[256];
     std::snprintf(line, sizeof line, "%-16s %9s %9s %9s %6s %11s %12s %7s %9s %8s %9s%s\n", "mode", "gpu ms", "p95 ms",
@@ -98,6 +130,27 @@ std::string benchToTable(const BenchReport& r) {
                       (unsigned long long)m.fragmentsCaptured, m.robustnessRatio, m.rmse, m.psnr, m.maxAbsError,
                       overFloor.c_str(), m.overflowed ? "  OVERFLOW" : (m.regrows ? "  (grew)" : ""));
         out << line;
+    }
+    if (r.zoom > 1 || r.budget) {
+        out << "\n";
+        std::snprintf(line, sizeof line, "%-16s %9s %10s %9s %9s %9s %s\n", "mode", "frame ms", "enlarge ms", "mean z",
+                      "in band", "<= band", "excursions over the band (first frame: frames, peak/target)");
+        out << line;
+        for (const auto& m : r.modes) {
+            double meanZoom = m.zoom;
+            if (!m.frameZoom.empty()) {
+                meanZoom = 0.0;
+                for (int z : m.frameZoom) meanZoom += z;
+                meanZoom /= double(m.frameZoom.size());
+            }
+            std::string runs;
+            for (const auto& e : m.excursions)
+                runs += " " + std::to_string(e.firstFrame) + ":" + std::to_string(e.frames) + fmt(",%.2f", e.peakOverTarget);
+            std::snprintf(line, sizeof line, "%-16s %9.3f %10.3f %9.2f %9s %9s%s\n", m.id.c_str(), m.frameMsMedian,
+                          m.enlargeMsMedian, meanZoom, r.budget ? fmt("%.2f", m.budgetHits.within).c_str() : "-",
+                          r.budget ? fmt("%.2f", m.budgetHits.notOver).c_str() : "-", runs.c_str());
+            out << line;
+        }
     }
     // The floor is the least work any technique can do on these fragments: a row below it
     // means noise (llvmpipe shares the CPU) or a floor that is not one.

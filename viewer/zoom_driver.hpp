@@ -1,0 +1,72 @@
+#pragma once
+// Zoom rendering in the windows (walkthrough and immersive): which zoom the next frame draws at,
+// fixed or picked by a controller for a frame budget (frame/zoom_controller.hpp), raised during
+// fast head turns in immersive mode, and the last frames' zoom, predicted and measured time for
+// the panel's plots. The predictive controller is calibrated (frame/zoom_calibration.hpp) for
+// the current technique and window size when it is chosen and whenever either changes.
+#include "frame_history.hpp"
+
+#include "camera/camera.hpp"
+#include "frame/frame_renderer.hpp"
+#include "frame/zoom_controller.hpp"
+
+#include <memory>
+#include <string>
+
+namespace strata {
+
+// What the panel edits.
+struct ZoomChoices {
+    int controller = 0;        // 0 fixed, 1 reactive, 2 predictive (kZoomControllerNames)
+    int fixedZoom = 1;
+    float targetMs = 33.3f;
+    int maxZoom = 8;
+    bool blur = false;         // enlarge with a bilinear blur instead of replication
+    bool followHead = true;    // immersive: fast head turns raise the zoom (section 4.2)
+};
+
+inline constexpr const char* kZoomControllerNames[] = {"fixed", "reactive", "predictive"};
+
+class ZoomDriver {
+public:
+    explicit ZoomDriver(ZoomChoices initial = {}) : choices_(initial) {}
+
+    // The zoom the next frame draws at (options.zoom and zoomFilter set); headDegPerSecond is the
+    // head's angular speed (0 outside immersive mode).
+    int begin(const GpuScene& scene, const Camera& camera, glm::ivec2 displaySize, Technique* technique,
+              FrameOptions& options, double headDegPerSecond = 0.0);
+    // The frame drawn with begin()'s zoom.
+    void end(const FrameResult& result, Technique* technique);
+
+    ZoomChoices& choices() { return choices_; }
+    int zoom() const { return zoom_; }
+    int headFloor() const { return headFloor_; }
+    double predictedMs() const { return predictedMs_; }
+    double measuredMs() const { return measuredMs_; }
+    const FrameHistory& zoomHistory() const { return zoomHistory_; }
+    const FrameHistory& measuredHistory() const { return measuredHistory_; }
+    const FrameHistory& predictedHistory() const { return predictedHistory_; }
+    // The predictive controller's calibrated model, when one is in use.
+    const ZoomCostModel* model() const;
+    const std::string& status() const { return status_; }
+
+private:
+    void rebuild(glm::ivec2 displaySize, Technique* technique);
+
+    ZoomChoices choices_;
+    ZoomChoices built_{};              // the choices controller_ was made for
+    std::string builtTechnique_;
+    glm::ivec2 builtSize_{0, 0};
+    std::unique_ptr<ZoomController> controller_;
+    ZoomCostModel model_;
+    FrameLoad load_;
+    int zoom_ = 1, headFloor_ = 1;
+    double predictedMs_ = 0.0, measuredMs_ = 0.0;
+    FrameHistory zoomHistory_, measuredHistory_, predictedHistory_;
+    std::string status_;
+};
+
+// The panel section: controller, target, zoom, and the plots. `immersive` shows the head option.
+void drawZoomSection(ZoomDriver& zoom, bool immersive);
+
+}  // namespace strata
