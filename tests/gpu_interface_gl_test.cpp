@@ -236,6 +236,18 @@ std::vector<ProgramCase> programCases() {
                                                                     {"FragmentEntries", ssbo(BIND_ENTRIES)}});
     const std::map<std::string, Binding> bucket = {{"uRange", tex(BIND_PEEL_PREVIOUS)},
                                                    {"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}};
+    const std::map<std::string, Binding> coplanarResolve = {
+        {"uState", tex(BIND_COPLANAR_STATE)},         {"uCount", tex(BIND_COPLANAR_COUNT)},
+        {"uMinColor", tex(BIND_COPLANAR_MIN_COLOR)},  {"uMaxColor", tex(BIND_COPLANAR_MAX_COLOR)},
+        {"uLayer", tex(BIND_COPLANAR_LAYER)},         {"uAccum", tex(BIND_COPLANAR_ACCUM)}};
+    const GLuint back = BIND_COPLANAR_BACK_OFFSET;
+    const std::map<std::string, Binding> coplanarDualResolve = {
+        {"uFrontState", tex(BIND_COPLANAR_STATE)},        {"uBackState", tex(BIND_COPLANAR_STATE + back)},
+        {"uFrontCount", tex(BIND_COPLANAR_COUNT)},        {"uBackCount", tex(BIND_COPLANAR_COUNT + back)},
+        {"uFrontMin", tex(BIND_COPLANAR_MIN_COLOR)},      {"uBackMin", tex(BIND_COPLANAR_MIN_COLOR + back)},
+        {"uFrontMax", tex(BIND_COPLANAR_MAX_COLOR)},      {"uBackMax", tex(BIND_COPLANAR_MAX_COLOR + back)},
+        {"uFrontLayer", tex(BIND_COPLANAR_LAYER)},        {"uBackLayer", tex(BIND_COPLANAR_LAYER + back)},
+        {"uFrontAccum", tex(BIND_COPLANAR_ACCUM)},        {"uBackAccum", tex(BIND_COPLANAR_ACCUM + back)}};
     return {
         // frame (core/render)
         {{scene, "common/opaque.frag.glsl"}, {}, {}},
@@ -297,6 +309,34 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/peeling/bound_reduce.frag.glsl"}, {}, {{"uRemaining", tex(BIND_PEEL_PREVIOUS)}}},
         {{"oit/peeling/bounds_rect.vert.glsl", "oit/peeling/bounds_query.frag.glsl"}, {},
          {{"uReducedBound", tex(BIND_PEEL_PREVIOUS)}}},
+        // coplanarity-aware peeling (f2b-2p, f2b-3p, dual-2p)
+        {{scene, "oit/peeling/coplanar_init.frag.glsl"}, {}, {}},
+        {{scene, "oit/peeling/coplanar_count.frag.glsl"}, {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}},
+         {{"uState", tex(BIND_COPLANAR_STATE)}, {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
+        {{scene, "oit/peeling/coplanar_count.frag.glsl"}, {},
+         {{"uState", tex(BIND_COPLANAR_STATE)}, {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
+        {{scene, "oit/peeling/coplanar_extract.frag.glsl"}, {{"COPLANAR_ONLY", ""}},
+         {{"uState", tex(BIND_COPLANAR_STATE)}, {"uCount", tex(BIND_COPLANAR_COUNT)},
+          {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
+        {{scene, "oit/peeling/coplanar_extract.frag.glsl"}, {},
+         {{"uState", tex(BIND_COPLANAR_STATE)}, {"uCount", tex(BIND_COPLANAR_COUNT)},
+          {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
+        {{full, "oit/peeling/coplanar_check.frag.glsl"}, {}, {{"uCount", tex(BIND_COPLANAR_COUNT)}}},
+        {{scene, "oit/peeling/coplanar_next.frag.glsl"}, {},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uState", tex(BIND_COPLANAR_STATE)}}},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {}, coplanarResolve},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}},
+         with(coplanarResolve, {{"uNextDepth", tex(BIND_COPLANAR_NEXT_DEPTH)}})},
+        {{scene, "oit/peeling/coplanar_dual_count.frag.glsl"}, {},
+         {{"uFrontState", tex(BIND_COPLANAR_STATE)}, {"uBackState", tex(BIND_COPLANAR_STATE + BIND_COPLANAR_BACK_OFFSET)},
+          {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
+        {{scene, "oit/peeling/coplanar_dual_extract.frag.glsl"}, {},
+         {{"uFrontState", tex(BIND_COPLANAR_STATE)}, {"uBackState", tex(BIND_COPLANAR_STATE + BIND_COPLANAR_BACK_OFFSET)},
+          {"uFrontCount", tex(BIND_COPLANAR_COUNT)}, {"uBackCount", tex(BIND_COPLANAR_COUNT + BIND_COPLANAR_BACK_OFFSET)},
+          {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
+        {{full, "oit/peeling/coplanar_dual_check.frag.glsl"}, {},
+         {{"uFrontCount", tex(BIND_COPLANAR_COUNT)}, {"uBackCount", tex(BIND_COPLANAR_COUNT + BIND_COPLANAR_BACK_OFFSET)}}},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {}, coplanarDualResolve},
         // buffers
         {{scene, "oit/buffers/fab_store.frag.glsl"}, {},
          {{"uCounts", image(BIND_PIXEL_COUNTS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)},

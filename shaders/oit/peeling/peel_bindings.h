@@ -12,6 +12,18 @@ GPU_CONST uint BIND_PEEL_ACCUM = 5u;       // accumulated (colour, transmittance
 GPU_CONST uint BIND_PEEL_BACK_ACCUM = 6u;  // dual: back accumulation
 GPU_CONST uint BIND_BUCKET_COLORS = 1u;    // bun: image unit of the per-slot colours
 
+// The coplanarity-aware variants (f2b-2p, f2b-3p, dual-2p; coplanar_layer.glsl). Front side
+// units; dual-2p's back side uses the same unit + BIND_COPLANAR_BACK_OFFSET.
+GPU_CONST uint BIND_COPLANAR_STATE = 7u;       // (layer anchor depth, id low, id high, 0) per pixel
+GPU_CONST uint BIND_COPLANAR_COUNT = 8u;       // (-id min, id max, next anchor, count) of the layer
+GPU_CONST uint BIND_COPLANAR_MIN_COLOR = 9u;   // colour of the id-min fragment (f2b-2p, dual-2p: the sum first)
+GPU_CONST uint BIND_COPLANAR_MAX_COLOR = 10u;  // colour of the id-max fragment
+GPU_CONST uint BIND_COPLANAR_LAYER = 11u;      // the open layer's far part (premultiplied colour, transmittance)
+GPU_CONST uint BIND_COPLANAR_ACCUM = 12u;      // accumulated (premultiplied colour, transmittance)
+GPU_CONST uint BIND_COPLANAR_NEXT_DEPTH = 13u; // f2b-3p: the depth pass's nearest fragment beyond the layer
+GPU_CONST uint BIND_COPLANAR_BACK_OFFSET = 7u; // dual-2p back side: 14 .. 19
+GPU_CONST uint BIND_COPLANAR_ID_BASE = 2u;     // SSBO: first id of each object (coplanar_ids.hpp)
+
 GPU_NAMESPACE_END
 
 #endif

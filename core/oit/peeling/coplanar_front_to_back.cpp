@@ -1,0 +1,310 @@
+// `f2b-2p` and `f2b-3p`: coplanarity-aware front-to-back peeling (depth-fighting paper,
+// section 3.1.1, Algorithm 1), under the project's tie rule (coplanar_layer.glsl): a layer is
+// every fragment within the tie tolerance of the nearest one left, and its fragments are taken
+// in (object id, primitive id) order, two per iteration: the id-min one goes under the
+// accumulation, the id-max one over the layer's far part, which joins the accumulation when the
+// layer is done. So every fragment is composited once, in the reference's order.
+//
+// Per iteration:
+//   f2b-2p: counting pass (geometry: id min, id max, count, next layer's anchor; colour sum) +
+//           check (full screen: pixels with two or more) + extraction (geometry, only if the
+//           check passed anywhere) + resolve (full screen). Where the count is one the colour
+//           sum is the fragment, so a scene without coplanarity costs one geometry pass a layer.
+//   f2b-3p: depth pass (geometry, GL_GREATER: the next anchor) + counting pass (no shading) +
+//           shading pass (the ids found) + resolve.
+// Both start with an initialisation pass (the first anchors, and the total by GL_SAMPLES_PASSED)
+// and end with peel_composite. The loop stops once every fragment is captured (the captured
+// count comes from occlusion queries, no atomics), when an iteration captures nothing, or at
+// max_passes (an overflow).
+#include "oit/technique.hpp"
+
+#include "common/bindings.h"
+#include "oit/draw_transparent.hpp"
+#include "oit/peeling/coplanar_ids.hpp"
+#include "oit/peeling/object_skipper.hpp"
+#include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peeling_settings.hpp"
+#include "oit/precision.hpp"
+
+namespace strata::peeling {
+namespace {
+
+class CoplanarFrontToBack final : public TechniqueWithSettings<PeelingSettings> {
+public:
+    CoplanarFrontToBack(TechniqueInfo info, bool threePass)
+        : TechniqueWithSettings(std::move(info)), threePass_(threePass) {}
+
+    void render(const FrameContext& frame) override {
+        ensurePrograms();
+        ensureTargets(frame.size);
+        stats_ = {};
+        if (!ids_.bind(frame)) stats_.overflowed = true;
+        skipper_.beginFrame(frame, settings_.skipPeeled);
+        attachOpaqueDepth(frame);
+        const float noLayer[4] = {-1.0f, 0.0f, -kNoId, 0.0f};
+        const float empty[4] = {0, 0, 0, 1};
+        glClearTexImage(state_.id(), 0, GL_RGBA, GL_FLOAT, noLayer);
+        glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, empty);
+        glClearTexImage(layer_.id(), 0, GL_RGBA, GL_FLOAT, empty);
+        for (GLuint p : {countProgram_.id(), extractProgram_.id(), nextProgram_.id()})
+            if (p) setDepthOrderUniforms(frame, p);
+
+        const std::uint64_t total = initialise(frame);
+        for (int iteration = 0; total > 0; ++iteration) {
+            if (iteration >= settings_.maxPasses) {
+                stats_.overflowed = true;
+                break;
+            }
+            if (threePass_) nextAnchors(frame);
+            count(frame);
+            std::uint64_t captured = 0;
+            if (threePass_) {
+                captured = extract(frame);
+                resolve(frame);
+            } else {
+                const std::uint64_t coplanar = check(frame);
+                if (coplanar > 0) extract(frame);
+                captured = resolve(frame) + coplanar;
+            }
+            stats_.fragmentsCaptured += captured;
+            if (stats_.fragmentsCaptured >= total || captured == 0) break;
+            skipper_.query(frame, state_.id(), {RemainingSide::NotNearerThanR});
+        }
+        if (stats_.fragmentsCaptured > 0) composite(frame);
+        skipper_.endFrame(stats_);
+        stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
+        const std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
+        // State and count RGBA32F (16 B each), min and max colour, layer far part and
+        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each); f2b-3p's next-anchor depth (4 B).
+        stats_.bytes = pixels * (2 * 16 + 4 * floatTexelBytes(settings_.precision, 4) + (threePass_ ? 4 : 0));
+    }
+
+private:
+    void ensurePrograms() {
+        if (initProgram_.program) return;
+        initProgram_ = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
+        if (threePass_) {
+            nextProgram_ = buildSceneProgram("oit/peeling/coplanar_next.frag.glsl");
+            countProgram_ = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl");
+            extractProgram_ = buildSceneProgram("oit/peeling/coplanar_extract.frag.glsl");
+            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_resolve.frag.glsl"},
+                                               {{"NEXT_FROM_DEPTH", ""}});
+        } else {
+            countProgram_ = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl",
+                                              {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
+            extractProgram_ = buildSceneProgram("oit/peeling/coplanar_extract.frag.glsl", {{"COPLANAR_ONLY", ""}});
+            checkProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_check.frag.glsl"});
+            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_resolve.frag.glsl"});
+        }
+        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"});
+        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+    }
+
+    void ensureTargets(glm::ivec2 size) {
+        if (size == size_ && settings_.precision == allocatedPrecision_) return;
+        size_ = size;
+        allocatedPrecision_ = settings_.precision;
+        const GLenum rgba = rgbaFloatFormat(settings_.precision);
+        state_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+        count_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
+        minColor_ = gl::createTexture2D(rgba, size.x, size.y);
+        maxColor_ = gl::createTexture2D(rgba, size.x, size.y);
+        layer_ = gl::createTexture2D(rgba, size.x, size.y);
+        accum_ = gl::createTexture2D(rgba, size.x, size.y);
+        initFbo_ = framebuffer({state_.id()});
+        countFbo_ = framebuffer(threePass_ ? std::vector<GLuint>{count_.id()} : std::vector<GLuint>{count_.id(), minColor_.id()});
+        extractFbo_ = framebuffer({minColor_.id(), maxColor_.id()});
+        resolveFbo_ = framebuffer({accum_.id(), layer_.id(), state_.id()});
+        if (threePass_) {
+            nextDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+            nextFbo_ = gl::Framebuffer::create();
+            glNamedFramebufferTexture(nextFbo_.id(), GL_DEPTH_ATTACHMENT, nextDepth_.id(), 0);
+            glNamedFramebufferDrawBuffer(nextFbo_.id(), GL_NONE);
+        }
+    }
+
+    static gl::Framebuffer framebuffer(const std::vector<GLuint>& colors) {
+        gl::Framebuffer fbo = gl::Framebuffer::create();
+        std::vector<GLenum> buffers;
+        for (std::size_t i = 0; i < colors.size(); ++i) {
+            glNamedFramebufferTexture(fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), colors[i], 0);
+            buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+        }
+        glNamedFramebufferDrawBuffers(fbo.id(), GLsizei(buffers.size()), buffers.data());
+        return fbo;
+    }
+
+    // The geometry passes test against the opaque depth in hardware (early, no writes); the
+    // frame targets replace that texture when the size changes, so it is attached per frame.
+    void attachOpaqueDepth(const FrameContext& frame) {
+        for (const gl::Framebuffer* fbo : {&initFbo_, &countFbo_, &extractFbo_})
+            glNamedFramebufferTexture(fbo->id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+    }
+
+    void bindTextures(const FrameContext& frame) {
+        glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
+        glBindTextureUnit(gpu::BIND_COPLANAR_STATE, state_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_COUNT, count_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_MIN_COLOR, minColor_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_MAX_COLOR, maxColor_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_LAYER, layer_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_ACCUM, accum_.id());
+        if (threePass_) glBindTextureUnit(gpu::BIND_COPLANAR_NEXT_DEPTH, nextDepth_.id());
+    }
+
+    std::uint64_t samplesResult() {
+        GLuint64 n = 0;
+        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &n);
+        return n;
+    }
+
+    // MAX of the depth into the state's r (the other channels masked): the first anchors.
+    std::uint64_t initialise(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "coplanar init");
+        glBindFramebuffer(GL_FRAMEBUFFER, initFbo_.id());
+        setTransparentDepthState(frame);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_MAX);
+        glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        skipper_.draw(frame, initProgram_, stats_);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+        return samplesResult();
+    }
+
+    // f2b-3p: the nearest fragment beyond each pixel's layer into nextDepth_.
+    void nextAnchors(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "f2b-3p depth");
+        glBindFramebuffer(GL_FRAMEBUFFER, nextFbo_.id());
+        glDepthMask(GL_TRUE);
+        const float zero = 0.0f;
+        glClearNamedFramebufferfv(nextFbo_.id(), GL_DEPTH, 0, &zero);
+        setTransparentDepthState(frame);
+        glDepthMask(GL_TRUE);
+        bindTextures(frame);
+        glBindTextureUnit(gpu::BIND_COPLANAR_NEXT_DEPTH, 0);  // the attachment is not also sampled
+        skipper_.draw(frame, nextProgram_, stats_);
+        glDepthMask(GL_FALSE);
+        ++stats_.passes;
+    }
+
+    void count(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p count" : "f2b-2p count");
+        const float countClear[4] = {kNoId, kNoId, kNoId, 0.0f};
+        glClearTexImage(count_.id(), 0, GL_RGBA, GL_FLOAT, countClear);
+        if (!threePass_) glClearTexImage(minColor_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        glBindFramebuffer(GL_FRAMEBUFFER, countFbo_.id());
+        setTransparentDepthState(frame);
+        bindTextures(frame);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        glBlendEquationSeparatei(0, GL_MAX, GL_FUNC_ADD);  // ids and anchor: MAX; count: ADD
+        glBlendEquationi(1, GL_FUNC_ADD);                  // f2b-2p: colour sum
+        skipper_.draw(frame, countProgram_, stats_);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFunc(GL_ONE, GL_ZERO);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+    }
+
+    // f2b-2p: pixels with two or more left in the layer (their colour targets zeroed).
+    std::uint64_t check(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "f2b-2p check");
+        glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        bindTextures(frame);
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        drawFullscreen(frame, checkProgram_.id());
+        glEndQuery(GL_SAMPLES_PASSED);
+        ++stats_.passes;
+        return samplesResult();
+    }
+
+    // The id-min and id-max fragments' colours; returns the fragments extracted (f2b-3p, late
+    // tests; f2b-2p's count comes from the check and resolve instead).
+    std::uint64_t extract(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p shade" : "f2b-2p extract");
+        if (threePass_) glClearTexImage(minColor_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        glClearTexImage(maxColor_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
+        setTransparentDepthState(frame);
+        bindTextures(frame);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_MAX);
+        if (threePass_) glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        skipper_.draw(frame, extractProgram_, stats_);
+        if (threePass_) glEndQuery(GL_SAMPLES_PASSED);
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats_.passes;
+        return threePass_ ? samplesResult() : 0;
+    }
+
+    // Returns the pixels that captured at least one fragment.
+    std::uint64_t resolve(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p resolve" : "f2b-2p resolve");
+        glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        glDisable(GL_BLEND);
+        bindTextures(frame);
+        glTextureBarrier();  // it reads its own texel of three of its attachments
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        drawFullscreen(frame, resolveProgram_.id());
+        glEndQuery(GL_SAMPLES_PASSED);
+        ++stats_.passes;
+        return samplesResult();
+    }
+
+    void composite(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p composite" : "f2b-2p composite");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        glDisable(GL_BLEND);
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
+        drawFullscreen(frame, compositeProgram_.id());
+        ++stats_.passes;
+    }
+
+    bool threePass_;
+    int allocatedPrecision_ = 0;
+    SceneProgram initProgram_, nextProgram_, countProgram_, extractProgram_;
+    gl::Program checkProgram_, resolveProgram_, compositeProgram_;
+    gl::Query samples_;
+    glm::ivec2 size_{0, 0};
+    gl::Texture state_, count_, minColor_, maxColor_, layer_, accum_, nextDepth_;
+    gl::Framebuffer initFbo_, countFbo_, extractFbo_, resolveFbo_, nextFbo_;
+    CoplanarIds ids_;
+    ObjectSkipper skipper_;
+};
+
+}  // namespace
+}  // namespace strata::peeling
+
+namespace strata {
+
+TechniqueEntry f2b2pEntry() {
+    TechniqueInfo info{"f2b-2p", "coplanarity", true, true,
+                       "1 + sum over layers of 3*ceil(C/2) (+1 extraction per iteration with C >= 2 left) + 1; "
+                       "no coplanarity: 3D+2 (init + D x (count, check, resolve) + composite); Table 1: 2C(Zall)",
+                       "w*h*64 B at precision=16: state and count RGBA32F (16 each) + min, max, layer and "
+                       "accumulation RGBA16F (8 each); w*h*96 B at 32; Table 1: 12 words (10 modern)",
+                       "coplanarity-aware f2b (Algorithm 1): per layer id-min/id-max/count by MAX/ADD blending, "
+                       "two coplanar fragments extracted per iteration in tie order"};
+    return techniqueEntry<peeling::CoplanarFrontToBack>(info, false);
+}
+
+TechniqueEntry f2b3pEntry() {
+    TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
+                       "2 + sum over layers of 4*ceil(C/2) (depth, tie-test count, shading, resolve per "
+                       "iteration); no coplanarity: 4D+2; Table 1: 3C(Zall)/2",
+                       "w*h*68 B at precision=16: as f2b-2p + next-anchor depth (4); w*h*100 B at 32",
+                       "coplanarity-aware f2b with a depth pass, a tie-test counting pass and a shading pass "
+                       "per iteration"};
+    return techniqueEntry<peeling::CoplanarFrontToBack>(info, true);
+}
+
+}  // namespace strata

@@ -1,0 +1,42 @@
+#version 450 core
+// f2b-2p / f2b-3p counting pass (Algorithm 1's pass with MAX and ADD blending). Of the fragments
+// left in the layer anchored at the state's r (coplanar_layer.glsl) whose id lies strictly
+// inside the state's open id range (g, b), it leaves in the count target: -(smallest id),
+// largest id (MAX) and how many (ADD, alpha).
+// NEXT_ANCHOR (f2b-2p): fragments beyond the layer put their depth in b (MAX: the nearest one),
+//   the anchor of the next layer, so f2b-2p needs no depth pass.
+// SUM_COLOR (f2b-2p): the layer's fragments add their colour into target 1. Where the count is
+//   1, that sum is the fragment: the pixel needs no extraction pass (no coplanarity, no cost).
+#include "surface.glsl"
+#include "coplanar_layer.glsl"
+#include "coplanar_ids.glsl"
+
+layout(early_fragment_tests) in;
+layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
+layout(location = 0) out vec4 outCount;
+#ifdef SUM_COLOR
+layout(location = 1) out vec4 outColor;
+#endif
+
+void main() {
+    vec4 state = texelFetch(uState, ivec2(gl_FragCoord.xy), 0);
+    float z = gl_FragCoord.z;
+    if (!hasAnchor(state.r) || z > state.r) discard;  // nothing left here, or peeled already
+    if (!inLayerOf(z, state.r)) {
+#ifdef NEXT_ANCHOR
+        outCount = vec4(kNoId, kNoId, z, 0.0);
+#ifdef SUM_COLOR
+        outColor = vec4(0.0);
+#endif
+        return;
+#else
+        discard;
+#endif
+    }
+    float id = fragmentIdKey(uObjectId);
+    if (!(id > state.g && id < state.b)) discard;  // extracted by an earlier pass of this layer
+    outCount = vec4(-id, id, kNoId, 1.0);
+#ifdef SUM_COLOR
+    outColor = surfaceColor();
+#endif
+}

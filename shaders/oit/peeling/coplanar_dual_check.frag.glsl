@@ -1,0 +1,25 @@
+#version 450 core
+// dual-2p, after counting, one draw per side and threshold under GL_SAMPLES_PASSED: passes where
+// side uSide (0 front, 1 back) counted at least uMinCount fragments. With uMinCount 2 the host
+// lets it zero that side's colour targets there (for the extraction's MAX blending); with 1 it
+// writes nothing. The four counts give the fragments captured without atomics.
+#include "peel_bindings.h"
+
+layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uFrontCount;
+layout(binding = BIND_COPLANAR_COUNT + BIND_COPLANAR_BACK_OFFSET) uniform sampler2D uBackCount;
+uniform int uSide;
+uniform float uMinCount;
+layout(location = 0) out vec4 outFrontMin;
+layout(location = 1) out vec4 outFrontMax;
+layout(location = 2) out vec4 outBackMin;
+layout(location = 3) out vec4 outBackMax;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float count = uSide == 0 ? texelFetch(uFrontCount, pixel, 0).a : texelFetch(uBackCount, pixel, 0).a;
+    if (count < uMinCount - 0.5) discard;
+    outFrontMin = vec4(0.0);
+    outFrontMax = vec4(0.0);
+    outBackMin = vec4(0.0);
+    outBackMax = vec4(0.0);
+}

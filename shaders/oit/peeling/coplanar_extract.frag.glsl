@@ -1,0 +1,37 @@
+#version 450 core
+// f2b-2p / f2b-3p extraction (f2b-3p: its shading pass): the fragments of the layer whose ids
+// the counting pass found, the smallest into target 0 and the largest into target 1 (MAX
+// blending over targets cleared to 0: at most one fragment per pixel writes each, since a
+// pixel has one fragment per (object, primitive)).
+// COPLANAR_ONLY (f2b-2p): only pixels with two or more; a single fragment came with its colour.
+// Without it (f2b-3p) no early tests: GL_SAMPLES_PASSED then counts exactly the fragments
+// extracted (discarded ones never reach the late test).
+#include "surface.glsl"
+#include "coplanar_layer.glsl"
+#include "coplanar_ids.glsl"
+
+#ifdef COPLANAR_ONLY
+layout(early_fragment_tests) in;
+#endif
+layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
+layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;
+layout(location = 0) out vec4 outMin;
+layout(location = 1) out vec4 outMax;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 count = texelFetch(uCount, pixel, 0);
+#ifdef COPLANAR_ONLY
+    if (count.a < 1.5) discard;
+#endif
+    float anchor = texelFetch(uState, pixel, 0).r;
+    float z = gl_FragCoord.z;
+    if (!hasAnchor(anchor) || z > anchor || !inLayerOf(z, anchor)) discard;
+    float id = fragmentIdKey(uObjectId);
+    bool isMin = id == -count.r;
+    bool isMax = id == count.g && !isMin;
+    if (!isMin && !isMax) discard;
+    vec4 c = surfaceColor();
+    outMin = isMin ? c : vec4(0.0);
+    outMax = isMax ? c : vec4(0.0);
+}

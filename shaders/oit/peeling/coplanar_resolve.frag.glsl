@@ -1,0 +1,49 @@
+#version 450 core
+// f2b-2p / f2b-3p, end of a peel iteration, per pixel with fragments counted: the id-min
+// fragment goes under the accumulation (front to back); the id-max one over the layer's far
+// part (it lies behind every id still open); when the layer is done (two or fewer were left)
+// the far part goes under the accumulation and the state moves to the next layer's anchor,
+// else the state keeps the anchor and narrows the id range to (min, max).
+// Reads and writes its own texel of the accumulation, the far part and the state (a feedback
+// loop GL allows for one read and one write per texel, after glTextureBarrier). Pixels with
+// nothing counted are discarded: GL_SAMPLES_PASSED counts the pixels that captured one or more.
+// NEXT_FROM_DEPTH (f2b-3p): the next anchor is the depth pass's, not the count target's b.
+#include "coplanar_layer.glsl"
+
+layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
+layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;
+layout(binding = BIND_COPLANAR_MIN_COLOR) uniform sampler2D uMinColor;
+layout(binding = BIND_COPLANAR_MAX_COLOR) uniform sampler2D uMaxColor;
+layout(binding = BIND_COPLANAR_LAYER) uniform sampler2D uLayer;
+layout(binding = BIND_COPLANAR_ACCUM) uniform sampler2D uAccum;
+#ifdef NEXT_FROM_DEPTH
+layout(binding = BIND_COPLANAR_NEXT_DEPTH) uniform sampler2D uNextDepth;
+#endif
+layout(location = 0) out vec4 outAccum;
+layout(location = 1) out vec4 outLayer;
+layout(location = 2) out vec4 outState;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 count = texelFetch(uCount, pixel, 0);
+    if (count.a < 0.5) discard;
+    vec4 state = texelFetch(uState, pixel, 0);
+    vec4 accum = merged(texelFetch(uAccum, pixel, 0), asPartial(texelFetch(uMinColor, pixel, 0)));
+    vec4 layer = texelFetch(uLayer, pixel, 0);
+    if (count.a > 1.5) layer = merged(asPartial(texelFetch(uMaxColor, pixel, 0)), layer);
+    if (count.a < 2.5) {
+        accum = merged(accum, layer);
+        layer = kEmptyPartial;
+#ifdef NEXT_FROM_DEPTH
+        float next = texelFetch(uNextDepth, pixel, 0).r;
+        state = vec4(next > 0.0 ? next : kNoAnchor, 0.0, kAllIds, 0.0);
+#else
+        state = vec4(hasAnchor(count.b) ? count.b : kNoAnchor, 0.0, kAllIds, 0.0);
+#endif
+    } else {
+        state = vec4(state.r, -count.r, count.g, 0.0);
+    }
+    outAccum = accum;
+    outLayer = layer;
+    outState = state;
+}
