@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -49,6 +50,9 @@ struct PanelState {
     std::string lastError;      // render or shader error, empty when none
     std::string lastGlError;
     std::string lastSaved;      // last screenshot or path written
+    // Drawn under the view selector: the error and split views' figures (viewer/error_view.hpp,
+    // viewer/split_view.hpp), owned by the mode that shows them.
+    std::function<void()> viewDetails;
 };
 
 // Settings the panel edits in place: copies, which the viewer applies between frames.
