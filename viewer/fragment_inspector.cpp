@@ -128,6 +128,7 @@ void FragmentInspector::drawWindow(const GpuScene& scene) {
             const SurfaceFragment& f = in.reference.fragments[i];
             const bool tied = i > 0 && sameDepthLayer(in.reference.fragments[i - 1].depth, f.depth, tol);
             ImGui::TableNextRow();
+            ImGui::PushID(int(i));  // the swatches share a label
             ImGui::TableNextColumn();
             ImGui::Text("%zu", i);
             ImGui::TableNextColumn();
@@ -151,6 +152,7 @@ void FragmentInspector::drawWindow(const GpuScene& scene) {
             ImGui::TextColored(k == Kept::Yes ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f)
                                : k == Kept::No ? kErrorColour : ImVec4(0.8f, 0.8f, 0.5f, 1.0f),
                                "%s", keptName(k));
+            ImGui::PopID();
         }
         ImGui::EndTable();
     }
