@@ -6,6 +6,7 @@
 #include "gl_test_support.hpp"
 
 #include "common/bindings.h"
+#include "debug/error_map.h"
 #include "gl/shader_program.hpp"
 #include "oit/abuffer_node.h"
 #include "oit/approximate/approximate_bindings.h"
@@ -366,6 +367,10 @@ std::vector<ProgramCase> programCases() {
         {{"oit/coplanarity_detect.comp.glsl"}, {},
          with(lists, {{"uLargestLayer", image(BIND_LARGEST_LAYER)}, {"uHeatmap", image(BIND_RESOLVE_OUTPUT)},
                       {"CoplanarityTotals", ssbo(BIND_COPLANARITY_TOTALS)}})},
+        // error view (render/error_map)
+        {{"debug/error_map.comp.glsl"}, {},
+         {{"uImage", tex(BIND_ERROR_IMAGE)}, {"uReference", tex(BIND_ERROR_REFERENCE)},
+          {"uFalseColor", image(BIND_RESOLVE_OUTPUT)}, {"ErrorPartials", ssbo(BIND_ERROR_PARTIALS)}}},
     };
 }
 
@@ -462,6 +467,8 @@ TEST_CASE("compute group sizes equal the host's dispatch arithmetic") {
     const std::string resolve = std::to_string(gpu::RESOLVE_GROUP_SIZE);
     CHECK(workGroupSize("oit/abuffer_resolve.comp.glsl") == resolve + " " + resolve + " 1");
     CHECK(workGroupSize("oit/coplanarity_detect.comp.glsl") == resolve + " " + resolve + " 1");
+    const std::string error = std::to_string(gpu::ERROR_GROUP_SIZE);
+    CHECK(workGroupSize("debug/error_map.comp.glsl") == error + " " + error + " 1");
     // Each scan invocation takes two elements: the host's block is twice the group.
     const std::string scan = std::to_string(buffers::PrefixSum::kBlock / 2) + " 1 1";
     CHECK(workGroupSize("oit/buffers/prefix_scan.comp.glsl") == scan);

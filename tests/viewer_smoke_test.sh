@@ -2,6 +2,8 @@
 # Smoke test of `strata view` under Xvfb with Mesa's software rasteriser: five frames with the
 # panel, then a screenshot of the whole window. Fails when the window cannot open, the PNG is
 # missing, small or of the wrong size, the scene rendered flat (black), or the panel drew nothing.
+# Then the heatmap, error and split views and the fragment inspector, each checked on the figures
+# the viewer prints on its last frame.
 set -euo pipefail
 strata=${1:?usage: viewer_smoke_test.sh PATH/TO/strata}
 command -v xvfb-run >/dev/null || { echo "viewer_smoke: xvfb-run not installed (scripts/install-deps.sh)"; exit 1; }
@@ -52,3 +54,62 @@ panel=$(field panel_pixels)
 (( scene >= 2 && scene <= 9 )) || fail "heatmap view shows $scene distinct colours, expected 2 to 9 (Fig. 13's palette)"
 (( panel > 10000 )) || fail "the panel changed only $panel pixels in the heatmap view"
 echo "viewer_smoke: heatmap ok (scene $scene colours, panel $panel px)"
+
+# The error view: blend-unsorted against abuffer on the same frame. builtin:default has
+# transparent objects that overlap out of submission order, so the error is well above round-off.
+view() {  # view ARGS...: five frames at 800x600 with a screenshot; prints the output
+    LIBGL_ALWAYS_SOFTWARE=1 timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" \
+        "$strata" view builtin:default --exit-after-frames 5 --screenshot "$tmp/view.png" --size 800x600 "$@" 2>&1
+}
+num() { sed -n "s/.*[ |]$1=\([-+0-9.e]*\).*/\1/p" <<<"$2" | head -n 1; }
+out=$(view --view error --mode blend-unsorted) || { echo "$out"; fail "strata view --view error failed"; }
+line=$(grep '^error: ' <<<"$out") || fail "no 'error:' line in the error view's output"
+echo "$line"
+error_rmse=$(num rmse "$line")
+awk -v r="$error_rmse" -v p="$(num psnr "$line")" -v m="$(num max "$line")" \
+    'BEGIN { exit !(r > 1e-3 && r < 0.5 && p > 6 && p < 60 && m > 0.01 && m <= 1) }' ||
+    fail "error view figures out of range: $line"
+line=$(grep '^screenshot: ' <<<"$out" | tail -n 1)
+scene=$(field scene_colors)
+(( scene > 9 )) || fail "the error view shows only $scene colours"
+
+# The same technique against the reference is exactly 0 (two renders of abuffer, one frame).
+out=$(view --view error --mode abuffer) || { echo "$out"; fail "strata view --view error --mode abuffer failed"; }
+line=$(grep '^error: ' <<<"$out") || fail "no 'error:' line for abuffer"
+[[ $(num rmse "$line") == 0.000000e+00 && $(num max "$line") == 0.000000e+00 && $(num psnr "$line") == 100.0000 ]] ||
+    fail "abuffer against itself is not exactly 0: $line"
+echo "viewer_smoke: error view ok (blend-unsorted rmse $error_rmse; abuffer exactly 0)"
+
+# Split A | B: abuffer left, blend-unsorted right, divider at 0.25 of 800 pixels. Each half's
+# error is over the whole frame, so B's equals the error view's above (same frame, same camera).
+out=$(view --view split --mode abuffer --split-with blend-unsorted --split-at 0.25) ||
+    { echo "$out"; fail "strata view --view split failed"; }
+line=$(grep '^split: ' <<<"$out") || fail "no 'split:' line in the split view's output"
+echo "$line"
+[[ $(num divider "$line") == 200 ]] || fail "divider at $(num divider "$line"), expected 200"
+a=${line%%|*}
+b=${line#*|}
+[[ $a == *" A=abuffer "* && $b == *" B=blend-unsorted "* ]] || fail "split halves misnamed: $line"
+[[ $(num rmse "$a") == 0.000000e+00 ]] || fail "split: A (abuffer) error is not 0: $line"
+[[ $(num rmse "$b") == "$error_rmse" ]] || fail "split: B's rmse $(num rmse "$b") differs from the error view's $error_rmse"
+awk -v t="$(num gpu_ms "$a")" -v u="$(num gpu_ms "$b")" 'BEGIN { exit !(t > 0 && u > 0) }' || fail "split: no GPU time: $line"
+echo "viewer_smoke: split view ok"
+
+# The fragment inspector at a pixel of the globe (wireframe and surface, and its back face):
+# abuffer keeps all, a k-buffer of capacity 1 exactly the nearest.
+inspect() {
+    out=$(view --inspect 430,410 "$@") || { echo "$out"; fail "strata view --inspect $* failed"; }
+    grep -E '^(inspect|fragment): ' <<<"$out"
+}
+out=$(inspect --mode abuffer)
+echo "$out"
+n=$(num fragments "$(grep '^inspect: ' <<<"$out")")
+(( n >= 2 )) || fail "inspect: $n fragments at 430,410, expected the globe's (at least 2)"
+(( $(grep -c '^fragment: .*kept=yes$' <<<"$out") == n )) || fail "inspect: abuffer did not keep all $n"
+grep -q "verdict=\"all $n kept\"" <<<"$out" || fail "inspect: abuffer's verdict is not 'all $n kept'"
+out=$(inspect --mode kbuffer --set kbuffer.capacity=1)
+echo "$out"
+grep -q "verdict=\"the nearest 1 of $n kept\"" <<<"$out" || fail "inspect: kbuffer capacity=1 is not 'the nearest 1 of $n'"
+grep -q '^fragment: 0 .*kept=yes$' <<<"$out" || fail "inspect: kbuffer capacity=1 did not keep the nearest"
+(( $(grep -c '^fragment: .*kept=no$' <<<"$out") == n - 1 )) || fail "inspect: kbuffer capacity=1 kept more than one"
+echo "viewer_smoke: inspector ok ($n fragments)"

@@ -140,8 +140,12 @@ TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
             // shows too; everywhere else the volume model agrees to 2/255.
             const Image surfaces = raycastReference(scene.scene(), scene.objects(), camera, size.x, size.y);
             const Image abuffer = test::renderWith(scene, camera, size, "abuffer").image;
-            CHECK(d.pixelsOver <= compareImages(abuffer, surfaces, 2.0f / 255.0f).pixelsOver);
-            CHECK(d.rmse <= 1.0 / 255.0);
+            const ImageDifference coverage = compareImages(abuffer, surfaces, 2.0f / 255.0f);
+            CHECK(d.pixelsOver <= coverage.pixelsOver);
+            // Those coverage pixels carry a full edge contrast into the RMSE: allow the surface
+            // pair's own RMSE on top of 1/255 (builtin:default's wireframe strips, a tenth of a
+            // pixel wide at 48x36, and its relief of blocks give it such pixels).
+            CHECK(d.rmse <= 1.0 / 255.0 + coverage.rmse);
             CHECK_FALSE(r.result.stats.overflowed);
         }
     }

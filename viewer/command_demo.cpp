@@ -49,8 +49,8 @@ void writeReport(const DemoArgs& a) {
     outputs.addText(dir / "bench.json", benchToJson(report).dump(2) + "\n");
     outputs.addText(dir / "bench.csv", benchToCsv(report));
 
-    std::string md = "# Strata demo report\n\nScene `builtin:default` (an opaque room with transparent, intersecting "
-                     "and coplanar objects and a field of repeated models), every technique against the exact "
+    std::string md = "# Strata demo report\n\nScene `builtin:default` (interpenetrating glass, a decal on a transparent "
+                     "panel, a wireframe over its own surface, volumes, dense opaque detail behind), every technique against the exact "
                      "reference `abuffer`. Produced by `strata demo` without a display.\n\n```\n" + table + "```\n\n";
     for (const auto& m : report.modes) md += "![" + m.id + "](images/" + m.id + ".png)\n";
     outputs.addText(dir / "README.md", md);

@@ -6,7 +6,27 @@
 #include "settings_options.hpp"
 #include "view_app.hpp"
 
+#include "io/printable.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
 namespace strata {
+namespace {
+
+// "X,Y": a window pixel from the top-left, inside the window of `size`.
+glm::ivec2 parseInspectPixel(const std::string& text, glm::ivec2 size) {
+    int x = -1, y = -1;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &tail) != 2)
+        throw std::invalid_argument("--inspect: expected X,Y (two integers), got '" + printable(text, 40) + "'");
+    if (x < 0 || y < 0 || x >= size.x || y >= size.y)
+        throw std::invalid_argument("--inspect: pixel " + std::to_string(x) + "," + std::to_string(y) +
+                                    " is outside the " + std::to_string(size.x) + "x" + std::to_string(size.y) + " window");
+    return {x, y};
+}
+
+}  // namespace
 
 void registerViewCommand(CLI::App& app) {
     auto options = std::make_shared<ViewOptions>();
@@ -21,9 +41,17 @@ void registerViewCommand(CLI::App& app) {
     auto view = std::make_shared<std::string>(viewName(ViewKind::Image));
     std::vector<std::string> viewNames;
     for (ViewKind v : kViewKinds) viewNames.push_back(viewName(v));
-    cmd->add_option("--view", *view, "what the window shows first: image, heatmap (coplanarity)")
+    cmd->add_option("--view", *view,
+                    "what the window shows first: image, heatmap (coplanarity), error (against abuffer), split (A | B)")
         ->check(CLI::IsMember(viewNames))
         ->capture_default_str();
+    cmd->add_option("--split-with", options->splitWith, "split view: technique B, right of the divider")
+        ->capture_default_str();
+    cmd->add_option("--split-at", options->splitAt, "split view: the divider, 0..1 of the width")
+        ->check(CLI::Range(0.0f, 1.0f))
+        ->capture_default_str();
+    auto inspect = std::make_shared<std::string>();
+    cmd->add_option("--inspect", *inspect, "list the fragments at window pixel X,Y (from the top-left), as a click does");
     auto settings = std::make_shared<SettingsArgs>();
     addSettingsOptions(cmd, *settings);
     cmd->add_option("--path", *play, "play this camera path");
@@ -61,6 +89,8 @@ void registerViewCommand(CLI::App& app) {
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);
         if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
+        if (!findTechnique(options->splitWith)) createTechnique(options->splitWith);
+        if (!inspect->empty()) options->inspect = parseInspectPixel(*inspect, s);
         // Against every technique: the panel can switch to any of them.
         options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
         options->view = *parseView(*view);  // checked by CLI::IsMember above

@@ -196,6 +196,7 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
         const FrameResult* f = state.frame;
         drawViewSection(settings.view, f && f->coplanarity ? &*f->coplanarity : nullptr, f ? f->coplanarityMs : 0.0);
+        if (state.viewDetails) state.viewDetails();
     }
     if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) drawTechnique(state, settings, requests);
     if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) drawTiming(state);

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -52,6 +53,9 @@ struct PanelState {
     std::string lastGlError;
     std::string lastSaved;      // last screenshot or path written
     ZoomDriver* zoom = nullptr; // zoom rendering: its section edits the driver's choices
+    // Drawn under the view selector: the error and split views' figures (viewer/error_view.hpp,
+    // viewer/split_view.hpp), owned by the mode that shows them.
+    std::function<void()> viewDetails;
 };
 
 // Settings the panel edits in place: copies, which the viewer applies between frames.

@@ -5,14 +5,18 @@
 #include "zoom_driver.hpp"
 
 #include "camera_controls.hpp"
+#include "error_view.hpp"
+#include "fragment_inspector.hpp"
 #include "immersive.hpp"
 #include "open_scene.hpp"
 #include "panel.hpp"
+#include "split_view.hpp"
 #include "window_capture.hpp"
 #include "window_loop.hpp"
 
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
+#include "render/texture_readback.hpp"
 #include "frame/frame_renderer.hpp"
 #include "scene/scene_source.hpp"
 
@@ -60,6 +64,8 @@ public:
             playing_ = true;
         }
         baseCamera_ = defaultCamera(scene_.scene(), scene_.objects());
+        split_ = std::make_unique<SplitView>(options.splitWith, options.splitAt, techniqueSettings_);
+        if (options.inspect) inspector_.select(*options.inspect);
     }
 
     void start(double now) override { playOrigin_ = now; }
@@ -74,6 +80,7 @@ public:
     void render(glm::ivec2 size, Presenter& presenter) override {
         if (requests_.reload) reload(presenter);
         renderFrame(size);
+        renderViews(size);
         const PresentRegion output{shownTexture(), {0, 0}, size};
         presenter.present(size, {&output, 1});
         if (requests_.screenshot) saveOutput();
@@ -106,7 +113,16 @@ public:
         state.lastGlError = lastGlError;
         state.lastSaved = lastSaved_;
         state.zoom = &zoom_;
+        state.viewDetails = [this] { drawViewDetails(); };
         strata::drawPanel(state, settings_, requests_);
+        inspector_.drawWindow(scene_);
+    }
+
+    void reportLastFrame() override {
+        if (showingError()) errorView_->printFigures(techniqueId_.c_str(), lastSize_);
+        if (settings_.view == ViewKind::Split) split_->printFigures(lastSize_);
+        inspector_.printFigures(scene_);
+        std::fflush(stdout);
     }
 
     void stop() override {
@@ -134,6 +150,14 @@ private:
 
     void applyRequests(double now) {
         if (requests_.technique) switchTechnique(*requests_.technique);
+        if (splitRequest_) {
+            try {
+                split_->setTechnique(*splitRequest_, techniqueSettings_);
+            } catch (const std::exception& e) {
+                reportError("split with " + *splitRequest_ + ": " + e.what());
+            }
+            splitRequest_.reset();
+        }
         if (requests_.toggleNavigation) controls_.toggleMode();
         if (requests_.vsyncChanged) glfwSwapInterval(settings_.vsync ? 1 : 0);
         if (requests_.toggleRecording) {
@@ -195,6 +219,13 @@ private:
         glm::vec2 cursor{float(x), float(y)};
         glm::vec2 delta = cursor - lastCursor_;
         lastCursor_ = cursor;
+        // The split view's divider and a click on a pixel (the fragment inspector) take the left
+        // button before the camera does; a drag that is neither orbits.
+        const bool leftDown = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        const bool dividerDrag = settings_.view == ViewKind::Split &&
+                                 split_->handleMouse(cursor, leftDown, io.WantCaptureMouse, windowSize());
+        if (auto click = clicks_.update(cursor, leftDown, io.WantCaptureMouse); click && !dividerDrag)
+            inspector_.select(glm::ivec2(*click));
         // A drag belongs to the scene when it started outside the panel.
         auto dragging = [&](int button, bool& active) {
             bool down = glfwGetMouseButton(window_, button) == GLFW_PRESS;
@@ -202,7 +233,7 @@ private:
             else if (!active && !io.WantCaptureMouse) active = true;
             return active;
         };
-        if (dragging(GLFW_MOUSE_BUTTON_LEFT, dragLeft_)) input.dragOrbit = delta;
+        if (!dividerDrag && dragging(GLFW_MOUSE_BUTTON_LEFT, dragLeft_)) input.dragOrbit = delta;
         if (dragging(GLFW_MOUSE_BUTTON_RIGHT, dragRight_)) input.dragLook = delta;
         if (!io.WantCaptureMouse) input.scroll = scroll;
         if (!io.WantCaptureKeyboard) {
@@ -231,9 +262,55 @@ private:
         return settings_.view == ViewKind::CoplanarityHeatmap && frame_.coplanarity && renderer_->coplanarity();
     }
 
-    // The frame's output, or its heatmap when that view is chosen and the frame computed one.
+    bool showingError() const { return settings_.view == ViewKind::Error && errorView_ && errorShown_; }
+    bool showingSplit() const { return settings_.view == ViewKind::Split && splitShown_; }
+
+    // The frame's output, or what the chosen view made of it when this frame made it.
     GLuint shownTexture() const {
-        return showingHeatmap() ? renderer_->coplanarity()->heatmapTexture() : renderer_->outputColor();
+        if (showingHeatmap()) return renderer_->coplanarity()->heatmapTexture();
+        if (showingError()) return errorView_->falseColor();
+        if (showingSplit()) return split_->composite();
+        return renderer_->outputColor();
+    }
+
+    glm::vec2 windowSize() const {
+        int w = 0, h = 0;
+        glfwGetWindowSize(window_, &w, &h);
+        return {float(w), float(h)};
+    }
+
+    // After the technique's frame: the reference and error image, the split's B half, and the
+    // inspected pixel, each only while it is shown.
+    void renderViews(glm::ivec2 size) {
+        lastSize_ = size;
+        errorShown_ = splitShown_ = false;
+        if (!frameOk_) return;
+        // At a zoom, the enlarged frame: the error view then shows what the zoom loses too.
+        const GLuint output = renderer_->outputColor();
+        try {
+            if (settings_.view == ViewKind::Error || settings_.view == ViewKind::Split) {
+                if (!errorView_) errorView_ = std::make_unique<ErrorView>();
+                errorView_->renderReference(scene_, camera_, size, frameIndex_);
+            }
+            if (settings_.view == ViewKind::Error) {
+                errorView_->compare(output, size, true);
+                errorShown_ = true;
+            }
+            if (settings_.view == ViewKind::Split) {
+                split_->render(scene_, camera_, size, frameIndex_, techniqueId_, output, frame_, *errorView_);
+                splitShown_ = true;
+            }
+            inspector_.inspect(scene_, camera_, size, windowSize(), output, techniqueId_, frame_.stats);
+        } catch (const std::exception& e) {
+            if (smokeTest()) throw;
+            reportError(e.what());
+        }
+    }
+
+    void drawViewDetails() {
+        if (settings_.view == ViewKind::Error && errorView_) errorView_->drawPanel(techniqueId_.c_str());
+        if (settings_.view == ViewKind::Split) split_->drawPanel(splitRequest_);
+        ImGui::TextDisabled("click a pixel: its fragments, and which the technique kept");
     }
 
     void renderFrame(glm::ivec2 size) {
@@ -253,8 +330,10 @@ private:
         // The heatmap is of the frame drawn: shown at the window's size, it needs zoom 1.
         if (frameOptions.detectCoplanarity) frameOptions.zoom = 1;
         try {
+            frameOk_ = false;
             frame_ = renderer_->render(scene_, camera_, size, technique_.get(), frameOptions);
             zoom_.end(frame_, technique_.get());
+            frameOk_ = true;
             if (frame_.fragmentsTotal) count_ = FragmentCount{frameIndex_, *frame_.fragmentsTotal, frame_.stats};
         } catch (const std::exception& e) {
             if (smokeTest()) throw;
@@ -267,9 +346,11 @@ private:
 
     // F12/P: what the view shows (linear RGB, sRGB-encoded PNG), without the panel.
     void saveOutput() {
-        std::string name = timestampedName(showingHeatmap() ? "strata-heatmap-" : "strata-", ".png");
+        const bool plain = shownTexture() == renderer_->outputColor();
+        std::string prefix = plain ? "strata-" : std::string("strata-") + viewName(settings_.view) + "-";
+        std::string name = timestampedName(prefix.c_str(), ".png");
         try {
-            const Image shown = showingHeatmap() ? renderer_->coplanarity()->readHeatmap() : renderer_->readOutput();
+            const Image shown = readRgbaTexture(shownTexture(), lastSize_);
             writeWindowPng(name, encodeSrgb(shown));
             lastSaved_ = "saved " + name;
             std::printf("screenshot: %s\n", std::filesystem::absolute(name).string().c_str());
@@ -319,6 +400,15 @@ private:
     PanelSettings settings_;
     SettingsById techniqueSettings_;  // each technique's, kept across switches and reloads
     PanelRequests requests_;
+    // The error, split and inspector views (viewer/error_view.hpp, split_view.hpp,
+    // fragment_inspector.hpp); the reference renders only while a view needs it.
+    std::unique_ptr<ErrorView> errorView_;
+    std::unique_ptr<SplitView> split_;
+    std::optional<std::string> splitRequest_;
+    FragmentInspector inspector_;
+    ClickDetector clicks_;
+    bool frameOk_ = false, errorShown_ = false, splitShown_ = false;
+    glm::ivec2 lastSize_{0};
     glm::vec2 lastCursor_{0.0f};
     bool dragLeft_ = false, dragRight_ = false;
     // Camera paths.

@@ -5,6 +5,8 @@
 
 #include "oit/technique_settings.hpp"
 
+#include <glm/glm.hpp>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -16,6 +18,9 @@ struct ViewOptions {
     std::string scene = "builtin:default";
     std::string mode = "abuffer";
     ViewKind view = ViewKind::Image;                     // --view: what the window shows first
+    std::string splitWith = "f2b";                       // --split-with: B of the split view
+    float splitAt = 0.5f;                                // --split-at: the divider, 0..1 of the width
+    std::optional<glm::ivec2> inspect;                   // --inspect X,Y: window pixel, from the top-left
     SettingsById settings;                               // every technique's, resolved from --set/--settings
     std::optional<std::filesystem::path> playPath;       // --path: play a camera path
     std::optional<std::filesystem::path> recordPath;     // --record: record the camera to a path file

@@ -1,12 +1,14 @@
 #include "scene/builtin_scenes.hpp"
 
 #include "scene/mesh_builders.hpp"
+#include "scene/wireframe.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 namespace strata {
 namespace {
@@ -87,7 +89,8 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
         {"volumes", "", "intersecting transparent spheres with attenuation and albedo"},
         {"slabs", "N (1..2048, default 8)",
          "N full-view closed slabs of medium (tau, albedo), 0.1 thick: exactly 2N fragments per pixel"},
-        {"default", "", "the demo room: opaque and transparent, intersecting, coplanar, a field of models"},
+        {"default", "", "the demo room: interpenetrating glass, a decal on a transparent panel, a wireframe over its "
+                        "surface, volumes, dense opaque detail behind"},
     };
     return list;
 }
@@ -195,23 +198,50 @@ Scene makeVolumesScene() {
     return s;
 }
 
-Scene makeDefaultScene() {
-    Scene s = emptyScene("default");
-    // The room: floor, back and left walls, two pedestals (opaque).
-    int wallMat = s.addMaterial(opaque("wall", {0.75f, 0.72f, 0.66f}));
-    int floorMat = s.addMaterial(opaque("floor", {0.45f, 0.42f, 0.4f}));
-    int pedestalMat = s.addMaterial(opaque("pedestal", {0.3f, 0.32f, 0.38f}));
-    placeMesh(s, s.addMesh(makeBox({-5, -0.2f, -5}, {5, 0, 5})), floorMat, glm::mat4(1.0f), "floor");
-    placeMesh(s, s.addMesh(makeBox({-5, 0, -5.2f}, {5, 4, -5})), wallMat, glm::mat4(1.0f), "back wall");
-    placeMesh(s, s.addMesh(makeBox({-5.2f, 0, -5}, {-5, 4, 5})), wallMat, glm::mat4(1.0f), "left wall");
-    int pedestal = s.addMesh(makeBox({-0.5f, 0, -0.5f}, {0.5f, 0.8f, 0.5f}));
-    placeMesh(s, pedestal, pedestalMat, glm::translate(glm::mat4(1.0f), {-2.0f, 0, -1.5f}), "pedestal L");
-    placeMesh(s, pedestal, pedestalMat, glm::translate(glm::mat4(1.0f), {2.0f, 0, -1.5f}), "pedestal R");
+// Boxes appended to one mesh: dense detail as one object (one draw), not hundreds.
+static void appendBox(Mesh& into, const glm::vec3& min, const glm::vec3& max) {
+    const Mesh box = makeBox(min, max);
+    const auto base = std::uint32_t(into.positions.size());
+    into.positions.insert(into.positions.end(), box.positions.begin(), box.positions.end());
+    into.normals.insert(into.normals.end(), box.normals.begin(), box.normals.end());
+    for (std::uint32_t i : box.indices) into.indices.push_back(base + i);
+}
 
-    // A glass cube on the left pedestal and two intersecting volumes on the right one.
-    int cube = s.addMesh(makeBox({-0.45f, 0, -0.45f}, {0.45f, 0.9f, 0.45f}));
-    placeMesh(s, cube, s.addMaterial(transparent("glass", {0.6f, 0.85f, 0.95f}, 0.3f)),
-              glm::translate(glm::mat4(1.0f), {-2.0f, 0.8f, -1.5f}), "glass cube");
+Scene makeDefaultScene() {
+    // Built so that the views have something to show from the first frame (issue 8): glass that
+    // interpenetrates, a decal coplanar with a transparent panel, a translucent wireframe over
+    // its own surface (Fig. 12), and dense opaque detail behind all of it. Object order is the
+    // tie rule's order for coincident surfaces: the decal and the wireframe come before the
+    // surfaces they lie on, so they composite in front.
+    Scene s = emptyScene("default");
+    const glm::mat4 identity(1.0f);
+
+    // In front of the surfaces they lie on (lower object ids).
+    // A decal on a tilted transparent panel: both quads in the panel's plane, the decal offset
+    // within it, so their depths agree only up to round-off.
+    const glm::mat4 panelPlane = glm::rotate(glm::translate(identity, {-0.2f, 2.3f, -2.6f}), glm::radians(-18.0f),
+                                             glm::vec3(0, 1, 0));
+    placeMesh(s, s.addMesh(makeQuad(0.9f, 0.5f)), s.addMaterial(transparent("decal", {0.95f, 0.8f, 0.15f}, 0.75f)),
+              glm::translate(panelPlane, {0.35f, -0.15f, 0.0f}), "decal");
+    // A translucent globe with its wireframe: edge strips in the globe's own triangle planes.
+    const Mesh globe = makeSphere(0.65f, 14, 7);
+    const glm::mat4 globeAt = glm::translate(identity, {0.2f, 0.75f, 0.4f});
+    placeMesh(s, s.addMesh(makeWireframeMesh(globe, globeAt, 0.012f)),
+              s.addMaterial(transparent("wireframe", {0.9f, 0.95f, 1.0f}, 0.6f)), globeAt, "globe wireframe");
+
+    // The surfaces.
+    placeMesh(s, s.addMesh(makeQuad(2.2f, 1.5f)), s.addMaterial(transparent("panel", {0.55f, 0.75f, 0.95f}, 0.3f)),
+              panelPlane, "panel");
+    placeMesh(s, s.addMesh(globe), s.addMaterial(transparent("globe", {0.3f, 0.8f, 0.45f}, 0.25f)), globeAt, "globe");
+
+    // Interpenetrating glass: a box turned on the left pedestal with a sphere through its corner.
+    int glass = s.addMaterial(transparent("glass", {0.6f, 0.85f, 0.95f}, 0.3f));
+    placeMesh(s, s.addMesh(makeBox({-0.45f, 0, -0.45f}, {0.45f, 0.9f, 0.45f})), glass,
+              glm::rotate(glm::translate(identity, {-2.0f, 0.8f, -1.5f}), glm::radians(30.0f), glm::vec3(0, 1, 0)),
+              "glass box");
+    placeMesh(s, s.addMesh(makeSphere(0.45f, 32, 16)), s.addMaterial(transparent("glass sphere", {0.85f, 0.6f, 0.9f}, 0.35f)),
+              glm::translate(identity, {-1.6f, 1.65f, -1.2f}), "glass sphere");
+    // Two intersecting volumes on the right pedestal (media for ll-volume / abuffer-volume).
     int sphere = s.addMesh(makeSphere(0.5f, 40, 20));
     Material red = transparent("red volume", {0.95f, 0.3f, 0.2f}, 0.4f);
     red.tau = {0.5f, 2.5f, 3.0f};
@@ -221,33 +251,70 @@ Scene makeDefaultScene() {
     blue.tau = {3.0f, 1.5f, 0.4f};
     blue.albedo = blue.baseColor;
     blue.volume = true;
-    placeMesh(s, sphere, s.addMaterial(red), glm::translate(glm::mat4(1.0f), {1.75f, 1.3f, -1.5f}), "red volume");
-    placeMesh(s, sphere, s.addMaterial(blue), glm::translate(glm::mat4(1.0f), {2.25f, 1.3f, -1.4f}), "blue volume");
+    placeMesh(s, sphere, s.addMaterial(red), glm::translate(identity, {1.75f, 1.3f, -1.5f}), "red volume");
+    placeMesh(s, sphere, s.addMaterial(blue), glm::translate(identity, {2.25f, 1.3f, -1.4f}), "blue volume");
 
-    // Coplanar panels: two overlapping quads in one plane, in front of the back wall.
-    int panel = s.addMesh(makeQuad(1.6f, 1.2f));
-    placeMesh(s, panel, s.addMaterial(transparent("panel yellow", {0.95f, 0.85f, 0.2f}, 0.5f)),
-              glm::translate(glm::mat4(1.0f), {-0.4f, 2.2f, -3.5f}), "panel A");
-    placeMesh(s, panel, s.addMaterial(transparent("panel magenta", {0.85f, 0.2f, 0.8f}, 0.5f)),
-              glm::translate(glm::mat4(1.0f), {0.4f, 2.0f, -3.5f}), "panel B");
+    // The opaque room: floor, back and left walls, two pedestals.
+    int wallMat = s.addMaterial(opaque("wall", {0.75f, 0.72f, 0.66f}));
+    int pedestalMat = s.addMaterial(opaque("pedestal", {0.3f, 0.32f, 0.38f}));
+    placeMesh(s, s.addMesh(makeBox({-5, -0.2f, -5}, {5, 0, 5})), s.addMaterial(opaque("floor", {0.45f, 0.42f, 0.4f})),
+              identity, "floor");
+    placeMesh(s, s.addMesh(makeBox({-5, 0, -5.2f}, {5, 4, -5})), wallMat, identity, "back wall");
+    placeMesh(s, s.addMesh(makeBox({-5.2f, 0, -5}, {-5, 4, 5})), wallMat, identity, "left wall");
+    int pedestal = s.addMesh(makeBox({-0.5f, 0, -0.5f}, {0.5f, 0.8f, 0.5f}));
+    placeMesh(s, pedestal, pedestalMat, glm::translate(identity, {-2.0f, 0, -1.5f}), "pedestal L");
+    placeMesh(s, pedestal, pedestalMat, glm::translate(identity, {2.0f, 0, -1.5f}), "pedestal R");
 
-    // A field of repeated models in front: alternating opaque and transparent spheres and boxes.
+    // Dense opaque detail behind everything: a relief of blocks of varied depth and height on the
+    // back wall, three colours, each colour one object.
+    Mesh relief[3];
+    for (int row = 0; row < 9; ++row)
+        for (int col = 0; col < 20; ++col) {
+            const int i = row * 20 + col;
+            const float depth = 0.08f + 0.07f * float((i * 7) % 5), height = 0.18f + 0.04f * float((i * 3) % 4);
+            const glm::vec3 at(-4.6f + 0.46f * float(col), 0.2f + 0.4f * float(row), -5.0f);
+            appendBox(relief[i % 3], at, at + glm::vec3(0.38f, height, depth));
+        }
+    const glm::vec3 reliefColours[3] = {{0.8f, 0.45f, 0.3f}, {0.35f, 0.5f, 0.7f}, {0.85f, 0.8f, 0.6f}};
+    for (int k = 0; k < 3; ++k)
+        placeMesh(s, s.addMesh(std::move(relief[k])), s.addMaterial(opaque("relief", reliefColours[k])), identity,
+                  "relief " + std::to_string(k));
+
+    // A row of small models in front, alternating opaque and transparent.
     int small = s.addMesh(makeSphere(0.22f, 20, 10));
     int smallBox = s.addMesh(makeBox({-0.18f, -0.18f, -0.18f}, {0.18f, 0.18f, 0.18f}));
-    for (int z = 0; z < 4; ++z)
-        for (int x = 0; x < 8; ++x) {
-            int i = z * 8 + x;
-            bool isTransparent = (x + z) % 2 == 0;
-            Material m = isTransparent ? transparent("field", paletteColor(i), 0.45f) : opaque("field", paletteColor(i));
-            glm::vec3 at(-3.5f + float(x), 0.25f, 0.5f + 1.0f * float(z));
-            placeMesh(s, (i % 3 == 0) ? smallBox : small, s.addMaterial(m), glm::translate(glm::mat4(1.0f), at),
-                      "field " + std::to_string(i));
-        }
+    for (int x = 0; x < 8; ++x) {
+        const bool isTransparent = x % 2 == 0;
+        Material m = isTransparent ? transparent("field", paletteColor(x), 0.45f) : opaque("field", paletteColor(x));
+        placeMesh(s, (x % 3 == 0) ? smallBox : small, s.addMaterial(m),
+                  glm::translate(identity, {-3.5f + float(x), 0.25f, 2.0f}), "field " + std::to_string(x));
+    }
     s.camera = lookingAt({1.5f, 3.2f, 7.5f}, {0.0f, 1.0f, -1.0f}, 50.0f);
     return s;
 }
 
+namespace {
+
+Scene makeBuiltinSceneWithoutOptions(const std::string& spec);
+
+constexpr std::string_view kWireframeSuffix = ":wireframe";
+
+}  // namespace
+
 Scene makeBuiltinScene(const std::string& spec) {
+    // ":wireframe" after any builtin draws a translucent wireframe over its transparent surfaces.
+    if (spec.size() > kWireframeSuffix.size() && spec.ends_with(kWireframeSuffix)) {
+        Scene s = makeBuiltinSceneWithoutOptions(spec.substr(0, spec.size() - kWireframeSuffix.size()));
+        addWireframes(s);
+        s.name += ":wireframe";
+        return s;
+    }
+    return makeBuiltinSceneWithoutOptions(spec);
+}
+
+namespace {
+
+Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
     auto colon = spec.find(':');
     std::string name = spec.substr(0, colon);
     std::string arg = colon == std::string::npos ? "" : spec.substr(colon + 1);
@@ -272,5 +339,7 @@ Scene makeBuiltinScene(const std::string& spec) {
     for (const auto& b : builtinScenes()) known += (known.empty() ? "" : ", ") + b.name;
     throw std::invalid_argument("builtin:" + spec + ": unknown builtin scene (known: " + known + ")");
 }
+
+}  // namespace
 
 }  // namespace strata

@@ -11,8 +11,11 @@
 //   builtin:volumes      intersecting transparent spheres with attenuation tau and albedo
 //   builtin:slabs:N      N full-view closed slabs of medium, 0.1 thick (exactly 2N fragments per
 //                        pixel): the volumetric paper's Tables 1-2 setup
-//   builtin:default      the demo: an opaque room with transparent and intersecting objects,
-//                        coplanar panels and a field of repeated models
+//   builtin:NAME[:ARG]:wireframe  any of them with a translucent wireframe over its transparent
+//                        surfaces, coplanar with them (scene/wireframe.hpp, the paper's Fig. 12)
+//   builtin:default      the demo: interpenetrating glass, a decal coplanar with a transparent
+//                        panel, a translucent wireframe over its own surface, two intersecting
+//                        volumes, dense opaque detail behind (a relief of blocks), a row of models
 #include "scene/scene.hpp"
 
 #include <string>

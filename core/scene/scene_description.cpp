@@ -3,6 +3,7 @@
 #include "io/bounded_read.hpp"
 #include "io/printable.hpp"
 #include "scene/gltf_loader.hpp"
+#include "scene/wireframe.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -191,6 +192,24 @@ int merge(Scene& scene, Scene&& model, Node objectNode) {
     return scene.addNode(std::move(objectNode));
 }
 
+// "wireframe": true, false, or {"width": metres, "color": [r,g,b], "alpha": a}, all optional.
+std::optional<WireframeStyle> parseWireframe(const json& w) {
+    if (w.is_boolean()) return w.get<bool>() ? std::optional<WireframeStyle>(WireframeStyle{}) : std::nullopt;
+    if (!w.is_object()) fail("wireframe: expected true, false or an object");
+    onlyKeys(w, {"width", "color", "alpha"}, "wireframe: ");
+    WireframeStyle style;
+    if (w.contains("width")) {
+        style.width = number(w["width"], "wireframe.width");
+        if (!(style.width > 0.0f)) fail("wireframe.width: must be > 0");
+    }
+    if (w.contains("color")) style.color = unitRange3(w["color"], "wireframe.color");
+    if (w.contains("alpha")) {
+        style.alpha = number(w["alpha"], "wireframe.alpha");
+        if (style.alpha < 0.0f || style.alpha > 1.0f) fail("wireframe.alpha: must be in [0, 1]");
+    }
+    return style;
+}
+
 void parseCamera(Scene& scene, const json& c) {
     if (!c.is_object()) fail("camera: expected an object");
     onlyKeys(c, {"position", "target", "up", "fov_y_deg"}, "camera: ");
@@ -217,7 +236,7 @@ void parseCamera(Scene& scene, const json& c) {
 
 Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<std::string>* warnings) {
     if (!doc.is_object()) fail("expected a JSON object at the top level");
-    onlyKeys(doc, {"name", "camera", "light_direction", "background", "objects"}, "");
+    onlyKeys(doc, {"name", "camera", "light_direction", "background", "objects", "wireframe"}, "");
     Scene scene;
     scene.name = jsonFile.stem().string();
     if (doc.contains("name")) {
@@ -279,6 +298,9 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
         }
         if (override) node.materialOverride = scene.addMaterial(std::move(*override));
         merge(scene, std::move(loaded), std::move(node));
+    }
+    if (doc.contains("wireframe")) {
+        if (std::optional<WireframeStyle> style = parseWireframe(doc["wireframe"])) addWireframes(scene, *style);
     }
     return scene;
 }

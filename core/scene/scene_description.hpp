@@ -7,6 +7,9 @@
 //              "up": [0,1,0], "fov_y_deg": 45},                up and fov optional
 //   "light_direction": [x,y,z],                                optional, towards the light
 //   "background": [r,g,b],                                     optional, linear RGB
+//   "wireframe": true | {"width": 0.01, "color": [r,g,b],      optional: a translucent wireframe
+//                        "alpha": 0.55},                       over every transparent object, in
+//                                                              its triangles' planes (wireframe.hpp)
 //   "objects": [                                               required, at least one
 //     { "model": "../../shared/scenes-data/fandisk.glb",       relative to the JSON file's folder
 //       "name": "...",                                         optional
