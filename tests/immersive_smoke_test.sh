@@ -44,11 +44,14 @@ run_case() {  # name, extra arguments...
     grep -q 'truth gentle-truth.path' <<<"$out" || fail "$name: the truth trace beside the measured one was not used"
     scored=$(sed -n 's/^immersive: .*, \([0-9]*\) frames scored, mean error \([0-9.]*\) deg.*/\1/p' <<<"$out")
     (( ${scored:-0} >= 1 )) || fail "$name: no frame was scored"
+    if [[ $name == zoomed ]]; then grep -q '^zoom: 2 (fixed)' <<<"$out" || fail "$name: no 'zoom: 2 (fixed)' line"; fi
     echo "immersive_smoke: $name ok (scene $scene colours, panel $panel px, $scored frames scored)"
 }
 
 run_case mono
 run_case stereo --stereo --ipd 64 --predictor cv --deflect shift --extra-latency 20
+# Zoom 2 folded into the homography deflection: the same checks, and the zoom reported.
+run_case zoomed --zoom 2
 
 # Bad input fails before a window opens, with a message.
 if out=$("$strata" view builtin:default --immersive 2>&1); then fail "--immersive without --trace succeeded"; fi

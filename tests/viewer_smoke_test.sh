@@ -113,3 +113,19 @@ grep -q "verdict=\"the nearest 1 of $n kept\"" <<<"$out" || fail "inspect: kbuff
 grep -q '^fragment: 0 .*kept=yes$' <<<"$out" || fail "inspect: kbuffer capacity=1 did not keep the nearest"
 (( $(grep -c '^fragment: .*kept=no$' <<<"$out") == n - 1 )) || fail "inspect: kbuffer capacity=1 kept more than one"
 echo "viewer_smoke: inspector ok ($n fragments)"
+
+# Zoom rendering: at zoom 3 the error view measures what the zoom loses against the reference at
+# zoom 1 (abuffer against abuffer: only the zoom differs); under a frame budget the predictive
+# controller calibrates first and then picks a zoom within --zoom-max.
+out=$(view --zoom 3 --view error --mode abuffer) || { echo "$out"; fail "strata view --zoom 3 failed"; }
+grep -q '^zoom: 3 (fixed)' <<<"$out" || fail "no 'zoom: 3 (fixed)' line: $out"
+line=$(grep '^error: ' <<<"$out") || fail "no 'error:' line at zoom 3"
+awk -v r="$(num rmse "$line")" 'BEGIN { exit !(r > 1e-3 && r < 0.2) }' || fail "zoom 3 error out of range: $line"
+out=$(view --frame-budget-ms 50 --zoom-controller predictive --zoom-max 4) ||
+    { echo "$out"; fail "strata view --frame-budget-ms failed"; }
+grep -q '^zoom calibrated: ' <<<"$out" || fail "the predictive controller did not calibrate: $out"
+line=$(grep '^zoom: ' <<<"$out") || fail "no 'zoom:' line under a budget"
+echo "$line"
+[[ $line =~ ^zoom:\ [1-4]\ \(predictive\),\ frame\ [0-9.]+\ ms\ GPU,\ predicted\ [0-9.]+\ ms$ ]] ||
+    fail "unexpected zoom line under a budget: $line"
+echo "viewer_smoke: zoom ok"

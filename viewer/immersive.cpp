@@ -252,6 +252,7 @@ public:
                     predictorNames_[std::size_t(choices_.predictor)].c_str(),
                     deflectionNames_[std::size_t(choices_.deflection)].c_str(),
                     static_cast<unsigned long long>(scored_), h.mean(), startToDisplay_.value * 1e3);
+        zoom_.printFigures();
     }
 
 private:

@@ -122,6 +122,7 @@ public:
         if (showingError()) errorView_->printFigures(techniqueId_.c_str(), lastSize_);
         if (settings_.view == ViewKind::Split) split_->printFigures(lastSize_);
         inspector_.printFigures(scene_);
+        zoom_.printFigures();
         std::fflush(stdout);
     }
 

@@ -88,6 +88,13 @@ void ZoomDriver::end(const FrameResult& result, Technique* technique) {
     predictedHistory_.push(std::isfinite(predictedMs_) ? float(predictedMs_) : 0.0f);
 }
 
+void ZoomDriver::printFigures() const {
+    std::printf("zoom: %d (%s), frame %.3f ms GPU", zoom_, kZoomControllerNames[std::clamp(built_.controller, 0, 2)],
+                measuredMs_);
+    if (std::isfinite(predictedMs_)) std::printf(", predicted %.3f ms", predictedMs_);
+    std::printf("\n");
+}
+
 void drawZoomSection(ZoomDriver& zoom, bool immersive) {
     ZoomChoices& c = zoom.choices();
     ImGui::Combo("zoom control", &c.controller, kZoomControllerNames, 3);

@@ -49,6 +49,8 @@ public:
     // The predictive controller's calibrated model, when one is in use.
     const ZoomCostModel* model() const;
     const std::string& status() const { return status_; }
+    // One line on stdout: "zoom: Z (controller), frame T ms GPU[, predicted P ms]".
+    void printFigures() const;
 
 private:
     void rebuild(glm::ivec2 displaySize, Technique* technique);
