@@ -238,8 +238,17 @@ TEST_CASE("zoom gl: transparent screen area from the objects' screen rectangles"
     const glm::ivec2 square{64, 64};
     const glm::mat4 vp2 = c.projection(1.0f) * c.view();
     CHECK(transparentScreenArea(quad, vp2, square) == doctest::Approx(8.0 * 8.0).epsilon(1e-4));
-    // Behind the eye it counts as the whole display.
+    // Wholly behind the eye it counts nothing.
+    c.position = {0, 0, -5};
+    CHECK(transparentScreenArea(quad, c.projection(1.0f) * c.view(), square) == 0.0);
+    // An object around the eye plane may cover anything: the whole display.
+    Scene around;
+    around.materials.push_back(Material{});
+    Node box;
+    box.meshes = {around.addMesh(makeBox({-1, -1, -6}, {1, 1, -2}))};
+    box.materialOverride = around.addMaterial(glass);
+    around.addNode(std::move(box));
+    GpuScene straddling(std::move(around));
     c.position = {0, 0, -4};
-    const glm::mat4 vp3 = c.projection(1.0f) * c.view();
-    CHECK(transparentScreenArea(quad, vp3, square) == doctest::Approx(64.0 * 64.0));
+    CHECK(transparentScreenArea(straddling, c.projection(1.0f) * c.view(), square) == doctest::Approx(64.0 * 64.0));
 }

@@ -38,19 +38,20 @@ double transparentScreenArea(const GpuScene& scene, const glm::mat4& viewProject
         const Bounds& b = scene.objects()[std::size_t(index)].worldBounds;
         if (b.empty()) continue;
         glm::vec2 lo(1e30f), hi(-1e30f);
-        bool behind = false;
+        int behind = 0;
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
                               (corner & 4) ? b.max.z : b.min.z);
             const glm::vec4 c = viewProjection * glm::vec4(p, 1.0f);
             if (c.w <= 1e-6f) {
-                behind = true;
-                break;
+                ++behind;
+                continue;
             }
             lo = glm::min(lo, glm::vec2(c) / c.w);
             hi = glm::max(hi, glm::vec2(c) / c.w);
         }
-        if (behind) {
+        if (behind == 8) continue;  // wholly behind the eye: nothing drawn
+        if (behind > 0) {           // straddles the eye plane: it may cover anything
             area += full;
             continue;
         }

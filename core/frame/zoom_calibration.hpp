@@ -31,7 +31,8 @@ ZoomCalibration calibrateZoomCost(Technique& technique, glm::ivec2 displaySize, 
 
 // Display pixels under the screen rectangles of the transparent objects' world bounds, summed over
 // objects and clipped to the display: an estimate of the transparent fragments at zoom 1 up to a
-// density the controller learns. An object that reaches behind the eye counts as the whole display.
+// density the controller learns. An object wholly behind the eye counts nothing; one that straddles
+// the eye plane counts as the whole display.
 double transparentScreenArea(const GpuScene& scene, const glm::mat4& viewProjection, glm::ivec2 displaySize);
 
 // Fragments a technique rasterized in its last frame: captured, dropped and blended as a tail.

@@ -121,7 +121,10 @@ public:
 private:
     ZoomCostModel model_;
     double offsetMs_ = 0.0;           // the scene's fixed part beyond the calibration's
-    double fragmentsPerArea_ = 0.0;   // transparent fragments per display pixel of transparent area, at zoom 1
+    // Transparent fragments per display pixel of transparent area, at zoom 1. Until a frame is
+    // measured: one (exact for full-view quads; closed objects hold two per covered pixel but
+    // cover less than their rectangles).
+    double fragmentsPerArea_ = 1.0;
     bool seeded_ = false;
     double predicted_;
 };
