@@ -14,6 +14,7 @@ mkdir -p "$work/a-folder"
 passed=0
 failed=0
 models=/usr/share/assimp/models/glTF2
+root=$(cd "$(dirname "$0")/.." && pwd)
 shared=$(cd "$(dirname "$0")/../.." && pwd)/shared/scenes-data
 
 ok() { passed=$((passed + 1)); }
@@ -57,6 +58,14 @@ expect_error "unknown technique 'llx'" bench builtin:layers:2 --modes ll --set l
 expect_error "technique kbuffer is not among those run (abuffer, ll)" bench builtin:layers:2 --modes ll --set kbuffer.capacity=4 --json "$work/out.png"
 expect_error "not of the form [technique.]name=value" render builtin:layers:2 --set capacity --out "$work/out.png"
 expect_error "missing.json: no such file" render builtin:layers:2 --settings "$tmp/missing.json" --out "$work/out.png"
+# Zoom rendering's options.
+expect_error "zoom '0' is not an integer in 1..16" render builtin:layers:2 --zoom 0 --out "$work/out.png"
+expect_error "zoom '2.5' is not an integer in 1..16" bench builtin:layers:2 --zoom 2.5 --json "$work/out.json"
+expect_error "--zoom-controller requires --frame-budget-ms" bench builtin:layers:2 --zoom-controller predictive
+expect_error "--zoom excludes --frame-budget-ms" bench builtin:layers:2 --zoom 2 --frame-budget-ms 10
+expect_error "--zoom excludes --frame-budget-ms" view --zoom 3 --frame-budget-ms 5
+expect_error "--frame-budget-ms: Value -1 not in range" bench builtin:layers:2 --frame-budget-ms -1
+expect_error "--zoom-controller: pid not in {reactive,predictive}" bench builtin:layers:2 --frame-budget-ms 10 --zoom-controller pid
 printf '{"capacity": 4,' >"$tmp/broken.json"
 expect_error "broken.json: " render builtin:layers:2 --mode ll --settings "$tmp/broken.json" --out "$work/out.png"
 printf '{"capacity": "four"}' >"$tmp/string.json"
@@ -182,6 +191,21 @@ fi
 if "$strata" bench builtin:layers:3 --size 32x32 --frames 2 --json "$work/bench.json" --csv "$work/bench.csv" \
      >"$tmp/table" 2>/dev/null && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['modes'] and all(m['id'] for m in d['modes'])" "$work/bench.json" &&
    grep -q "abuffer" "$tmp/table" && [ "$(wc -l <"$work/bench.csv")" -ge 2 ]; then ok; else bad "bench JSON/CSV/table"; fi
+# Under a frame budget along a camera path: one zoom, time and prediction per frame, each zoom in range.
+if "$strata" bench builtin:layers:4 --size 48x32 --frames 6 --warmup 0 --modes ll \
+     --camera-path "$root/scenes/paths/zoom-load-jumps.path" --frame-budget-ms 5 --zoom-controller predictive \
+     --zoom-max 3 --json "$tmp/budget.json" >/dev/null 2>&1 &&
+   python3 - "$tmp/budget.json" <<'PY'; then ok; else bad "bench --frame-budget-ms JSON"; fi
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d['zoom_controller'] == 'predictive' and d['frame_budget_ms'] == 5
+(m,) = d['modes']
+b = m['budget']
+assert len(b['frame_zoom']) == len(b['frame_ms']) == len(b['frame_predicted_ms']) == 6
+assert all(1 <= z <= 3 for z in b['frame_zoom'])
+assert 0.0 <= b['within_band'] <= b['not_over_band'] <= 1.0
+assert b['model']['ms_per_megafragment'] >= 0.0
+PY
 # A successful run leaves its outputs and nothing else.
 leftover=$(cd "$work" && find . -mindepth 1 | sort | grep -vxF -e ./a-folder -e ./fandisk.png -e ./bench.json -e ./bench.csv)
 if [ -z "$leftover" ]; then ok; else bad "left in the output folder: $leftover"; fi
