@@ -28,6 +28,7 @@ struct BenchArgs {
     SettingsArgs settings;
     std::string zoom = "1";
     bool zoomBlur = false;
+    double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
     double budgetMs = 0.0;
     std::string controller = "reactive";
     int maxZoom = 8;
@@ -70,6 +71,7 @@ void run(const BenchArgs& a) {
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
     Scene scene = openSceneAndWarn(a.scene);
+    if (a.depthTieUlps >= 0.0) scene.depthTieUlps = a.depthTieUlps;
     gl::HeadlessContext context;
     checkFrameSize(options.size);
     GpuScene gpu(std::move(scene));
@@ -105,6 +107,9 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
     auto* zoom = cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16)")->capture_default_str();
     cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
+    cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
+                    "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
+        ->check(CLI::Range(0.0, 1e6));
     auto* budget = cmd->add_option("--frame-budget-ms", args->budgetMs,
                                    "pick the zoom per frame for this frame time (with --zoom-controller)")
                        ->check(CLI::Range(0.001, 1e6));

@@ -31,6 +31,7 @@ struct RenderArgs {
     SettingsArgs settings;
     std::string zoom = "1";
     bool zoomBlur = false;
+    double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
 };
 
 void run(const RenderArgs& a) {
@@ -42,6 +43,7 @@ void run(const RenderArgs& a) {
     checkImageWritable(a.out);
     if (!a.heatmap.empty()) checkImageWritable(a.heatmap);
     Scene scene = openSceneAndWarn(a.scene);
+    if (a.depthTieUlps >= 0.0) scene.depthTieUlps = a.depthTieUlps;
     gl::HeadlessContext context;
     checkFrameSize(size);  // before the scene is uploaded or a target allocated
     GpuScene gpu(std::move(scene));
@@ -117,6 +119,9 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16); the heatmap is of the drawn frame")
         ->capture_default_str();
     cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
+    cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
+                    "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
+        ->check(CLI::Range(0.0, 1e6));
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

@@ -310,9 +310,11 @@ private:
     }
 
     void renderEye(Eye& eye, glm::ivec2 eyeSize, const FrameOptions& frameOptions) {
+        // Set first: the targets take the new size even when the technique then fails, and the
+        // deflection must read them at the zoom they were sized for.
+        eye.zoom = frameOptions.zoom;
         try {
             frame_ = eye.renderer.render(scene_, eye.rendered, eyeSize, technique_.get(), frameOptions);
-            eye.zoom = frame_.zoom;
         } catch (const std::exception& e) {
             if (smokeTest()) throw;
             lastError_ = e.what();
