@@ -32,7 +32,6 @@ public:
         skipper_.beginFrame(frame, s.skipPeeled);
         storage_.prepare(frame.size, 2, s.capacity, s.maxBlockMiB);
         setDepthOrderUniforms(frame, peelProgram_.id());
-        setDepthOrderUniforms(frame, resolveProgram_.id());
         const std::uint64_t total = initialise(frame, stats);
         std::uint64_t remaining = total, overflow = 0;
         if (total > 0) {
