@@ -78,12 +78,15 @@ TEST_CASE("coplanar:K: the robust variants capture all K and equal the reference
         }
         // One layer: f2b-ll peels it once (depth + peel + resolve + composite); dual-ll stores
         // it on the front side (init + peel + resolve + composite); bun-ll: range, store, resolve.
-        // The pool grows to K nodes a pixel on the first frame (a repeated peel each).
+        // The pool (first one node a pixel) grows on the first frame to what the layer needs, a
+        // repeated peel each: f2b-ll stores the K - 1 copies beside the anchor, dual-ll all K
+        // (its first pool holds two a pixel: one per side).
         auto f2b = test::renderWith(*f.gpu, f.camera, size, "f2b-ll").result.stats;
         CHECK(f2b.passes == 4 + f2b.regrows);
-        CHECK(f2b.regrows == (k > 1 ? 1 : 0));
+        CHECK(f2b.regrows == (k > 2 ? 1 : 0));
         auto dual = test::renderWith(*f.gpu, f.camera, size, "dual-ll").result.stats;
         CHECK(dual.passes == 4 + dual.regrows);
+        CHECK(dual.regrows == (k > 2 ? 1 : 0));  // its first pool: a node a pixel and side
         CHECK(test::renderWith(*f.gpu, f.camera, size, "bun-ll").result.stats.passes >= 3);
     }
 }
@@ -173,18 +176,21 @@ TEST_CASE("reversed submission order changes nothing") {
 }
 
 TEST_CASE("a list pool that cannot grow keeps what fits and counts the rest; bun-ll tiles instead") {
-    // coplanar:4 at 16x12 is one layer of 768 fragments; 0.01 MiB holds 436 nodes of 24 bytes.
+    // coplanar:4 at 16x12 is one layer of 768 fragments; 0.01 MiB holds 436 nodes of 24 bytes,
+    // fewer than the 576 f2b-ll stores beside its anchors.
     Fixture f(makeBuiltinScene("coplanar:4"));
     const glm::ivec2 size(16, 12);
     const std::uint64_t total = 4 * 192;
     const std::uint64_t fits = gl::storageBlockElements(24, 0.01);
     REQUIRE(fits < total);
-    for (const char* id : {"f2b-ll", "dual-ll"}) {
+    // dual-ll stores all four copies in the pool; f2b-ll keeps one a pixel as the anchor and
+    // stores the other three.
+    for (auto [id, kept] : {std::pair<std::string, std::uint64_t>{"dual-ll", fits}, {"f2b-ll", 192 + fits}}) {
         CAPTURE(id);
         auto r = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"max_block_mib=0.01"}));
         CHECK(r.result.stats.overflowed);
-        CHECK(r.result.stats.fragmentsCaptured == fits);
-        CHECK(r.result.stats.fragmentsDropped == total - fits);
+        CHECK(r.result.stats.fragmentsCaptured == kept);
+        CHECK(r.result.stats.fragmentsDropped == total - kept);
     }
     Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
     auto bun = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("bun-ll", {"max_block_mib=0.01"}));
@@ -198,15 +204,19 @@ TEST_CASE("bytes follow the formulas at precision 32") {
     Fixture f(makeLayersScene(3, 0.5f));
     const glm::ivec2 size(24, 10);
     const std::uint64_t pixels = 240;
-    // Three depth buffers (4 B), an RGBA32F accumulation (16), K entries of 20 B, the FAB
-    // counter (4), two counters (8) and the total counter (4).
-    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-fab", {"capacity=2"})).result.stats.bytes ==
-          pixels * (12 + 16 + 2 * 20 + 4) + 8 + 4);
-    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-kb", {"capacity=2"})).result.stats.bytes ==
-          pixels * (12 + 16 + 2 * 20) + 8 + 4);
+    // Three depth buffers (4 B), two anchor ids (RG32UI, 8), two anchor colours and an
+    // accumulation (RGBA32F, 16), K - 1 entries of 20 B beside the anchor, the FAB counter (4),
+    // two counters (8) and the total counter (4).
+    const std::uint64_t f2bTargets = 12 + 16 + 48;
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-fab", {"capacity=3"})).result.stats.bytes ==
+          pixels * (f2bTargets + 2 * 20 + 4) + 8 + 4);
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-kb", {"capacity=3"})).result.stats.bytes ==
+          pixels * (f2bTargets + 2 * 20) + 8 + 4);
     // Two RG32F ranges and two RGBA32F accumulations (48), both sides' entries and counters.
     CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("dual-fab", {"capacity=2"})).result.stats.bytes ==
           pixels * (48 + 2 * (2 * 20 + 4)) + 8);
-    // f2b-ll: one layer covers the frame, so the pool holds one node (24 B) a pixel, plus heads.
-    CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b-ll").result.stats.bytes == pixels * (12 + 16 + 24 + 4) + 8 + 4);
+    // f2b-ll: nothing coincides, so the pool keeps its first size, one node (24 B) a pixel, plus
+    // heads.
+    CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b-ll").result.stats.bytes ==
+          pixels * (f2bTargets + 24 + 4) + 8 + 4);
 }

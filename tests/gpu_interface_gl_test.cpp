@@ -12,6 +12,7 @@
 #include "oit/buffers/buffer_bindings.h"
 #include "oit/coplanarity_bindings.h"
 #include "oit/buffers/prefix_sum.hpp"
+#include "oit/peeling/layer_bindings.h"
 #include "oit/peeling/peel_bindings.h"
 #include "oit/screendoor/screendoor_bindings.h"
 #include "oit/volume/volume_bindings.h"
@@ -238,7 +239,10 @@ std::vector<ProgramCase> programCases() {
                                                    {"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}};
     const std::map<std::string, Binding> layerPeel = {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
                                                       {"uPreviousLayer", tex(BIND_PEEL_PREVIOUS)},
-                                                      {"uLayer", tex(BIND_PEEL_LAYER)}};
+                                                      {"uLayer", tex(BIND_PEEL_LAYER)},
+                                                      {"uAnchorIds", tex(BIND_ANCHOR_IDS)}};
+    const std::map<std::string, Binding> anchor = {{"uAnchorIds", tex(BIND_ANCHOR_IDS)},
+                                                   {"uAnchorColor", tex(BIND_ANCHOR_COLOR)}};
     const std::map<std::string, Binding> layerListCounters = {{"uFrontCount", kCounters}, {"uBackCount", kCounters}};
     const std::map<std::string, Binding> layerCounters = {{"uStored", kCounters}, {"uOverflowed", kCounters}};
     const std::map<std::string, Binding> fabLayer = {{"uCounts", image(BIND_PIXEL_COUNTS)},
@@ -342,9 +346,9 @@ std::vector<ProgramCase> programCases() {
          with(with(lists, layerListCounters), {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}})},
         {{scene, "oit/peeling/dual_layer_peel.frag.glsl"}, {{"LAYER_FAB", ""}},
          with(with(fabLayer, layerCounters), {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}})},
-        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}}, lists},
-        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}}, fabLayer},
-        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}}, kbLayer},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}}, with(lists, anchor)},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"ANCHOR", ""}}, with(fabLayer, anchor)},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}, {"ANCHOR", ""}}, with(kbLayer, anchor)},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"DUAL", ""}}, lists},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"DUAL", ""}}, fabLayer},
         {{scene, "oit/peeling/bun_ll_store.frag.glsl"}, {}, with(with(bucket, lists), {{"uNodeCount", kCounters}})},

@@ -4,13 +4,17 @@
 //      pixel's nearest fragment and counts every fragment;
 //   2. per layer, a peel pass (geometry; layer_peel.frag.glsl) stores every fragment not yet
 //      peeled within the tie tolerance of the anchor (layer_tie.glsl: the project's tie rule,
-//      not bit-equal depths) in per-pixel storage (layer_storage.hpp: linked lists whose pool
-//      grows to the layer for f2b-ll, robust; K entries per pixel for f2b-fab and f2b-kb,
-//      bounded, the rest of the layer counted as overflow), and in the same pass the hardware
-//      depth test anchors the next layer among the fragments behind it. The paper's two passes
-//      per layer (depth, then capture) thus cost one geometry pass per layer, plus the first;
-//   3. per layer, a full-screen resolve composites the layer in object, then primitive order
-//      under the accumulation.
+//      not bit-equal depths), other than the anchor itself, in per-pixel storage
+//      (layer_storage.hpp: linked lists whose pool grows to the layer for f2b-ll, robust; K - 1
+//      entries per pixel beside the anchor for f2b-fab and f2b-kb, bounded, the rest of the
+//      layer counted as overflow), and in the same pass the hardware depth test anchors the
+//      next layer among the fragments behind it, keeping the anchor's colour and ids as f2b
+//      keeps its layer. The paper's two passes per layer (depth, then capture) thus cost one
+//      geometry pass per layer, plus the first, and where nothing coincides no storage and no
+//      atomic is touched;
+//   3. per layer, a full-screen resolve composites the anchor and the stored fragments in
+//      object, then primitive order under the accumulation (its samples-passed count is the
+//      number of anchors).
 // Then one composite over the opaque colour. Each peel pass counts the layer's fragments (stored
 // or not), so the loop ends on the layer that leaves nothing: D layers, D peel passes.
 #include "oit/technique.hpp"
@@ -18,6 +22,7 @@
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/layer_settings.hpp"
+#include "oit/peeling/layer_bindings.h"
 #include "oit/peeling/layer_storage.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
@@ -35,7 +40,8 @@ public:
         ensureTargets(frame.size, s.precision);
         stats = {};
         skipper_.beginFrame(frame, s.skipPeeled);
-        storage_.prepare(frame.size, 1, s.capacity, s.maxBlockMiB);
+        // The anchor is one of the K a bounded layer keeps.
+        storage_.prepare(frame.size, 1, s.capacity - 1, s.maxBlockMiB);
         const float clearAccum[4] = {0, 0, 0, 1};
         glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
         setDepthOrderUniforms(frame, peelProgram_.id());
@@ -53,13 +59,14 @@ public:
             }
             const int cur = layer % 3, next = (layer + 1) % 3, previous = (layer + 2) % 3;
             const LayerCounts c = peel(frame, layer, previous, cur, next, stats);
-            if (c.inLayer == 0) break;  // a guard: an anchored layer holds its anchor
-            resolve(frame, stats);
+            const std::uint64_t anchors = resolve(frame, layer % 2, stats);
             composited = true;
-            stats.fragmentsCaptured += c.stored;
+            const std::uint64_t inLayer = anchors + c.inLayer;
+            if (inLayer == 0) break;  // a guard: a layer left to peel has anchors
+            stats.fragmentsCaptured += anchors + c.stored;
             overflow += c.overflow;
-            if (c.inLayer >= remaining) break;
-            remaining -= c.inLayer;
+            if (inLayer >= remaining) break;
+            remaining -= inLayer;
             // What is left lies at or behind the next anchor.
             skipper_.query(frame, depth_[next].id(), {RemainingSide::NotNearerThanR});
         }
@@ -68,10 +75,12 @@ public:
         storage_.endFrame();
         stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
         if (overflow > 0) stats.overflowed = true;
-        // Three depth buffers (4 B each), the accumulation (RGBA16F, 8 B, or RGBA32F, 16 B), the
-        // layer storage and the total counter.
+        // Three depth buffers (4 B each), two anchor ids (RG32UI, 8 B), two anchor colours and the
+        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), the layer storage and the total
+        // counter.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
-        stats.bytes = pixels * (3 * 4 + floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
+        stats.bytes =
+            pixels * (3 * 4 + 2 * 8 + 3 * floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
     }
 
 private:
@@ -79,8 +88,10 @@ private:
         if (depthProgram_.program) return;
         depthProgram_ = buildSceneProgram("oit/peeling/next_layer.frag.glsl");
         peelProgram_ = buildSceneProgram("oit/peeling/layer_peel.frag.glsl", storage_.defines());
-        resolveProgram_ =
-            gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, storage_.defines());
+        gl::Defines anchored = storage_.defines();
+        anchored["ANCHOR"] = "";
+        resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
+        anchors_ = gl::createQuery(GL_SAMPLES_PASSED);
         compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"});
         total_ = gl::Buffer::create();
         glNamedBufferStorage(total_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
@@ -93,21 +104,30 @@ private:
         accum_ = gl::createTexture2D(rgbaFloatFormat(precision), size.x, size.y);
         accumFbo_ = gl::Framebuffer::create();
         glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
-        for (int i = 0; i < 3; ++i) {
-            depth_[i] = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
-            depthFbo_[i] = gl::Framebuffer::create();
-            glNamedFramebufferTexture(depthFbo_[i].id(), GL_DEPTH_ATTACHMENT, depth_[i].id(), 0);
-            glNamedFramebufferDrawBuffer(depthFbo_[i].id(), GL_NONE);
+        for (auto& d : depth_) d = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+        for (int i = 0; i < 2; ++i) {
+            anchorColor_[i] = gl::createTexture2D(rgbaFloatFormat(precision), size.x, size.y);
+            anchorIds_[i] = gl::createTexture2D(GL_RG32UI, size.x, size.y);
         }
+        anchorFbo_ = gl::Framebuffer::create();
+        const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(anchorFbo_.id(), 2, two);
     }
 
-    // Binds depthFbo_[target] cleared to 0 (nothing anchored) with depth writes on.
-    void bindAnchorTarget(const FrameContext& frame, int target) {
-        glBindFramebuffer(GL_FRAMEBUFFER, depthFbo_[target].id());
+    // Binds depth_[depth] cleared to 0 (nothing anchored) with depth writes on, and the anchor
+    // colour and ids of set `set`, the ids cleared to 0 (none).
+    void bindAnchorTarget(const FrameContext& frame, int depth, int set) {
+        const GLuint fbo = anchorFbo_.id();
+        glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_[depth].id(), 0);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, anchorColor_[set].id(), 0);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, anchorIds_[set].id(), 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         setTransparentDepthState(frame);
         glDepthMask(GL_TRUE);  // clears obey the mask
         const float zeroDepth = 0.0f;
-        glClearNamedFramebufferfv(depthFbo_[target].id(), GL_DEPTH, 0, &zeroDepth);
+        glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &zeroDepth);
+        const GLuint noIds[4] = {0, 0, 0, 0};
+        glClearNamedFramebufferuiv(fbo, GL_COLOR, 1, noIds);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
     }
@@ -117,7 +137,7 @@ private:
         gl::ScopedPass pass(frame.timer, id_ + " depth");
         const GLuint zero = 0;
         glNamedBufferSubData(total_.id(), 0, sizeof(GLuint), &zero);
-        bindAnchorTarget(frame, 0);
+        bindAnchorTarget(frame, 0, 0);
         glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, total_.id());
         skipper_.draw(frame, depthProgram_, stats);
         glDepthMask(GL_FALSE);
@@ -133,9 +153,10 @@ private:
         glProgramUniform1i(program, glGetUniformLocation(program, "uFirstLayer"), layer == 0);
         for (;;) {
             gl::ScopedPass pass(frame.timer, id_ + " peel");
-            bindAnchorTarget(frame, next);
+            bindAnchorTarget(frame, next, (layer + 1) % 2);
             glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[previous].id());
             glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
+            glBindTextureUnit(gpu::BIND_ANCHOR_IDS, anchorIds_[layer % 2].id());
             storage_.beginPass(program);
             skipper_.draw(frame, peelProgram_, stats);
             glDepthMask(GL_FALSE);
@@ -147,16 +168,25 @@ private:
         }
     }
 
-    void resolve(const FrameContext& frame, TechniqueStats& stats) {
+    // Composites the layer whose anchor is in set `set` under the accumulation; returns the
+    // number of anchors.
+    std::uint64_t resolve(const FrameContext& frame, int set, TechniqueStats& stats) {
         gl::ScopedPass pass(frame.timer, id_ + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // under
         storage_.bindForResolve(resolveProgram_.id());
+        glBindTextureUnit(gpu::BIND_ANCHOR_IDS, anchorIds_[set].id());
+        glBindTextureUnit(gpu::BIND_ANCHOR_COLOR, anchorColor_[set].id());
+        glBeginQuery(GL_SAMPLES_PASSED, anchors_.id());
         drawFullscreen(frame, resolveProgram_.id());
+        glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
         ++stats.passes;
+        GLuint64 anchors = 0;
+        glGetQueryObjectui64v(anchors_.id(), GL_QUERY_RESULT, &anchors);
+        return anchors;
     }
 
     void composite(const FrameContext& frame, TechniqueStats& stats) {
@@ -175,10 +205,11 @@ private:
     SceneProgram depthProgram_, peelProgram_;
     gl::Program resolveProgram_, compositeProgram_;
     gl::Buffer total_;
+    gl::Query anchors_;
     glm::ivec2 size_{0, 0};
     int precision_ = 0;
-    gl::Texture accum_, depth_[3];
-    gl::Framebuffer accumFbo_, depthFbo_[3];
+    gl::Texture accum_, depth_[3], anchorColor_[2], anchorIds_[2];
+    gl::Framebuffer accumFbo_, anchorFbo_;
     ObjectSkipper skipper_;
 };
 
@@ -191,7 +222,8 @@ TechniqueEntry f2bLlEntry() {
     TechniqueInfo info{"f2b-ll", "coplanarity", true, true,
                        "2D+2 (depth + D peels + D resolves + composite; +1 peel per pool regrow); Table 1: 2 per "
                        "iteration, 2D",
-                       "w*h*28 B at precision=32 (3 depth 4 B + RGBA32F accumulation) + w*h*4 heads + 24 B per "
+                       "w*h*76 B at precision=32 (3 depth 4 B, 2 anchor ids RG32UI, 2 anchor colours + accumulation "
+                       "RGBA32F) + w*h*4 heads + 24 B per "
                        "fragment of the largest layer (pool grown to it); Table 1: 2C(Z)+4 words",
                        "F2B-LL (Algorithm 2): each peel links every fragment within the tie tolerance of the layer's "
                        "anchor into per-pixel lists (resolved in object order) and anchors the next layer"};
@@ -202,7 +234,7 @@ TechniqueEntry f2bLlEntry() {
 TechniqueEntry f2bFabEntry() {
     TechniqueInfo info{"f2b-fab", "coplanarity", false, true,
                        "2D+2 (depth + D peels + D resolves + composite); Table 1: 2 per iteration, 2D",
-                       "w*h*(28 + 20K + 4) B at precision=32 (3 depth + RGBA32F accumulation, K entries + counter); "
+                       "w*h*(76 + 20(K-1) + 4) B at precision=32 (3 depth, 2 anchor ids and colours, + RGBA32F accumulation, K-1 entries + counter beside the anchor); "
                        "Table 1: K+4 words",
                        "F2B-FAB (Algorithm 3): per layer, up to K coincident fragments per pixel in a fixed array "
                        "with a per-pixel counter; R_h = sum min(K, C(Z_i)) / total, the rest counted as overflow"};
@@ -213,7 +245,7 @@ TechniqueEntry f2bFabEntry() {
 TechniqueEntry f2bKbEntry() {
     TechniqueInfo info{"f2b-kb", "coplanarity", false, true,
                        "2D+2 (depth + D peels + D resolves + composite); Table 1: 2 per iteration, 2D",
-                       "w*h*(28 + 20K) B at precision=32 (3 depth + RGBA32F accumulation, K slots); Table 1: K+3 "
+                       "w*h*(76 + 20(K-1)) B at precision=32 (3 depth, 2 anchor ids and colours, + RGBA32F accumulation, K-1 slots beside the anchor); Table 1: K+3 "
                        "words",
                        "F2B-KB (Algorithm 3): per layer, up to K coincident fragments per pixel in k-buffer slots "
                        "claimed in order by compare-and-swap (no counter); the rest counted as overflow"};

@@ -1,12 +1,14 @@
 #version 450 core
-// Resolve of one peeled layer (f2b-ll, f2b-fab, f2b-kb; with DUAL the front and back layers of
-// dual-ll, dual-fab): the pixel's stored fragments are one layer, so they composite in scene
+// Resolve of one peeled layer (f2b-ll, f2b-fab, f2b-kb, with ANCHOR; with DUAL the front and
+// back layers of dual-ll, dual-fab): the pixel's stored fragments (and with ANCHOR the layer's
+// anchor, kept apart by the peel pass with its colour and ids) are one layer, so they composite in scene
 // order (core/render/depth_order.hpp, step 3: object, then primitive), found by repeated
 // selection: no sort arrays (a layer is one fragment but where surfaces coincide), O(n^2) in
 // the coincident count, exact for any. The result goes out as (premultiplied colour,
 // 1 - transmittance). The host blends output 0 under the front
 // accumulation and, with DUAL, output 1 over the back accumulation. An empty side writes 0,
-// neutral under both blends; without DUAL a pixel with nothing is discarded.
+// neutral under both blends; without DUAL a pixel with nothing is discarded, so with ANCHOR the
+// samples-passed count of the pass is the number of anchors.
 #include "bindings.h"
 #include "layer_storage.glsl"
 #include "oit/packed_color.glsl"
@@ -50,33 +52,72 @@ bool selectSide(ivec2 pixel, int side) {
 
 #define NO_FRAGMENT 0xFFFFFFFFu
 
+#ifdef ANCHOR
+#include "layer_bindings.h"
+layout(binding = BIND_ANCHOR_IDS) uniform usampler2D uAnchorIds;
+layout(binding = BIND_ANCHOR_COLOR) uniform sampler2D uAnchorColor;
+// The anchor as fragment index kAnchor: its own accessors, the storage's for every other index.
+const uint kAnchor = 0xFFFFFFFEu;
+uvec2 gAnchorIds;
+vec4 gAnchorColor;
+#define ANCHOR_OR(i, anchorValue, storedValue) ((i) == kAnchor ? (anchorValue) : (storedValue))
+uint objectOf(uint i) { return ANCHOR_OR(i, gAnchorIds.x - 1u, fragmentObject(i)); }
+uint primitiveOf(uint i) { return ANCHOR_OR(i, gAnchorIds.y, fragmentPrimitive(i)); }
+float depthOf(uint i) { return ANCHOR_OR(i, 1.0, fragmentDepth(i)); }  // one per (object, primitive): never compared
+void compositeAny(uint i, inout vec3 color, inout float transmittance) {
+    if (i == kAnchor) {
+        color += transmittance * gAnchorColor.a * gAnchorColor.rgb;
+        transmittance *= 1.0 - gAnchorColor.a;
+    } else {
+        compositeFragment(i, color, transmittance);
+    }
+}
+#else
+uint objectOf(uint i) { return fragmentObject(i); }
+uint primitiveOf(uint i) { return fragmentPrimitive(i); }
+float depthOf(uint i) { return fragmentDepth(i); }
+void compositeAny(uint i, inout vec3 color, inout float transmittance) { compositeFragment(i, color, transmittance); }
+#endif
+
 // Scene order; equal keys (one primitive cannot cover a pixel twice) fall back to the index so
 // the order stays total.
 bool sceneBefore(uint a, uint b) {
-    uint oa = fragmentObject(a), ob = fragmentObject(b);
+    uint oa = objectOf(a), ob = objectOf(b);
     if (oa != ob) return oa < ob;
-    uint pa = fragmentPrimitive(a), pb = fragmentPrimitive(b);
+    uint pa = primitiveOf(a), pb = primitiveOf(b);
     if (pa != pb) return pa < pb;
-    float da = fragmentDepth(a), db = fragmentDepth(b);
+    float da = depthOf(a), db = depthOf(b);
     if (da != db) return da > db;
     return a < b;
 }
 
-void compositeLayer(inout vec3 color, inout float transmittance) {
+// `stored`: whether the storage holds any of the layer's fragments.
+void compositeLayer(bool stored, inout vec3 color, inout float transmittance) {
+#ifdef ANCHOR
+    // Where nothing coincides (most pixels) the layer is its anchor: no storage, no selection.
+    if (!stored) {
+        compositeAny(kAnchor, color, transmittance);
+        return;
+    }
+#else
     // Where nothing coincides (most pixels) the layer is one fragment: no selection.
     if (singleFragment()) {
         compositeFragment(gFirst, color, transmittance);
         return;
     }
+#endif
     uint done = NO_FRAGMENT;
     while (true) {
         uint best = NO_FRAGMENT;
+#ifdef ANCHOR
+        if (done == NO_FRAGMENT || sceneBefore(done, kAnchor)) best = kAnchor;
+#endif
         FOR_EACH_FRAGMENT(i) {
             if (done != NO_FRAGMENT && !sceneBefore(done, i)) continue;
             if (best == NO_FRAGMENT || sceneBefore(i, best)) best = i;
         }
         if (best == NO_FRAGMENT) break;
-        compositeFragment(best, color, transmittance);
+        compositeAny(best, color, transmittance);
         done = best;
     }
 }
@@ -87,10 +128,13 @@ layout(location = 1) out vec4 outBack;
 #endif
 
 vec4 compositeSide(ivec2 pixel, int side) {
-    if (!selectSide(pixel, side)) return vec4(0.0);
+    bool stored = selectSide(pixel, side);
+#ifndef ANCHOR
+    if (!stored) return vec4(0.0);
+#endif
     vec3 color = vec3(0.0);
     float transmittance = 1.0;
-    compositeLayer(color, transmittance);
+    compositeLayer(stored, color, transmittance);
     return vec4(color, 1.0 - transmittance);
 }
 
@@ -99,6 +143,11 @@ void main() {
 #ifdef DUAL
     outFront = compositeSide(pixel, 0);
     outBack = compositeSide(pixel, 1);
+#elif defined(ANCHOR)
+    gAnchorIds = texelFetch(uAnchorIds, pixel, 0).rg;
+    if (gAnchorIds.x == 0u) discard;  // no layer here (coincident fragments come with an anchor)
+    gAnchorColor = texelFetch(uAnchorColor, pixel, 0);
+    outFront = compositeSide(pixel, 0);
 #else
     if (!selectSide(pixel, 0)) discard;
     outFront = compositeSide(pixel, 0);
