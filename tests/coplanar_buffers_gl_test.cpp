@@ -204,10 +204,10 @@ TEST_CASE("bytes follow the formulas at precision 32") {
     Fixture f(makeLayersScene(3, 0.5f));
     const glm::ivec2 size(24, 10);
     const std::uint64_t pixels = 240;
-    // Three depth buffers (4 B), two anchor ids (RG32UI, 8), two anchor colours and an
-    // accumulation (RGBA32F, 16), K - 1 entries of 20 B beside the anchor, the FAB counter (4),
+    // Three depth buffers (4 B), two anchors (RGBA32UI, 16), an RGBA32F accumulation (16),
+    // K - 1 entries of 20 B beside the anchor, the FAB counter (4),
     // two counters (8) and the total counter (4).
-    const std::uint64_t f2bTargets = 12 + 16 + 48;
+    const std::uint64_t f2bTargets = 12 + 32 + 16;
     CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-fab", {"capacity=3"})).result.stats.bytes ==
           pixels * (f2bTargets + 2 * 20 + 4) + 8 + 4);
     CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-kb", {"capacity=3"})).result.stats.bytes ==

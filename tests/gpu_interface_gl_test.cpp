@@ -240,9 +240,8 @@ std::vector<ProgramCase> programCases() {
     const std::map<std::string, Binding> layerPeel = {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
                                                       {"uPreviousLayer", tex(BIND_PEEL_PREVIOUS)},
                                                       {"uLayer", tex(BIND_PEEL_LAYER)},
-                                                      {"uAnchorIds", tex(BIND_ANCHOR_IDS)}};
-    const std::map<std::string, Binding> anchor = {{"uAnchorIds", tex(BIND_ANCHOR_IDS)},
-                                                   {"uAnchorColor", tex(BIND_ANCHOR_COLOR)}};
+                                                      {"uAnchor", tex(BIND_ANCHOR)}};
+    const std::map<std::string, Binding> anchor = {{"uAnchor", tex(BIND_ANCHOR)}};
     const std::map<std::string, Binding> layerListCounters = {{"uFrontCount", kCounters}, {"uBackCount", kCounters}};
     const std::map<std::string, Binding> layerCounters = {{"uStored", kCounters}, {"uOverflowed", kCounters}};
     const std::map<std::string, Binding> fabLayer = {{"uCounts", image(BIND_PIXEL_COUNTS)},

@@ -6,9 +6,3 @@ void compositePacked(uint colorRG, uint colorBA, inout vec3 color, inout float t
     color += transmittance * ba.y * vec3(rg, ba.x);
     transmittance *= 1.0 - ba.y;
 }
-
-// A colour rounded as the packed layout rounds it: kept beside packed ones (f2b-ll's layer
-// anchors), it composites bit for bit as if it had been stored, whichever fragment it is.
-vec4 packedPrecision(vec4 c) {
-    return vec4(unpackHalf2x16(packHalf2x16(c.rg)), unpackHalf2x16(packHalf2x16(c.ba)));
-}

@@ -59,7 +59,7 @@ public:
             }
             const int cur = layer % 3, next = (layer + 1) % 3, previous = (layer + 2) % 3;
             const LayerCounts c = peel(frame, layer, previous, cur, next, stats);
-            const std::uint64_t anchors = resolve(frame, layer % 2, stats);
+            const std::uint64_t anchors = resolve(frame, layer % 2, c.inLayer > 0, stats);
             composited = true;
             const std::uint64_t inLayer = anchors + c.inLayer;
             if (inLayer == 0) break;  // a guard: a layer left to peel has anchors
@@ -75,12 +75,11 @@ public:
         storage_.endFrame();
         stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
         if (overflow > 0) stats.overflowed = true;
-        // Three depth buffers (4 B each), two anchor ids (RG32UI, 8 B), two anchor colours and the
-        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), the layer storage and the total
-        // counter.
+        // Three depth buffers (4 B each), two anchors (RGBA32UI, 16 B each), the accumulation
+        // (RGBA16F, 8 B, or RGBA32F, 16 B), the layer storage and the total counter.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
         stats.bytes =
-            pixels * (3 * 4 + 2 * 8 + 3 * floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
+            pixels * (3 * 4 + 2 * 16 + floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
     }
 
 private:
@@ -105,29 +104,23 @@ private:
         accumFbo_ = gl::Framebuffer::create();
         glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
         for (auto& d : depth_) d = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
-        for (int i = 0; i < 2; ++i) {
-            anchorColor_[i] = gl::createTexture2D(rgbaFloatFormat(precision), size.x, size.y);
-            anchorIds_[i] = gl::createTexture2D(GL_RG32UI, size.x, size.y);
-        }
+        for (auto& a : anchor_) a = gl::createTexture2D(GL_RGBA32UI, size.x, size.y);
         anchorFbo_ = gl::Framebuffer::create();
-        const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glNamedFramebufferDrawBuffers(anchorFbo_.id(), 2, two);
     }
 
-    // Binds depth_[depth] cleared to 0 (nothing anchored) with depth writes on, and the anchor
-    // colour and ids of set `set`, the ids cleared to 0 (none).
+    // Binds depth_[depth] cleared to 0 (nothing anchored) with depth writes on, and anchor_[set]
+    // cleared to 0 (none).
     void bindAnchorTarget(const FrameContext& frame, int depth, int set) {
         const GLuint fbo = anchorFbo_.id();
         glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_[depth].id(), 0);
-        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, anchorColor_[set].id(), 0);
-        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, anchorIds_[set].id(), 0);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, anchor_[set].id(), 0);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         setTransparentDepthState(frame);
         glDepthMask(GL_TRUE);  // clears obey the mask
         const float zeroDepth = 0.0f;
         glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &zeroDepth);
         const GLuint noIds[4] = {0, 0, 0, 0};
-        glClearNamedFramebufferuiv(fbo, GL_COLOR, 1, noIds);
+        glClearNamedFramebufferuiv(fbo, GL_COLOR, 0, noIds);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
     }
@@ -156,7 +149,7 @@ private:
             bindAnchorTarget(frame, next, (layer + 1) % 2);
             glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[previous].id());
             glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
-            glBindTextureUnit(gpu::BIND_ANCHOR_IDS, anchorIds_[layer % 2].id());
+            glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[layer % 2].id());
             storage_.beginPass(program);
             skipper_.draw(frame, peelProgram_, stats);
             glDepthMask(GL_FALSE);
@@ -170,15 +163,16 @@ private:
 
     // Composites the layer whose anchor is in set `set` under the accumulation; returns the
     // number of anchors.
-    std::uint64_t resolve(const FrameContext& frame, int set, TechniqueStats& stats) {
+    // anyStored: whether the peel stored (or counted) any coincident fragment.
+    std::uint64_t resolve(const FrameContext& frame, int set, bool anyStored, TechniqueStats& stats) {
         gl::ScopedPass pass(frame.timer, id_ + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // under
         storage_.bindForResolve(resolveProgram_.id());
-        glBindTextureUnit(gpu::BIND_ANCHOR_IDS, anchorIds_[set].id());
-        glBindTextureUnit(gpu::BIND_ANCHOR_COLOR, anchorColor_[set].id());
+        glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uAnyStored"), anyStored);
+        glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[set].id());
         glBeginQuery(GL_SAMPLES_PASSED, anchors_.id());
         drawFullscreen(frame, resolveProgram_.id());
         glEndQuery(GL_SAMPLES_PASSED);
@@ -208,7 +202,7 @@ private:
     gl::Query anchors_;
     glm::ivec2 size_{0, 0};
     int precision_ = 0;
-    gl::Texture accum_, depth_[3], anchorColor_[2], anchorIds_[2];
+    gl::Texture accum_, depth_[3], anchor_[2];
     gl::Framebuffer accumFbo_, anchorFbo_;
     ObjectSkipper skipper_;
 };
@@ -222,8 +216,8 @@ TechniqueEntry f2bLlEntry() {
     TechniqueInfo info{"f2b-ll", "coplanarity", true, true,
                        "2D+2 (depth + D peels + D resolves + composite; +1 peel per pool regrow); Table 1: 2 per "
                        "iteration, 2D",
-                       "w*h*76 B at precision=32 (3 depth 4 B, 2 anchor ids RG32UI, 2 anchor colours + accumulation "
-                       "RGBA32F) + w*h*4 heads + 24 B per "
+                       "w*h*60 B at precision=32 (3 depth 4 B, 2 anchors RGBA32UI (packed colour, ids), RGBA32F "
+                       "accumulation) + w*h*4 heads + 24 B per "
                        "fragment of the largest layer (pool grown to it); Table 1: 2C(Z)+4 words",
                        "F2B-LL (Algorithm 2): each peel links every fragment within the tie tolerance of the layer's "
                        "anchor into per-pixel lists (resolved in object order) and anchors the next layer"};
@@ -234,7 +228,7 @@ TechniqueEntry f2bLlEntry() {
 TechniqueEntry f2bFabEntry() {
     TechniqueInfo info{"f2b-fab", "coplanarity", false, true,
                        "2D+2 (depth + D peels + D resolves + composite); Table 1: 2 per iteration, 2D",
-                       "w*h*(76 + 20(K-1) + 4) B at precision=32 (3 depth, 2 anchor ids and colours, + RGBA32F accumulation, K-1 entries + counter beside the anchor); "
+                       "w*h*(60 + 20(K-1) + 4) B at precision=32 (3 depth, 2 anchors, + RGBA32F accumulation, K-1 entries + counter beside the anchor); "
                        "Table 1: K+4 words",
                        "F2B-FAB (Algorithm 3): per layer, up to K coincident fragments per pixel in a fixed array "
                        "with a per-pixel counter; R_h = sum min(K, C(Z_i)) / total, the rest counted as overflow"};
@@ -245,7 +239,7 @@ TechniqueEntry f2bFabEntry() {
 TechniqueEntry f2bKbEntry() {
     TechniqueInfo info{"f2b-kb", "coplanarity", false, true,
                        "2D+2 (depth + D peels + D resolves + composite); Table 1: 2 per iteration, 2D",
-                       "w*h*(76 + 20(K-1)) B at precision=32 (3 depth, 2 anchor ids and colours, + RGBA32F accumulation, K-1 slots beside the anchor); Table 1: K+3 "
+                       "w*h*(60 + 20(K-1)) B at precision=32 (3 depth, 2 anchors, + RGBA32F accumulation, K-1 slots beside the anchor); Table 1: K+3 "
                        "words",
                        "F2B-KB (Algorithm 3): per layer, up to K coincident fragments per pixel in k-buffer slots "
                        "claimed in order by compare-and-swap (no counter); the rest counted as overflow"};

@@ -6,8 +6,9 @@
 
 GPU_NAMESPACE_BEGIN
 
-GPU_CONST uint BIND_ANCHOR_IDS = 4u;    // the layer anchor's (object id + 1, primitive id), RG32UI; 0: none
-GPU_CONST uint BIND_ANCHOR_COLOR = 5u;  // the layer anchor's colour (resolve)
+// The layer anchor, RGBA32UI: its colour as packHalf2x16 (r, g) and (b, alpha), the layout of
+// stored fragments, then object id + 1 (0: no anchor) and primitive id.
+GPU_CONST uint BIND_ANCHOR = 4u;
 
 GPU_NAMESPACE_END
 

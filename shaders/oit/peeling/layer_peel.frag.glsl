@@ -1,19 +1,22 @@
 #version 450 core
 // Peel pass of the coplanarity-aware front-to-back variants (f2b-ll, f2b-fab, f2b-kb): the
 // capture pass of layer i (the second pass of Algorithms 2 and 3) and the depth pass of layer
-// i + 1 in one geometry pass. A fragment in front of the opaque depth that the previous layer
-// did not peel either
-//  - lies in this layer (within the tie tolerance of its anchor, layer_tie.glsl): the anchor
-//    itself (its object and primitive, which identify one fragment of a pixel) was kept with
-//    its colour by the pass that found it, so only the others, the coincident ones, go into the
-//    layer storage: where nothing coincides no storage is touched; or
-//  - lies behind it and competes, by the hardware depth test (GL_GREATER, writes on, cleared to
-//    0), to anchor the next layer, writing its colour (rounded as stored colours are, so the
-//    image does not depend on which coincident fragment anchors) and ids where it wins.
-// gl_FragDepth = 0 takes a fragment out of that test (it fails against the cleared buffer);
-// writing it rather than discarding keeps the stores of the fragments that leave it.
+// i + 1 in one geometry pass. Against the layer's anchor (the nearest fragment left, found by
+// the last pass), a fragment in front of the opaque depth
+//  - nearer than the anchor's tie band was peeled already: discarded;
+//  - in the band (layer_tie.glsl) is in this layer, unless the previous layer's band took it
+//    (only a fragment nearer than the anchor can be in both): the anchor itself (its object
+//    and primitive identify one fragment of a pixel) was kept with its colour by the pass that
+//    found it, so only the others, the coincident ones, go into the layer storage, and where
+//    nothing coincides no storage is touched; then discarded, so it cannot anchor again;
+//  - farther competes, by the hardware depth test (GL_GREATER, writes on, cleared to 0), to
+//    anchor the next layer, writing its colour (packed as stored colours are, so the image does
+//    not depend on which coincident fragment anchors) and ids where it wins.
+// Stores made before a discard stay (OpenGL 4.5, 7.12.2 "ARB_shader_image_load_store": a
+// discarded invocation's earlier image and buffer stores are performed). No early tests: the
+// discards decide what the depth test sees. Most fragments cost one texture fetch, two if they
+// are not yet peeled; the previous anchor is read only inside the band.
 #include "surface.glsl"
-#include "oit/packed_color.glsl"
 #include "peel_bindings.h"
 #include "layer_bindings.h"
 #include "layer_tie.glsl"
@@ -22,29 +25,26 @@
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uPreviousLayer;
 layout(binding = BIND_PEEL_LAYER) uniform sampler2D uLayer;
-layout(binding = BIND_ANCHOR_IDS) uniform usampler2D uAnchorIds;
+layout(binding = BIND_ANCHOR) uniform usampler2D uAnchor;
 uniform bool uFirstLayer;  // nothing was peeled before this layer
 
-layout(location = 0) out vec4 outAnchorColor;
-layout(location = 1) out uvec2 outAnchorIds;
+layout(location = 0) out uvec4 outAnchor;  // layer_bindings.h: BIND_ANCHOR
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float z = gl_FragCoord.z;
+    float anchor = texelFetch(uLayer, pixel, 0).r;
+    if (anchor <= 0.0) discard;  // nothing was left here
+    float k = layerKey(z), a = layerKey(anchor);
+    bool inBand = sameLayer(k, a);
+    if (k > a && !inBand) discard;  // peeled by an earlier layer
+    if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
     uvec2 ids = uvec2(uObjectId + 1u, uint(gl_PrimitiveID));
-    float nextAnchor = 0.0;
-    outAnchorColor = vec4(0.0);
-    outAnchorIds = uvec2(0u);
-    if (z > texelFetch(uOpaqueDepth, pixel, 0).r &&
-        (uFirstLayer || !peeledWith(z, texelFetch(uPreviousLayer, pixel, 0).r))) {
-        float layer = texelFetch(uLayer, pixel, 0).r;
-        if (layer > 0.0 && inLayer(z, layer)) {
-            if (texelFetch(uAnchorIds, pixel, 0).rg != ids) storeLayerFragment(pixel, 0, surfaceColor());
-        } else {
-            nextAnchor = z;
-            outAnchorColor = packedPrecision(surfaceColor());
-            outAnchorIds = ids;
-        }
+    if (inBand) {
+        bool peeled = k > a && !uFirstLayer && peeledWith(z, texelFetch(uPreviousLayer, pixel, 0).r);
+        if (!peeled && texelFetch(uAnchor, pixel, 0).ba != ids) storeLayerFragment(pixel, 0, surfaceColor());
+        discard;
     }
-    gl_FragDepth = nextAnchor;
+    vec4 c = surfaceColor();
+    outAnchor = uvec4(packHalf2x16(c.rg), packHalf2x16(c.ba), ids);
 }

@@ -54,20 +54,18 @@ bool selectSide(ivec2 pixel, int side) {
 
 #ifdef ANCHOR
 #include "layer_bindings.h"
-layout(binding = BIND_ANCHOR_IDS) uniform usampler2D uAnchorIds;
-layout(binding = BIND_ANCHOR_COLOR) uniform sampler2D uAnchorColor;
+layout(binding = BIND_ANCHOR) uniform usampler2D uAnchor;
 // The anchor as fragment index kAnchor: its own accessors, the storage's for every other index.
 const uint kAnchor = 0xFFFFFFFEu;
-uvec2 gAnchorIds;
-vec4 gAnchorColor;
+uniform bool uAnyStored;  // whether the pass stored anything anywhere (else: anchors only)
+uvec4 gAnchor;  // packed colour, object id + 1, primitive id
 #define ANCHOR_OR(i, anchorValue, storedValue) ((i) == kAnchor ? (anchorValue) : (storedValue))
-uint objectOf(uint i) { return ANCHOR_OR(i, gAnchorIds.x - 1u, fragmentObject(i)); }
-uint primitiveOf(uint i) { return ANCHOR_OR(i, gAnchorIds.y, fragmentPrimitive(i)); }
+uint objectOf(uint i) { return ANCHOR_OR(i, gAnchor.z - 1u, fragmentObject(i)); }
+uint primitiveOf(uint i) { return ANCHOR_OR(i, gAnchor.w, fragmentPrimitive(i)); }
 float depthOf(uint i) { return ANCHOR_OR(i, 1.0, fragmentDepth(i)); }  // one per (object, primitive): never compared
 void compositeAny(uint i, inout vec3 color, inout float transmittance) {
     if (i == kAnchor) {
-        color += transmittance * gAnchorColor.a * gAnchorColor.rgb;
-        transmittance *= 1.0 - gAnchorColor.a;
+        compositePacked(gAnchor.x, gAnchor.y, color, transmittance);
     } else {
         compositeFragment(i, color, transmittance);
     }
@@ -144,9 +142,14 @@ void main() {
     outFront = compositeSide(pixel, 0);
     outBack = compositeSide(pixel, 1);
 #elif defined(ANCHOR)
-    gAnchorIds = texelFetch(uAnchorIds, pixel, 0).rg;
-    if (gAnchorIds.x == 0u) discard;  // no layer here (coincident fragments come with an anchor)
-    gAnchorColor = texelFetch(uAnchorColor, pixel, 0);
+    gAnchor = texelFetch(uAnchor, pixel, 0);
+    if (gAnchor.z == 0u) discard;  // no layer here (coincident fragments come with an anchor)
+    if (!uAnyStored) {
+        // Nothing coincided anywhere in this layer: f2b's blend, no storage read.
+        vec4 c = vec4(unpackHalf2x16(gAnchor.x), unpackHalf2x16(gAnchor.y));
+        outFront = vec4(c.rgb * c.a, c.a);
+        return;
+    }
     outFront = compositeSide(pixel, 0);
 #else
     if (!selectSide(pixel, 0)) discard;
