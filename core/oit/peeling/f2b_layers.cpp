@@ -67,8 +67,10 @@ public:
             overflow += c.overflow;
             if (inLayer >= remaining) break;
             remaining -= inLayer;
-            // What is left lies at or behind the next anchor.
-            skipper_.query(frame, depth_[next].id(), {RemainingSide::NotNearerThanR});
+            // What is left lies behind this layer's anchor, by more than the tie band: the bound
+            // f2b uses too. (The next anchor would be tighter, but its own band reaches nearer
+            // than it, by more than the skipper's box padding for small far objects.)
+            skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
         }
         if (composited) composite(frame, stats);
         skipper_.endFrame(stats);
@@ -217,10 +219,11 @@ TechniqueEntry f2bLlEntry() {
                        "2D+2 (depth + D peels + D resolves + composite; +1 peel per pool regrow); Table 1: 2 per "
                        "iteration, 2D",
                        "w*h*60 B at precision=32 (3 depth 4 B, 2 anchors RGBA32UI (packed colour, ids), RGBA32F "
-                       "accumulation) + w*h*4 heads + 24 B per "
-                       "fragment of the largest layer (pool grown to it); Table 1: 2C(Z)+4 words",
-                       "F2B-LL (Algorithm 2): each peel links every fragment within the tie tolerance of the layer's "
-                       "anchor into per-pixel lists (resolved in object order) and anchors the next layer"};
+                       "accumulation) + w*h*4 heads + 24 B per coincident fragment beside the anchors of the largest "
+                       "layer (pool grown to it); Table 1: 2C(Z)+4 words",
+                       "F2B-LL (Algorithm 2): each peel links the fragments within the tie tolerance of the layer's "
+                       "anchor, other than the anchor, into per-pixel lists (resolved with it in object order) and "
+                       "anchors the next layer"};
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerListSettings, peeling::FrontToBackLayers>>(
         info, peeling::LayerStore::List);
 }
