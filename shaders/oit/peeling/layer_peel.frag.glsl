@@ -12,9 +12,11 @@
 //  - farther competes, by the hardware depth test (GL_GREATER, writes on, cleared to 0), to
 //    anchor the next layer, writing its colour (packed as stored colours are, so the image does
 //    not depend on which coincident fragment anchors) and ids where it wins.
-// Stores made before a discard stay (OpenGL 4.5, 7.12.2 "ARB_shader_image_load_store": a
-// discarded invocation's earlier image and buffer stores are performed). No early tests: the
-// discards decide what the depth test sees. Most fragments cost one texture fetch, two if they
+// Stores made before a discard stay: discard ends the invocation and drops its outputs, it does
+// not undo memory writes already made (the per-pixel-list literature relies on the same). A
+// driver that did undo them would lose coincident fragments, which the counts and images of
+// tests/coplanar_buffers_gl_test.cpp would show. No early tests: the discards decide what the
+// depth test sees. Most fragments cost one texture fetch, two if they
 // are not yet peeled; the previous anchor is read only inside the band.
 #include "surface.glsl"
 #include "peel_bindings.h"
