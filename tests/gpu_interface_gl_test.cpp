@@ -337,10 +337,13 @@ std::vector<ProgramCase> programCases() {
         // and bun-ll; the capture and resolve programs per storage form (layer_storage.glsl)
         {{scene, "oit/peeling/next_layer.frag.glsl"}, {},
          {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uTotal", kCounters}}},
-        {{scene, "oit/peeling/layer_peel.frag.glsl"}, {{"LAYER_LIST", ""}},
+        {{scene, "oit/peeling/layer_capture.frag.glsl"}, {{"LAYER_LIST", ""}},
          with(with(lists, layerPeel), {{"uFrontCount", kCounters}})},  // one side: no back counter
-        {{scene, "oit/peeling/layer_peel.frag.glsl"}, {{"LAYER_FAB", ""}}, with(with(fabLayer, layerPeel), layerCounters)},
-        {{scene, "oit/peeling/layer_peel.frag.glsl"}, {{"LAYER_KB", ""}}, with(with(kbLayer, layerPeel), layerCounters)},
+        {{scene, "oit/peeling/layer_capture.frag.glsl"}, {{"LAYER_FAB", ""}}, with(with(fabLayer, layerPeel), layerCounters)},
+        {{scene, "oit/peeling/layer_capture.frag.glsl"}, {{"LAYER_KB", ""}}, with(with(kbLayer, layerPeel), layerCounters)},
+        {{scene, "oit/peeling/layer_peel.frag.glsl"}, {},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uLayer", tex(BIND_PEEL_LAYER)}}},
+        {{full, "oit/peeling/layer_band.frag.glsl"}, {}, {{"uLayer", tex(BIND_PEEL_LAYER)}}},
         {{scene, "oit/peeling/dual_layer_peel.frag.glsl"}, {{"LAYER_LIST", ""}},
          with(with(lists, layerListCounters), {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}})},
         {{scene, "oit/peeling/dual_layer_peel.frag.glsl"}, {{"LAYER_FAB", ""}},

@@ -1,22 +1,24 @@
 // `f2b-ll`, `f2b-fab`, `f2b-kb`: front-to-back peeling that captures every coincident fragment
-// of a layer (depth-fighting paper, Algorithm 2 F2B-LL and Algorithm 3 F2B-B).
-//   1. a depth pass (geometry, depth only; next_layer.frag.glsl) anchors the first layer at each
-//      pixel's nearest fragment and counts every fragment;
-//   2. per layer, a peel pass (geometry; layer_peel.frag.glsl) stores every fragment not yet
-//      peeled within the tie tolerance of the anchor (layer_tie.glsl: the project's tie rule,
-//      not bit-equal depths), other than the anchor itself, in per-pixel storage
-//      (layer_storage.hpp: linked lists whose pool grows to the layer for f2b-ll, robust; K - 1
-//      entries per pixel beside the anchor for f2b-fab and f2b-kb, bounded, the rest of the
-//      layer counted as overflow), and in the same pass the hardware depth test anchors the
-//      next layer among the fragments behind it, keeping the anchor's colour and ids as f2b
-//      keeps its layer. The paper's two passes per layer (depth, then capture) thus cost one
-//      geometry pass per layer, plus the first, and where nothing coincides no storage and no
-//      atomic is touched;
-//   3. per layer, a full-screen resolve composites the anchor and the stored fragments in
-//      object, then primitive order under the accumulation (its samples-passed count is the
-//      number of anchors).
-// Then one composite over the opaque colour. Each peel pass counts the layer's fragments (stored
-// or not), so the loop ends on the layer that leaves nothing: D layers, D peel passes.
+// of a layer (depth-fighting paper, Algorithm 2 F2B-LL and Algorithm 3 F2B-B). A layer is every
+// fragment not yet peeled within the tie tolerance of its anchor, the nearest one left
+// (layer_tie.glsl: the project's tie rule, not bit-equal depths).
+//   1. a depth pass (geometry; next_layer.frag.glsl) anchors the first layer at each pixel's
+//      nearest fragment, keeping its colour and ids as f2b keeps its layer, and counts every
+//      fragment;
+//   2. per layer: a full-screen pass writes the far edge of the layer's band as depth
+//      (layer_band.frag.glsl); a capture pass (geometry; layer_capture.frag.glsl), depth-tested
+//      against it before its shader runs, stores the layer's fragments other than the anchor in
+//      per-pixel storage (layer_storage.hpp: linked lists whose pool grows to the layer for
+//      f2b-ll, robust; K - 1 entries per pixel beside the anchor for f2b-fab and f2b-kb,
+//      bounded, the rest of the layer counted as overflow); a full-screen resolve composites
+//      the anchor and the stored fragments in object, then primitive order under the
+//      accumulation (its samples-passed count is the number of anchors); and, unless nothing is
+//      left, an anchor pass (geometry; layer_peel.frag.glsl: f2b's peel under the tie rule, no
+//      buffer stores) anchors the next layer.
+//   Where nothing coincides the capture pass rejects everything in its early depth test and
+//   stores nothing, so a layer costs f2b's peel and blend plus two cheap passes.
+// Then one composite over the opaque colour. Each capture counts the layer's fragments beside
+// its anchors (stored or not), so the loop ends on the layer that leaves nothing.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
@@ -44,21 +46,22 @@ public:
         storage_.prepare(frame.size, 1, s.capacity - 1, s.maxBlockMiB);
         const float clearAccum[4] = {0, 0, 0, 1};
         glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-        setDepthOrderUniforms(frame, peelProgram_.id());
+        for (GLuint p : {anchorProgram_.id(), captureProgram_.id(), bandProgram_.id()}) setDepthOrderUniforms(frame, p);
 
         std::uint64_t overflow = 0;
         const std::uint64_t total = firstDepthPass(frame, stats);
         std::uint64_t remaining = total;
         bool composited = false;
-        // Layer i is anchored in depth_[i % 3]; its peel reads the previous anchor and writes
-        // the next one.
+        // Layer i is anchored in depth_[i % 3] and anchor_[i % 2]; its capture also reads the
+        // previous layer's anchor depth.
         for (int layer = 0; remaining > 0; ++layer) {
             if (layer >= s.maxPasses) {
                 stats.overflowed = true;
                 break;
             }
             const int cur = layer % 3, next = (layer + 1) % 3, previous = (layer + 2) % 3;
-            const LayerCounts c = peel(frame, layer, previous, cur, next, stats);
+            band(frame, cur, stats);
+            const LayerCounts c = capture(frame, layer, previous, cur, stats);
             const std::uint64_t anchors = resolve(frame, layer % 2, c.inLayer > 0, stats);
             composited = true;
             const std::uint64_t inLayer = anchors + c.inLayer;
@@ -68,27 +71,29 @@ public:
             if (inLayer >= remaining) break;
             remaining -= inLayer;
             // What is left lies behind this layer's anchor, by more than the tie band: the bound
-            // f2b uses too. (The next anchor would be tighter, but its own band reaches nearer
-            // than it, by more than the skipper's box padding for small far objects.)
+            // f2b uses too.
             skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
+            anchorPass(frame, cur, next, (layer + 1) % 2, stats);
         }
         if (composited) composite(frame, stats);
         skipper_.endFrame(stats);
         storage_.endFrame();
         stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
         if (overflow > 0) stats.overflowed = true;
-        // Three depth buffers (4 B each), two anchors (RGBA32UI, 16 B each), the accumulation
+        // Four depth buffers (3 anchors, 1 band edge; 4 B each), two anchors (RGBA32UI, 16 B each), the accumulation
         // (RGBA16F, 8 B, or RGBA32F, 16 B), the layer storage and the total counter.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
         stats.bytes =
-            pixels * (3 * 4 + 2 * 16 + floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
+            pixels * (4 * 4 + 2 * 16 + floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
     }
 
 private:
     void ensurePrograms() {
         if (depthProgram_.program) return;
         depthProgram_ = buildSceneProgram("oit/peeling/next_layer.frag.glsl");
-        peelProgram_ = buildSceneProgram("oit/peeling/layer_peel.frag.glsl", storage_.defines());
+        captureProgram_ = buildSceneProgram("oit/peeling/layer_capture.frag.glsl", storage_.defines());
+        anchorProgram_ = buildSceneProgram("oit/peeling/layer_peel.frag.glsl");
+        bandProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_band.frag.glsl"});
         gl::Defines anchored = storage_.defines();
         anchored["ANCHOR"] = "";
         resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
@@ -108,6 +113,10 @@ private:
         for (auto& d : depth_) d = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
         for (auto& a : anchor_) a = gl::createTexture2D(GL_RGBA32UI, size.x, size.y);
         anchorFbo_ = gl::Framebuffer::create();
+        bandDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+        bandFbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(bandFbo_.id(), GL_DEPTH_ATTACHMENT, bandDepth_.id(), 0);
+        glNamedFramebufferDrawBuffer(bandFbo_.id(), GL_NONE);
     }
 
     // Binds depth_[depth] cleared to 0 (nothing anchored) with depth writes on, and anchor_[set]
@@ -141,31 +150,60 @@ private:
         return gl::readUint(total_);
     }
 
-    // Stores the layer anchored in depth_[cur] (what depth_[previous] peeled excluded) and
-    // anchors the next one in depth_[next]; repeated when the list pool had to grow.
-    LayerCounts peel(const FrameContext& frame, int layer, int previous, int cur, int next, TechniqueStats& stats) {
-        const GLuint program = peelProgram_.id();
+    // The far edge of the tie band of the layer anchored in depth_[cur], into bandDepth_.
+    void band(const FrameContext& frame, int cur, TechniqueStats& stats) {
+        gl::ScopedPass pass(frame.timer, id_ + " band");
+        glBindFramebuffer(GL_FRAMEBUFFER, bandFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        glDisable(GL_BLEND);
+        glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
+        glUseProgram(bandProgram_.id());
+        glBindVertexArray(frame.targets.emptyVertexArray());
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(GL_TRUE);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDepthMask(GL_FALSE);
+        ++stats.passes;
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+
+    // Stores the coincident fragments of the layer anchored in depth_[cur] and anchor_[set of
+    // the layer]; repeated when the list pool had to grow.
+    LayerCounts capture(const FrameContext& frame, int layer, int previous, int cur, TechniqueStats& stats) {
+        const GLuint program = captureProgram_.id();
         glProgramUniform1i(program, glGetUniformLocation(program, "uFirstLayer"), layer == 0);
         for (;;) {
-            gl::ScopedPass pass(frame.timer, id_ + " peel");
-            bindAnchorTarget(frame, next, (layer + 1) % 2);
+            gl::ScopedPass pass(frame.timer, id_ + " capture");
+            glBindFramebuffer(GL_FRAMEBUFFER, bandFbo_.id());
+            setTransparentDepthState(frame);
+            glDepthFunc(GL_GEQUAL);  // at or nearer than the band's far edge
+            glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
             glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[previous].id());
             glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
             glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[layer % 2].id());
             storage_.beginPass(program);
-            skipper_.draw(frame, peelProgram_, stats);
-            glDepthMask(GL_FALSE);
+            skipper_.draw(frame, captureProgram_, stats);
             ++stats.passes;
             const LayerCounts c = storage_.endPass();
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
             if (!c.repeat) return c;
             ++stats.regrows;
         }
     }
 
-    // Composites the layer whose anchor is in set `set` under the accumulation; returns the
-    // number of anchors.
-    // anyStored: whether the peel stored (or counted) any coincident fragment.
+    // Anchors the layer behind the one in depth_[cur]: depth into depth_[next], colour and ids
+    // into anchor_[set].
+    void anchorPass(const FrameContext& frame, int cur, int next, int set, TechniqueStats& stats) {
+        gl::ScopedPass pass(frame.timer, id_ + " anchor");
+        bindAnchorTarget(frame, next, set);
+        glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
+        skipper_.draw(frame, anchorProgram_, stats);
+        glDepthMask(GL_FALSE);
+        ++stats.passes;
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+
+    // anyStored: whether the capture stored (or counted) any coincident fragment.
     std::uint64_t resolve(const FrameContext& frame, int set, bool anyStored, TechniqueStats& stats) {
         gl::ScopedPass pass(frame.timer, id_ + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
@@ -198,14 +236,14 @@ private:
 
     std::string id_;
     LayerStorage storage_;
-    SceneProgram depthProgram_, peelProgram_;
-    gl::Program resolveProgram_, compositeProgram_;
+    SceneProgram depthProgram_, captureProgram_, anchorProgram_;
+    gl::Program bandProgram_, resolveProgram_, compositeProgram_;
     gl::Buffer total_;
     gl::Query anchors_;
     glm::ivec2 size_{0, 0};
     int precision_ = 0;
-    gl::Texture accum_, depth_[3], anchor_[2];
-    gl::Framebuffer accumFbo_, anchorFbo_;
+    gl::Texture accum_, depth_[3], anchor_[2], bandDepth_;
+    gl::Framebuffer accumFbo_, anchorFbo_, bandFbo_;
     ObjectSkipper skipper_;
 };
 
@@ -216,22 +254,23 @@ namespace strata {
 
 TechniqueEntry f2bLlEntry() {
     TechniqueInfo info{"f2b-ll", "coplanarity", true, true,
-                       "2D+2 (depth + D peels + D resolves + composite; +1 peel per pool regrow); Table 1: 2 per "
-                       "iteration, 2D",
-                       "w*h*60 B at precision=32 (3 depth 4 B, 2 anchors RGBA32UI (packed colour, ids), RGBA32F "
+                       "4D+1 (depth + D band edges + D captures + D resolves + D-1 anchor passes + composite; +1 "
+                       "capture per pool regrow); Table 1: 2 per iteration, 2D",
+                       "w*h*64 B at precision=32 (4 depth 4 B, 2 anchors RGBA32UI (packed colour, ids), RGBA32F "
                        "accumulation) + w*h*4 heads + 24 B per coincident fragment beside the anchors of the largest "
                        "layer (pool grown to it); Table 1: 2C(Z)+4 words",
-                       "F2B-LL (Algorithm 2): each peel links the fragments within the tie tolerance of the layer's "
-                       "anchor, other than the anchor, into per-pixel lists (resolved with it in object order) and "
-                       "anchors the next layer"};
+                       "F2B-LL (Algorithm 2): f2b's peel under the tie rule anchors each layer; a capture pass, "
+                       "depth-tested early against the layer's band, links its coincident fragments into per-pixel "
+                       "lists, resolved with the anchor in object order"};
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerListSettings, peeling::FrontToBackLayers>>(
         info, peeling::LayerStore::List);
 }
 
 TechniqueEntry f2bFabEntry() {
     TechniqueInfo info{"f2b-fab", "coplanarity", false, true,
-                       "2D+2 (depth + D peels + D resolves + composite); Table 1: 2 per iteration, 2D",
-                       "w*h*(60 + 20(K-1) + 4) B at precision=32 (3 depth, 2 anchors, + RGBA32F accumulation, K-1 entries + counter beside the anchor); "
+                       "4D+1 (depth + D band edges + D captures + D resolves + D-1 anchor passes + composite); Table 1: "
+                       "2 per iteration, 2D",
+                       "w*h*(64 + 20(K-1) + 4) B at precision=32 (4 depth, 2 anchors, + RGBA32F accumulation, K-1 entries + counter beside the anchor); "
                        "Table 1: K+4 words",
                        "F2B-FAB (Algorithm 3): per layer, up to K coincident fragments per pixel in a fixed array "
                        "with a per-pixel counter; R_h = sum min(K, C(Z_i)) / total, the rest counted as overflow"};
@@ -241,8 +280,9 @@ TechniqueEntry f2bFabEntry() {
 
 TechniqueEntry f2bKbEntry() {
     TechniqueInfo info{"f2b-kb", "coplanarity", false, true,
-                       "2D+2 (depth + D peels + D resolves + composite); Table 1: 2 per iteration, 2D",
-                       "w*h*(60 + 20(K-1)) B at precision=32 (3 depth, 2 anchors, + RGBA32F accumulation, K-1 slots beside the anchor); Table 1: K+3 "
+                       "4D+1 (depth + D band edges + D captures + D resolves + D-1 anchor passes + composite); Table 1: "
+                       "2 per iteration, 2D",
+                       "w*h*(64 + 20(K-1)) B at precision=32 (4 depth, 2 anchors, + RGBA32F accumulation, K-1 slots beside the anchor); Table 1: K+3 "
                        "words",
                        "F2B-KB (Algorithm 3): per layer, up to K coincident fragments per pixel in k-buffer slots "
                        "claimed in order by compare-and-swap (no counter); the rest counted as overflow"};

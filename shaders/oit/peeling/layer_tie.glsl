@@ -13,3 +13,10 @@ bool peeledWith(float z, float layer) {
     float k = layerKey(z), l = layerKey(layer);
     return k >= l || sameLayer(k, l);
 }
+
+// A window depth at or below the farthest depth of the layer anchored at `layer` (its band's far
+// edge), lowered by a relative 1e-6 against rounding: a depth test against it lets every
+// fragment of the layer through, and the exact test above decides.
+float layerFarEdge(float layer) {
+    return max(0.0, (layerKey(layer) * (1.0 - uTieTolerance) - uDepthOffset) * (1.0 - 1e-6));
+}
