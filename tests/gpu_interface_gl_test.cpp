@@ -13,6 +13,7 @@
 #include "oit/buffers/buffer_bindings.h"
 #include "oit/coplanarity_bindings.h"
 #include "oit/buffers/prefix_sum.hpp"
+#include "oit/peeling/layer_bindings.h"
 #include "oit/peeling/peel_bindings.h"
 #include "oit/screendoor/screendoor_bindings.h"
 #include "oit/volume/volume_bindings.h"
@@ -249,6 +250,16 @@ std::vector<ProgramCase> programCases() {
         {"uFrontMax", tex(BIND_COPLANAR_MAX_COLOR)},      {"uBackMax", tex(BIND_COPLANAR_MAX_COLOR + back)},
         {"uFrontLayer", tex(BIND_COPLANAR_LAYER)},        {"uBackLayer", tex(BIND_COPLANAR_LAYER + back)},
         {"uFrontAccum", tex(BIND_COPLANAR_ACCUM)},        {"uBackAccum", tex(BIND_COPLANAR_ACCUM + back)}};
+    const std::map<std::string, Binding> layerPeel = {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
+                                                      {"uPreviousLayer", tex(BIND_PEEL_PREVIOUS)},
+                                                      {"uLayer", tex(BIND_PEEL_LAYER)},
+                                                      {"uAnchor", tex(BIND_ANCHOR)}};
+    const std::map<std::string, Binding> anchor = {{"uAnchor", tex(BIND_ANCHOR)}};
+    const std::map<std::string, Binding> layerListCounters = {{"uFrontCount", kCounters}, {"uBackCount", kCounters}};
+    const std::map<std::string, Binding> layerCounters = {{"uStored", kCounters}, {"uOverflowed", kCounters}};
+    const std::map<std::string, Binding> fabLayer = {{"uCounts", image(BIND_PIXEL_COUNTS)},
+                                                     {"FragmentEntries", ssbo(BIND_ENTRIES)}};
+    const std::map<std::string, Binding> kbLayer = {{"FragmentEntries", ssbo(BIND_ENTRIES)}};
     return {
         // frame (core/render)
         {{scene, "common/opaque.frag.glsl"}, {}, {}},
@@ -363,6 +374,28 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"VOLUME", ""}}, with(volumeResolve, tail)},
         {{"oit/abuffer_resolve.comp.glsl"}, {{"VOLUME", ""}}, with(volumeResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
         {{"oit/buffers/prefix_add.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
+        // coplanarity-aware peeling with layer storage (f2b-ll, f2b-fab, f2b-kb, dual-ll, dual-fab)
+        // and bun-ll; the capture and resolve programs per storage form (layer_storage.glsl)
+        {{scene, "oit/peeling/next_layer.frag.glsl"}, {},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uTotal", kCounters}}},
+        {{scene, "oit/peeling/layer_capture.frag.glsl"}, {{"LAYER_LIST", ""}},
+         with(with(lists, layerPeel), {{"uFrontCount", kCounters}})},  // one side: no back counter
+        {{scene, "oit/peeling/layer_capture.frag.glsl"}, {{"LAYER_FAB", ""}}, with(with(fabLayer, layerPeel), layerCounters)},
+        {{scene, "oit/peeling/layer_capture.frag.glsl"}, {{"LAYER_KB", ""}}, with(with(kbLayer, layerPeel), layerCounters)},
+        {{scene, "oit/peeling/layer_peel.frag.glsl"}, {},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uLayer", tex(BIND_PEEL_LAYER)}}},
+        {{full, "oit/peeling/layer_band.frag.glsl"}, {}, {{"uLayer", tex(BIND_PEEL_LAYER)}}},
+        {{scene, "oit/peeling/dual_layer_peel.frag.glsl"}, {{"LAYER_LIST", ""}},
+         with(with(lists, layerListCounters), {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}})},
+        {{scene, "oit/peeling/dual_layer_peel.frag.glsl"}, {{"LAYER_FAB", ""}},
+         with(with(fabLayer, layerCounters), {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}})},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}}, with(lists, anchor)},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"ANCHOR", ""}}, with(fabLayer, anchor)},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}, {"ANCHOR", ""}}, with(kbLayer, anchor)},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"DUAL", ""}}, lists},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"DUAL", ""}}, fabLayer},
+        {{scene, "oit/peeling/bun_ll_store.frag.glsl"}, {}, with(with(bucket, lists), {{"uNodeCount", kCounters}})},
+        {{full, "oit/peeling/bun_ll_resolve.frag.glsl"}, {{"MAX_BUCKETS", "32"}}, listResolve},
         // coplanarity detector: abuffer's store, then its own resolve
         {{"oit/coplanarity_detect.comp.glsl"}, {},
          with(lists, {{"uLargestLayer", image(BIND_LARGEST_LAYER)}, {"uHeatmap", image(BIND_RESOLVE_OUTPUT)},

@@ -35,9 +35,15 @@ FragmentLists::Run FragmentLists::render(const FrameContext& frame, const SceneP
         counter_ = gl::Buffer::create();
         glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
     }
-    if (frame.size != headsSize_) {
-        heads_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
+    if (frame.size != headsSize_ || headLayers_ != allocatedHeadLayers_) {
+        if (headLayers_ > 1) {
+            heads_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(heads_.id(), 1, GL_R32UI, frame.size.x, frame.size.y, headLayers_);
+        } else {
+            heads_ = gl::createTexture2D(GL_R32UI, frame.size.x, frame.size.y);
+        }
         headsSize_ = frame.size;
+        allocatedHeadLayers_ = headLayers_;
     }
     const std::uint64_t maxNodes = gl::storageBlockElements(kNodeBytes, maxBlockMiB);
     // First frame: the setting, or two fragments per pixel; later frames keep what the previous
@@ -99,12 +105,14 @@ void FragmentLists::ensurePool() {
 }
 
 void FragmentLists::bind() const {
-    glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, allocatedHeadLayers_ > 1 ? GL_TRUE : GL_FALSE, 0,
+                       GL_READ_WRITE, GL_R32UI);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
 }
 
 std::uint64_t FragmentLists::bytes() const {
-    return poolCapacity_ * kNodeBytes + std::uint64_t(headsSize_.x) * std::uint64_t(headsSize_.y) * 4 + sizeof(GLuint);
+    return poolCapacity_ * kNodeBytes + std::uint64_t(headsSize_.x) * std::uint64_t(headsSize_.y) * 4 * std::uint64_t(allocatedHeadLayers_) +
+           sizeof(GLuint);
 }
 
 // Stores the tile's fragments; returns how many there were (stored or not).

@@ -40,6 +40,10 @@ public:
     Run render(const FrameContext& frame, const SceneProgram& storeProgram, std::uint64_t initialNodes,
                double maxBlockMiB, const std::function<void(const Tile&)>& resolve);
 
+    // Heads per pixel (default 1): with more, the heads are a 2D array image of that many layers
+    // (bun-ll: one list per depth bucket; shaders declare HEADS_ARRAY). Takes effect next render.
+    void setHeadLayers(int layers) { headLayers_ = layers; }
+
     // Binds the heads image and the node pool for a resolve.
     void bind() const;
     // Pool, heads and counter.
@@ -53,6 +57,7 @@ private:
     gl::Buffer counter_, nodes_;
     gl::Texture heads_;
     glm::ivec2 headsSize_{0, 0};
+    int headLayers_ = 1, allocatedHeadLayers_ = 0;
     std::uint64_t capacity_ = 0, poolCapacity_ = 0;
     std::vector<Tile> lastTiles_;  // last frame's tiles when it needed more than one
     glm::ivec2 lastTilesSize_{0, 0};

@@ -7,4 +7,9 @@ layout(std430, binding = BIND_NODES) coherent buffer FragmentNodes {
     FragmentNode nodes[];
 };
 
+#ifdef HEADS_ARRAY
+// Several lists per pixel, one per layer (bun-ll's depth buckets; FragmentLists::setHeadLayers).
+layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2DArray uHeads;
+#else
 layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
+#endif

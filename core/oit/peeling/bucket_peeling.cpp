@@ -13,6 +13,7 @@
 
 #include "common/bindings.h"
 #include "oit/draw_transparent.hpp"
+#include "oit/peeling/bucket_range.hpp"
 #include "oit/peeling/peel_bindings.h"
 #include "oit/precision.hpp"
 
@@ -66,7 +67,7 @@ public:
         setBucketUniforms(frame, captureProgram_.id(), buckets);
         setBucketUniforms(frame, colorProgram().id(), buckets);
 
-        range(frame);
+        range_.render(frame, settings_.rangeFromGeometry, stats_);
         capture(frame);
         color(frame);
         composite(frame, buckets);
@@ -88,27 +89,12 @@ public:
 private:
     void ensurePrograms() {
         if (captureProgram_.program) return;
-        rangeGeometryProgram_ = buildSceneProgram("oit/peeling/bun_range.frag.glsl");
-        rangeBoxProgram_ = gl::buildProgram({"oit/peeling/bounds.vert.glsl", "oit/peeling/bun_range.frag.glsl"});
         captureProgram_ = buildSceneProgram("oit/peeling/bun_capture.frag.glsl", {{"MAX_TARGETS", std::to_string(kMaxTargets)}});
         colorProgram_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl", {{"COLOR_FORMAT", "rgba16f"}});
         colorProgram32_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl", {{"COLOR_FORMAT", "rgba32f"}});
         compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_composite.frag.glsl"});
         counters_ = gl::Buffer::create();
         glNamedBufferStorage(counters_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-        const std::array<float, 24> corners = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-        const std::array<GLuint, 36> indices = {0, 1, 2, 0, 2, 3, 4, 6, 5, 4, 7, 6, 0, 4, 5, 0, 5, 1,
-                                                3, 2, 6, 3, 6, 7, 0, 3, 7, 0, 7, 4, 1, 5, 6, 1, 6, 2};
-        boxVao_ = gl::VertexArray::create();
-        boxVertices_ = gl::Buffer::create();
-        boxIndices_ = gl::Buffer::create();
-        glNamedBufferStorage(boxVertices_.id(), sizeof(corners), corners.data(), 0);
-        glNamedBufferStorage(boxIndices_.id(), sizeof(indices), indices.data(), 0);
-        glVertexArrayVertexBuffer(boxVao_.id(), 0, boxVertices_.id(), 0, 3 * sizeof(float));
-        glVertexArrayElementBuffer(boxVao_.id(), boxIndices_.id());
-        glEnableVertexArrayAttrib(boxVao_.id(), 0);
-        glVertexArrayAttribFormat(boxVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(boxVao_.id(), 0, 0);
     }
 
     void ensureTargets(glm::ivec2 size, int buckets) {
@@ -117,7 +103,6 @@ private:
         allocatedBuckets_ = buckets;
         allocatedPrecision_ = settings_.precision;
         int targets = (buckets + 1) / 2;
-        range_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
         auto array = [&](GLenum format, int layers) {
             gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
             glTextureStorage3D(t.id(), 1, format, size.x, size.y, layers);
@@ -127,8 +112,6 @@ private:
         };
         bucketDepths_ = array(GL_RGBA32F, targets);
         colors_ = array(rgbaFloatFormat(settings_.precision), 2 * buckets);
-        rangeFbo_ = gl::Framebuffer::create();
-        glNamedFramebufferTexture(rangeFbo_.id(), GL_COLOR_ATTACHMENT0, range_.id(), 0);
         captureFbo_ = gl::Framebuffer::create();
         std::vector<GLenum> drawBuffers;
         for (int i = 0; i < targets; ++i) {
@@ -144,41 +127,6 @@ private:
         glProgramUniform1f(program, glGetUniformLocation(program, "uDepthB"), frame.projection[3][2]);
     }
 
-    void range(const FrameContext& frame) {
-        gl::ScopedPass pass(frame.timer, "bun range");
-        const float clearRange[4] = {-2, -2, 0, 0};
-        glClearTexImage(range_.id(), 0, GL_RGBA, GL_FLOAT, clearRange);
-        glBindFramebuffer(GL_FRAMEBUFFER, rangeFbo_.id());
-        glViewport(0, 0, frame.size.x, frame.size.y);
-        glDisable(GL_DEPTH_TEST);
-        glDepthMask(GL_FALSE);
-        glDisable(GL_CULL_FACE);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_MAX);
-        if (settings_.rangeFromGeometry) {
-            stats_.objectDraws += drawTransparent(frame, rangeGeometryProgram_, frame.transparentOrder);
-        } else {
-            // Boxes crossing the near plane (the eye inside) rasterize clamped at depth 1.
-            glEnable(GL_DEPTH_CLAMP);
-            GLuint p = rangeBoxProgram_.id();
-            glUseProgram(p);
-            glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "uViewProj"), 1, GL_FALSE,
-                                      glm::value_ptr(frame.viewProjection));
-            glBindVertexArray(boxVao_.id());
-            for (int o : frame.transparentOrder) {
-                const Bounds& b = frame.scene.objects()[o].worldBounds;
-                if (b.empty()) continue;
-                glProgramUniform3fv(p, glGetUniformLocation(p, "uBoxMin"), 1, glm::value_ptr(b.min));
-                glProgramUniform3fv(p, glGetUniformLocation(p, "uBoxMax"), 1, glm::value_ptr(b.max));
-                glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_INT, nullptr);
-            }
-            glDisable(GL_DEPTH_CLAMP);
-        }
-        glBlendEquation(GL_FUNC_ADD);
-        glDisable(GL_BLEND);
-        ++stats_.passes;
-    }
-
     void capture(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, "bun capture");
         const float neutral[4] = {-2, -2, -2, -2};
@@ -189,7 +137,7 @@ private:
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, range_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, range_.texture());
         stats_.objectDraws += drawTransparent(frame, captureProgram_, frame.transparentOrder);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
@@ -201,7 +149,7 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         setTransparentDepthState(frame);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, range_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, range_.texture());
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, bucketDepths_.id());
         glBindImageTexture(gpu::BIND_BUCKET_COLORS, colors_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
                            rgbaFloatFormat(settings_.precision));
@@ -227,14 +175,14 @@ private:
     const SceneProgram& colorProgram() const { return isHalf(settings_.precision) ? colorProgram_ : colorProgram32_; }
 
     int allocatedPrecision_ = 0;
-    SceneProgram rangeGeometryProgram_, captureProgram_, colorProgram_, colorProgram32_;
-    gl::Program rangeBoxProgram_, compositeProgram_;
-    gl::Buffer counters_, boxVertices_, boxIndices_;
-    gl::VertexArray boxVao_;
+    SceneProgram captureProgram_, colorProgram_, colorProgram32_;
+    gl::Program compositeProgram_;
+    gl::Buffer counters_;
     glm::ivec2 size_{0, 0};
     int allocatedBuckets_ = 0;
-    gl::Texture range_, bucketDepths_, colors_;
-    gl::Framebuffer rangeFbo_, captureFbo_;
+    gl::Texture bucketDepths_, colors_;
+    gl::Framebuffer captureFbo_;
+    BucketRange range_;
 };
 
 }  // namespace

@@ -1,0 +1,211 @@
+// `dual-ll`, `dual-fab`: dual depth peeling that captures every coincident fragment of the front
+// and the back layer (depth-fighting paper, sections 3.1.3 DUAL-LL and 3.2.1 DUAL-B). As `dual`:
+// an initialisation pass finds each pixel's nearest and farthest depth (dual_init.frag.glsl);
+// then each iteration's peel pass (dual_layer_peel.frag.glsl) stores the fragments within the
+// tie tolerance of the nearest depth (front layer) and of the farthest (back layer) in per-pixel
+// storage (layer_storage.hpp: dual-ll's lists, front nodes from the pool's start and back nodes
+// from its end; dual-fab's K entries per pixel and side) and MAX-blends the next range from
+// the rest; a full-screen resolve composites each layer in object order, the front under the
+// front accumulation and the back over the back accumulation. The loop ends on the iteration
+// whose layers hold the last of the fragments counted by the initialisation.
+#include "oit/technique.hpp"
+
+#include "common/bindings.h"
+#include "oit/draw_transparent.hpp"
+#include "oit/peeling/layer_settings.hpp"
+#include "oit/peeling/layer_storage.hpp"
+#include "oit/peeling/object_skipper.hpp"
+#include "oit/peeling/peel_bindings.h"
+#include "oit/precision.hpp"
+
+namespace strata::peeling {
+namespace {
+
+class DualLayers {
+public:
+    DualLayers(const std::string& id, LayerStore kind) : id_(id), storage_(kind, id) {}
+
+    void render(const FrameContext& frame, const LayerPeelingSettings& s, TechniqueStats& stats) {
+        ensurePrograms();
+        ensureTargets(frame.size, s.precision);
+        stats = {};
+        skipper_.beginFrame(frame, s.skipPeeled);
+        storage_.prepare(frame.size, 2, s.capacity, s.maxBlockMiB);
+        setDepthOrderUniforms(frame, peelProgram_.id());
+        const std::uint64_t total = initialise(frame, stats);
+        std::uint64_t remaining = total, overflow = 0;
+        if (total > 0) {
+            const float clearAccum[4] = {0, 0, 0, 1};
+            glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+            glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+            for (int iteration = 1;; ++iteration) {
+                if (iteration > s.maxPasses) {
+                    stats.overflowed = true;
+                    break;
+                }
+                const int cur = iteration % 2;
+                const LayerCounts c = peel(frame, cur, stats);
+                if (c.inLayer == 0) break;  // a guard: a non-empty range has a front layer
+                resolve(frame, stats);
+                stats.fragmentsCaptured += c.stored;
+                overflow += c.overflow;
+                if (c.inLayer >= remaining) break;
+                remaining -= c.inLayer;
+                skipper_.query(frame, minMax_[cur].id(),
+                               {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
+            }
+            composite(frame, stats);
+        }
+        skipper_.endFrame(stats);
+        storage_.endFrame();
+        stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
+        if (overflow > 0) stats.overflowed = true;
+        // Two RG32F min-max targets (8 B each), front and back accumulations (RGBA16F, 8 B, or
+        // RGBA32F, 16 B, each) and the layer storage of both sides.
+        const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
+        stats.bytes = pixels * (2 * 8 + 2 * floatTexelBytes(s.precision, 4)) + storage_.bytes();
+    }
+
+private:
+    void ensurePrograms() {
+        if (initProgram_.program) return;
+        initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
+        peelProgram_ = buildSceneProgram("oit/peeling/dual_layer_peel.frag.glsl", storage_.defines());
+        gl::Defines dual = storage_.defines();
+        dual["DUAL"] = "";
+        resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, dual);
+        compositeProgram_ =
+            gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"}, {{"DUAL", ""}});
+        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+    }
+
+    void ensureTargets(glm::ivec2 size, int precision) {
+        if (size == size_ && precision == precision_) return;
+        size_ = size;
+        precision_ = precision;
+        const GLenum rgba = rgbaFloatFormat(precision);
+        for (auto& t : minMax_) t = gl::createTexture2D(GL_RG32F, size.x, size.y);
+        frontAccum_ = gl::createTexture2D(rgba, size.x, size.y);
+        backAccum_ = gl::createTexture2D(rgba, size.x, size.y);
+        resolveFbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(resolveFbo_.id(), GL_COLOR_ATTACHMENT0, frontAccum_.id(), 0);
+        glNamedFramebufferTexture(resolveFbo_.id(), GL_COLOR_ATTACHMENT1, backAccum_.id(), 0);
+        const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(resolveFbo_.id(), 2, two);
+    }
+
+    // minMax_[target] (cleared to the empty range) with the frame's opaque depth, MAX blending.
+    // Re-attached on every use: the frame targets replace the opaque depth on a resize.
+    void bindRangeTarget(const FrameContext& frame, int target) {
+        if (!peelFbo_) peelFbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(peelFbo_.id(), GL_COLOR_ATTACHMENT0, minMax_[target].id(), 0);
+        glNamedFramebufferTexture(peelFbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+        const float emptyRange[4] = {-2, -2, 0, 0};
+        glClearTexImage(minMax_[target].id(), 0, GL_RGBA, GL_FLOAT, emptyRange);
+        glBindFramebuffer(GL_FRAMEBUFFER, peelFbo_.id());
+        setTransparentDepthState(frame);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_MAX);
+    }
+
+    std::uint64_t initialise(const FrameContext& frame, TechniqueStats& stats) {
+        gl::ScopedPass pass(frame.timer, id_ + " init");
+        bindRangeTarget(frame, 0);
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        skipper_.draw(frame, initProgram_, stats);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glBlendEquation(GL_FUNC_ADD);
+        glDisable(GL_BLEND);
+        ++stats.passes;
+        GLuint64 total = 0;
+        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &total);
+        return total;
+    }
+
+    // Stores the layers at both ends of minMax_[1 - cur] and writes the next range to
+    // minMax_[cur]; repeated when the list pool had to grow.
+    LayerCounts peel(const FrameContext& frame, int cur, TechniqueStats& stats) {
+        for (;;) {
+            gl::ScopedPass pass(frame.timer, id_ + " peel");
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+            bindRangeTarget(frame, cur);
+            glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
+            storage_.beginPass(peelProgram_.id());
+            skipper_.draw(frame, peelProgram_, stats);
+            glBlendEquation(GL_FUNC_ADD);
+            glDisable(GL_BLEND);
+            ++stats.passes;
+            const LayerCounts c = storage_.endPass();
+            if (!c.repeat) return c;
+            ++stats.regrows;
+        }
+    }
+
+    void resolve(const FrameContext& frame, TechniqueStats& stats) {
+        gl::ScopedPass pass(frame.timer, id_ + " resolve");
+        glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);            // under
+        glBlendFuncSeparatei(1, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
+        storage_.bindForResolve(resolveProgram_.id());
+        drawFullscreen(frame, resolveProgram_.id());
+        glDisable(GL_BLEND);
+        ++stats.passes;
+    }
+
+    void composite(const FrameContext& frame, TechniqueStats& stats) {
+        gl::ScopedPass pass(frame.timer, id_ + " composite");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        glDisable(GL_BLEND);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, frontAccum_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
+        drawFullscreen(frame, compositeProgram_.id());
+        ++stats.passes;
+    }
+
+    std::string id_;
+    LayerStorage storage_;
+    SceneProgram initProgram_, peelProgram_;
+    gl::Program resolveProgram_, compositeProgram_;
+    gl::Query samples_;
+    glm::ivec2 size_{0, 0};
+    int precision_ = 0;
+    gl::Texture minMax_[2], frontAccum_, backAccum_;
+    gl::Framebuffer peelFbo_, resolveFbo_;
+    ObjectSkipper skipper_;
+};
+
+}  // namespace
+}  // namespace strata::peeling
+
+namespace strata {
+
+TechniqueEntry dualLlEntry() {
+    TechniqueInfo info{"dual-ll", "coplanarity", true, true,
+                       "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many resolves + composite; +1 peel per pool "
+                       "regrow); Table 1: D",
+                       "w*h*48 B at precision=32 (2 RG32F min-max + 2 RGBA32F accumulations) + w*h*8 heads + 24 B "
+                       "per fragment of the largest front+back layer pair (pool grown to it); Table 1: "
+                       "2C(Zf,Zb)+6 words",
+                       "DUAL-LL: dual peeling whose front and back layers link every fragment within the tie "
+                       "tolerance into per-pixel lists (front nodes from the pool's start, back from its end)"};
+    return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerListSettings, peeling::DualLayers>>(
+        info, peeling::LayerStore::List);
+}
+
+TechniqueEntry dualFabEntry() {
+    TechniqueInfo info{"dual-fab", "coplanarity", false, true,
+                       "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many resolves + composite); Table 1: D",
+                       "w*h*(48 + 2*(20K + 4)) B at precision=32 (2 RG32F min-max + 2 RGBA32F accumulations, "
+                       "K entries + counter per side); Table 1: K+6 words",
+                       "DUAL-FAB (DUAL-B): dual peeling keeping up to K coincident fragments per pixel of the front "
+                       "and of the back layer in fixed arrays; the rest counted as overflow"};
+    return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerBufferSettings, peeling::DualLayers>>(
+        info, peeling::LayerStore::Fab);
+}
+
+}  // namespace strata

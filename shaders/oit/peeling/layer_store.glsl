@@ -1,0 +1,61 @@
+// Appends the current fragment to its pixel's layer storage (layer_storage.glsl), counting it
+// in the pass's atomic counters, whose meaning depends on the form:
+//  LAYER_LIST: [0] front and [1] back fragments, kept running past the limits so the host can
+//              grow the pool and repeat the pass; uFrontLimit / uBackLimit cap each side (both
+//              the pool's size, unless the pool cannot grow: then they split it).
+//  LAYER_FAB, LAYER_KB: [0] stored, [1] overflowed (the layer held more than K at the pixel).
+// Needs surface.glsl (uObjectId) before it.
+#include "layer_storage.glsl"
+
+#if defined(LAYER_LIST)
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uFrontCount;
+layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uBackCount;
+uniform uint uFrontLimit;
+uniform uint uBackLimit;
+#else
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uStored;
+layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uOverflowed;
+#endif
+
+void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
+#if defined(LAYER_LIST)
+    uint index;
+    if (side == 0) {
+        index = atomicCounterIncrement(uFrontCount);
+        if (index >= uFrontLimit) return;
+    } else {
+        uint fromEnd = atomicCounterIncrement(uBackCount);
+        if (fromEnd >= uBackLimit) return;
+        index = uCapacity - 1u - fromEnd;
+    }
+    nodes[index].depth = gl_FragCoord.z;
+    nodes[index].objectId = uObjectId;
+    nodes[index].primitiveId = uint(gl_PrimitiveID);
+    nodes[index].colorRG = packHalf2x16(c.rg);
+    nodes[index].colorBA = packHalf2x16(c.ba);
+    nodes[index].next = imageAtomicExchange(uHeads, sidePixel(pixel, side), index + 1u);
+#elif defined(LAYER_FAB)
+    uint slot = imageAtomicAdd(uCounts, sidePixel(pixel, side), 1u);
+    if (slot < uCapacity) {
+        entries[firstEntry(pixel, side) + slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c);
+        atomicCounterIncrement(uStored);
+    } else {
+        atomicCounterIncrement(uOverflowed);
+    }
+#else
+    // Claimed slots always form a prefix: a fragment tries slot i only after finding 0..i-1
+    // claimed, and a claim is never released.
+    uint first = firstEntry(pixel, side);
+    for (uint i = 0u; i < uCapacity; ++i) {
+        if (atomicCompSwap(entries[first + i].objectId, kUnclaimed, uObjectId) == kUnclaimed) {
+            entries[first + i].depth = gl_FragCoord.z;
+            entries[first + i].primitiveId = uint(gl_PrimitiveID);
+            entries[first + i].colorRG = packHalf2x16(c.rg);
+            entries[first + i].colorBA = packHalf2x16(c.ba);
+            atomicCounterIncrement(uStored);
+            return;
+        }
+    }
+    atomicCounterIncrement(uOverflowed);
+#endif
+}
