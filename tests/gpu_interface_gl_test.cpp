@@ -265,6 +265,7 @@ std::vector<ProgramCase> programCases() {
         {{scene, "common/opaque.frag.glsl"}, {}, {}},
         {{scene, "common/count_fragments.frag.glsl"}, {}, {{"uFragmentCount", kCounters}}},
         {{full, "frame/deflect.frag.glsl"}, {}, {{"uSource", tex(BIND_SOURCE)}, {"uOutside", kCounters}}},
+        {{full, "frame/deflect.frag.glsl"}, {{"REPLICATE", ""}}, {{"uSource", tex(BIND_SOURCE)}}},
         {{full, "frame/present.frag.glsl"}, {}, {{"uLinearColor", tex(BIND_SOURCE)}}},
         {{scene, "oit/blend.frag.glsl"}, {}, {}},
         // screen-door family

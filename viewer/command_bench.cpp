@@ -109,7 +109,7 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two
     auto* budget = cmd->add_option("--frame-budget-ms", args->budgetMs,
                                    "pick the zoom per frame for this frame time (with --zoom-controller)")
                        ->check(CLI::Range(0.001, 1e6));

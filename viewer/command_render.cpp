@@ -121,7 +121,7 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

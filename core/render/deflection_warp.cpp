@@ -57,13 +57,19 @@ void DeflectionWarp::apply(GLuint sourceTexture, glm::ivec2 size, const Deflecti
                                     std::to_string(size.y) + " needs " + std::to_string(expected.x) + "x" +
                                     std::to_string(expected.y));
     resize(size);
+    // The identity map with nearest sampling is pure replication (or a copy at zoom 1): a program
+    // of its own that skips the map, the bounds test and the filter branch.
+    const bool replicate = params.mode == DeflectMode::Shift && params.shift == glm::vec2(0.0f) &&
+                           params.filter == DeflectFilter::Nearest;
+    if (replicate && !replicateProgram_)
+        replicateProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/deflect.frag.glsl"}, {{"REPLICATE", ""}});
     if (!program_) {
         program_ = gl::buildProgram({"common/fullscreen.vert.glsl", "frame/deflect.frag.glsl"});
         emptyVertexArray_ = gl::VertexArray::create();
         counter_ = gl::Buffer::create();
         glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
-    const GLuint p = program_.id();
+    const GLuint p = replicate ? replicateProgram_.id() : program_.id();
     const glm::mat3 map = deflectionInverseMap(params);
     glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uMap"), 1, GL_FALSE, &map[0][0]);
     glProgramUniform1i(p, glGetUniformLocation(p, "uBilinear"), params.filter == DeflectFilter::Bilinear ? 1 : 0);

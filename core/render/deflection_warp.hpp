@@ -87,7 +87,7 @@ private:
     void resize(glm::ivec2 size);
 
     glm::ivec2 size_{0, 0};
-    gl::Program program_;
+    gl::Program program_, replicateProgram_;
     gl::Texture color_;
     gl::Framebuffer fbo_;
     gl::VertexArray emptyVertexArray_;

@@ -23,6 +23,11 @@ vec4 fetchClamped(ivec2 t, ivec2 size) {
 // One exit, no early returns: the nearest-sampled homography failed on NVIDIA while the same
 // shader's bilinear path passed; this keeps the control flow the same for both filters.
 void main() {
+#ifdef REPLICATE
+    // Zoom's plain enlargement (identity map, nearest): display pixel p shows texel p / z, every
+    // pixel inside. Its own program, so the general map's per-pixel work is not paid for it.
+    fragColor = texelFetch(uSource, ivec2(gl_FragCoord.xy) / uZoom, 0);
+#else
     ivec2 size = textureSize(uSource, 0);
     vec3 h = uMap * vec3(gl_FragCoord.xy, 1.0);
     vec2 d = h.xy / h.z;
@@ -50,4 +55,5 @@ void main() {
         color = mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
     }
     fragColor = color;
+#endif
 }
