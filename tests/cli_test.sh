@@ -67,6 +67,7 @@ expect_error "--zoom excludes --frame-budget-ms" view --zoom 3 --frame-budget-ms
 expect_error "--frame-budget-ms: Value -1 not in range" bench builtin:layers:2 --frame-budget-ms -1
 expect_error "--zoom-controller: pid not in {reactive,predictive}" bench builtin:layers:2 --frame-budget-ms 10 --zoom-controller pid
 expect_error "--depth-tie-ulps: Value -1 not in range" render builtin:layers:2 --depth-tie-ulps -1 --out "$work/out.png"
+expect_error "--highlight-coplanar needs the frame at its size" render builtin:layers:2 --zoom 2 --highlight-coplanar "$work/h.png" --out "$work/out.png"
 printf '{"capacity": 4,' >"$tmp/broken.json"
 expect_error "broken.json: " render builtin:layers:2 --mode ll --settings "$tmp/broken.json" --out "$work/out.png"
 printf '{"capacity": "four"}' >"$tmp/string.json"

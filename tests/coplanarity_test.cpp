@@ -74,3 +74,19 @@ TEST_CASE("coplanarity stats: C_p over pixels with fragments, one-per-layer R_h"
     CHECK(srgbByte(heat.at(1, 1).r) == 0xA5);   // brown
     CHECK_THROWS_AS(coplanarityHeatmap({1, 2, 3}, 2, 2), std::invalid_argument);
 }
+
+TEST_CASE("coplanarity highlight: only pixels with a shared layer take their colour") {
+    Image shaded(3, 1);
+    for (int x = 0; x < 3; ++x) shaded.set(x, 0, glm::vec4(0.2f, 0.4f, 0.6f, 1.0f));
+    const Image out = coplanarityHighlight(shaded, {0, 1, 3}, 0.5f);
+    CHECK(out.at(0, 0) == shaded.at(0, 0));  // nothing there
+    CHECK(out.at(1, 0) == shaded.at(1, 0));  // one fragment per layer
+    const glm::vec3 blue = coplanarityColor(3);
+    const glm::vec4 mixed = out.at(2, 0);
+    CHECK(mixed.r == doctest::Approx(0.5f * 0.2f + 0.5f * blue.r));
+    CHECK(mixed.g == doctest::Approx(0.5f * 0.4f + 0.5f * blue.g));
+    CHECK(mixed.b == doctest::Approx(0.5f * 0.6f + 0.5f * blue.b));
+    CHECK(mixed.a == 1.0f);
+    CHECK_THROWS_AS(coplanarityHighlight(shaded, {0, 1}), std::invalid_argument);
+    CHECK_THROWS_AS(coplanarityHighlight(shaded, {0, 1, 2}, 1.5f), std::invalid_argument);
+}

@@ -28,6 +28,7 @@ struct RenderArgs {
     double time = 0.0;
     std::string out;
     std::string heatmap;
+    std::string highlight;
     SettingsArgs settings;
     std::string zoom = "1";
     bool zoomBlur = false;
@@ -42,6 +43,9 @@ void run(const RenderArgs& a) {
     // Images are written after the frame: refuse an unwritable destination before rendering.
     checkImageWritable(a.out);
     if (!a.heatmap.empty()) checkImageWritable(a.heatmap);
+    if (!a.highlight.empty()) checkImageWritable(a.highlight);
+    if (!a.highlight.empty() && zoom > 1)
+        throw std::invalid_argument("--highlight-coplanar needs the frame at its size: drop --zoom");
     Scene scene = openSceneAndWarn(a.scene);
     if (a.depthTieUlps >= 0.0) scene.depthTieUlps = a.depthTieUlps;
     gl::HeadlessContext context;
@@ -57,24 +61,26 @@ void run(const RenderArgs& a) {
     FrameOptions options;
     options.countFragments = true;
     // The heatmap comes from the GPU detector on the same frame (oit/coplanarity_detector.hpp).
-    options.detectCoplanarity = !a.heatmap.empty();
+    options.detectCoplanarity = !a.heatmap.empty() || !a.highlight.empty();
     options.zoom = zoom;
     options.zoomFilter = a.zoomBlur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
     FrameResult result = renderer.render(gpu, camera, size, technique.get(), options);
     gl::checkGl("render");
     Image image = renderer.readOutput();
     gl::checkGl("read back");
-    Image heat;
+    Image heat, highlighted;
     if (result.coplanarity) {
         // Of the frame drawn: at a zoom, the reduced one.
-        heat = coplanarityHeatmap(renderer.coplanarity()->readPixels().largestLayer, result.renderSize.x,
-                                  result.renderSize.y);
+        const std::vector<std::uint32_t> largest = renderer.coplanarity()->readPixels().largestLayer;
+        heat = coplanarityHeatmap(largest, result.renderSize.x, result.renderSize.y);
+        if (!a.highlight.empty()) highlighted = coplanarityHighlight(image, largest);
         gl::checkGl("coplanarity read back");
     }
     // The image and its heatmap appear together or not at all.
     OutputBatch outputs;
     writeImage(outputs, a.out, image);
     if (!a.heatmap.empty()) writeImage(outputs, a.heatmap, heat);
+    if (!a.highlight.empty()) writeImage(outputs, a.highlight, highlighted);
     outputs.commit();
     const auto& s = result.stats;
     const std::string zoomed = zoom > 1 ? " (drawn at " + std::to_string(result.renderSize.x) + "x" +
@@ -90,7 +96,7 @@ void run(const RenderArgs& a) {
         const std::uint64_t total = result.fragmentsTotal.value_or(0);
         std::printf("%s: coplanarity C_p %.4f (%llu of %llu pixels with fragments share a layer), R_h %s %.4f, "
                     "R_h one fragment per layer (f2b) %.4f; detector %.3f ms GPU\n",
-                    a.heatmap.c_str(), c.coplanarityProbability(), (unsigned long long)c.pixelsWithTies(),
+                    (a.heatmap.empty() ? a.highlight : a.heatmap).c_str(), c.coplanarityProbability(), (unsigned long long)c.pixelsWithTies(),
                     (unsigned long long)c.pixelsWithFragments(), a.mode.c_str(),
                     total ? double(s.fragmentsCaptured) / double(total) : 1.0, c.oneFragmentPerLayerRobustness(),
                     result.coplanarityMs);
@@ -116,6 +122,8 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--out", args->out, "output image (.png sRGB 8-bit or .exr linear half)")->required();
     cmd->add_option("--heatmap", args->heatmap, "coplanarity heatmap image: per pixel the largest number of fragments in one depth layer, "
                    "in Fig. 13's colours (GPU detector); prints C_p");
+    cmd->add_option("--highlight-coplanar", args->highlight,
+                    "the image with coplanar and self-intersecting surfaces tinted by the heatmap's colours (Fig. 12)");
     cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16); the heatmap is of the drawn frame")
         ->capture_default_str();
     cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");

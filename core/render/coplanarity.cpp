@@ -87,4 +87,22 @@ Image coplanarityHeatmap(const std::vector<std::uint32_t>& largestLayers, int wi
     return image;
 }
 
+Image coplanarityHighlight(const Image& shaded, const std::vector<std::uint32_t>& largestLayers, float strength) {
+    if (largestLayers.size() != std::size_t(shaded.width) * std::size_t(shaded.height))
+        throw std::invalid_argument("coplanarity highlight: " + std::to_string(largestLayers.size()) + " values for a " +
+                                    std::to_string(shaded.width) + "x" + std::to_string(shaded.height) + " image");
+    if (!(strength >= 0.0f && strength <= 1.0f))
+        throw std::invalid_argument("coplanarity highlight: strength must lie in [0, 1]");
+    Image out = shaded;
+    for (int y = 0; y < shaded.height; ++y)
+        for (int x = 0; x < shaded.width; ++x) {
+            const std::uint32_t n = largestLayers[std::size_t(y) * std::size_t(shaded.width) + std::size_t(x)];
+            if (n < 2) continue;
+            const glm::vec4 c = shaded.at(x, y);
+            const glm::vec3 tint = coplanarityColor(int(std::min<std::uint32_t>(n, 1u << 30)));
+            out.set(x, y, glm::vec4(glm::mix(glm::vec3(c), tint, strength), c.a));
+        }
+    return out;
+}
+
 }  // namespace strata

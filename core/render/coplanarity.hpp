@@ -56,4 +56,11 @@ int largestDepthLayer(std::vector<float> eyeDepths, double tolerance, int* layer
 // The heatmap image of a per-pixel largest-layer map (row 0 at the bottom, width * height values).
 Image coplanarityHeatmap(const std::vector<std::uint32_t>& largestLayers, int width, int height);
 
+// Coplanarity highlighted on the shaded image (the paper's Fig. 12 application: where a mesh
+// intersects itself or another, or surfaces coincide): pixels whose largest layer holds two or
+// more take `strength` of their Fig. 13 colour over the shaded colour; the rest stay as shaded.
+// Throws std::invalid_argument when the sizes differ or strength is outside [0, 1].
+Image coplanarityHighlight(const Image& shaded, const std::vector<std::uint32_t>& largestLayers,
+                           float strength = 0.6f);
+
 }  // namespace strata
