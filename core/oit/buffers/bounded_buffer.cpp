@@ -30,10 +30,13 @@ std::string BoundedBufferFrame::storePassName(int /*pass*/) const { return id_ +
 void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::string& id, const Bounds& bounds,
                                      TechniqueStats& stats) {
     id_ = id;
-    if (!storeProgram_.program) {
-        const Shaders s = shaders();
-        storeProgram_ = buildSceneProgram(s.store, s.storeDefines);
-        resolveProgram_ = gl::buildProgram(s.resolve, s.resolveDefines);
+    const std::optional<Shaders> lighter = lighterShaders(frame);
+    SceneProgram& storeProgram = lighter ? lighterStore_ : storeProgram_;
+    gl::Program& resolveProgram = lighter ? lighterResolve_ : resolveProgram_;
+    if (!storeProgram.program) {
+        const Shaders s = lighter ? *lighter : shaders();
+        storeProgram = buildSceneProgram(s.store, s.storeDefines);
+        resolveProgram = gl::buildProgram(s.resolve, s.resolveDefines);
     }
     tailTargets_.setPrecision(bounds.tailPrecision);
     allocate(frame, bounds.capacity);
@@ -42,20 +45,20 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
     counters_.reset();
     counters_.bind();
     bindStorage();
-    setUniforms(storeProgram_.id(), frame, bounds.capacity);
+    setUniforms(storeProgram.id(), frame, bounds.capacity);
     for (int p = 0; p < storePasses(); ++p) {
         gl::ScopedPass pass(frame.timer, storePassName(p));
         tailTargets_.bindForStore(frame, bounds.tail && storePassWritesTail(p), true);
         setTransparentDepthState(frame);
         beginStorePass(p);
-        stats.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+        stats.objectDraws += drawTransparent(frame, storeProgram, frame.transparentOrder);
         TailTargets::endStore();
         storeBarrier();
         ++stats.passes;
     }
     {
         gl::ScopedPass pass(frame.timer, id + " resolve");
-        const GLuint program = resolveProgram_.id();
+        const GLuint program = resolveProgram.id();
         bindStorage();
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         tailTargets_.bindForResolve(frame, bounds.tail);

@@ -10,6 +10,7 @@
 #include "oit/draw_transparent.hpp"
 
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -85,6 +86,9 @@ protected:
     };
 
     virtual Shaders shaders() const = 0;
+    // A lighter program pair for a frame that needs less than shaders() gives (ll-volume on a
+    // scene without volume objects draws as ll); none by default. Built on first use.
+    virtual std::optional<Shaders> lighterShaders(const FrameContext& /*frame*/) const { return std::nullopt; }
     // (Re)allocates for the frame's size and the capacity; called every frame.
     virtual void allocate(const FrameContext& frame, int capacity) = 0;
     // Clears what the store passes fill (called once before them).
@@ -119,6 +123,8 @@ protected:
     gl::Program resolveProgram_;
 
 private:
+    SceneProgram lighterStore_;
+    gl::Program lighterResolve_;
     std::string id_;
     Counters counters_;
     TailTargets tailTargets_;
