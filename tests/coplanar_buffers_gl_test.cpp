@@ -2,7 +2,8 @@
 // dual-ll, bun-ll: robust; f2b-fab, f2b-kb, dual-fab: K per pixel and layer) against the exact
 // reference: every fragment captured and the reference's image where they promise it, exactly
 // min(K, capacity) of K coincident copies where they do not, the rest counted; the same image
-// whatever the submission order; the list pool grown, or its overflow counted, never silent.
+// whatever the submission order (up to float round-off); the list pool grown, or its overflow
+// counted, never silent.
 #include "gl_test_support.hpp"
 
 #include "scene/builtin_scenes.hpp"
@@ -170,8 +171,10 @@ TEST_CASE("reversed submission order changes nothing") {
             CAPTURE(id);
             auto forward = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id));
             auto backward = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id), reversed);
-            // A layer composites in scene order, whatever order its fragments arrived in.
-            CHECK(compareImages(forward.image, backward.image).maxAbsError == 0.0);
+            // A layer composites in scene order, whatever order its fragments arrived in. Not
+            // bit-equal: on a GPU another arrival order fills the pools in another order, and
+            // nothing promises the same float rounding; 1e-6 is far below any misordering.
+            CHECK(compareImages(forward.image, backward.image).maxAbsError <= 1e-6);
             CHECK(forward.result.stats.fragmentsCaptured == backward.result.stats.fragmentsCaptured);
             CHECK(compareImages(backward.image, reference).maxAbsError <= kTolerance);
         }
