@@ -17,14 +17,11 @@ void main() {
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
     vec4 c = surfaceColor();
-    nodes[index].depth = gl_FragCoord.z;
-    nodes[index].objectId = uObjectId;
 #ifdef VOLUME
-    nodes[index].primitiveId = uint(gl_PrimitiveID) | volumeFlags();
+    uint primitiveBits = uint(gl_PrimitiveID) | volumeFlags();
 #else
-    nodes[index].primitiveId = uint(gl_PrimitiveID);
+    uint primitiveBits = uint(gl_PrimitiveID);
 #endif
-    nodes[index].colorRG = packHalf2x16(c.rg);
-    nodes[index].colorBA = packHalf2x16(c.ba);
-    nodes[index].next = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
+    uint head = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
+    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, c, head);
 }

@@ -18,10 +18,6 @@ void main() {
     if (index >= uCapacity) return;
     vec4 c = surfaceColor();
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    nodes[index].depth = gl_FragCoord.z;
-    nodes[index].objectId = uObjectId;
-    nodes[index].primitiveId = uint(gl_PrimitiveID);
-    nodes[index].colorRG = packHalf2x16(c.rg);
-    nodes[index].colorBA = packHalf2x16(c.ba);
-    nodes[index].next = imageAtomicExchange(uHeads, ivec3(pixel, bucketOf(pixel, gl_FragCoord.z)), index + 1u);
+    uint head = imageAtomicExchange(uHeads, ivec3(pixel, bucketOf(pixel, gl_FragCoord.z)), index + 1u);
+    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c, head);
 }

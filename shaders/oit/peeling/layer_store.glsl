@@ -28,12 +28,8 @@ void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
         if (fromEnd >= uBackLimit) return;
         index = uCapacity - 1u - fromEnd;
     }
-    nodes[index].depth = gl_FragCoord.z;
-    nodes[index].objectId = uObjectId;
-    nodes[index].primitiveId = uint(gl_PrimitiveID);
-    nodes[index].colorRG = packHalf2x16(c.rg);
-    nodes[index].colorBA = packHalf2x16(c.ba);
-    nodes[index].next = imageAtomicExchange(uHeads, sidePixel(pixel, side), index + 1u);
+    uint head = imageAtomicExchange(uHeads, sidePixel(pixel, side), index + 1u);
+    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c, head);
 #elif defined(LAYER_FAB)
     uint slot = imageAtomicAdd(uCounts, sidePixel(pixel, side), 1u);
     if (slot < uCapacity) {
