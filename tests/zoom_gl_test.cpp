@@ -24,6 +24,17 @@ bool sameColor(const glm::vec4& a, const glm::vec4& b, float tolerance = 0.0f) {
     return glm::all(glm::lessThanEqual(glm::abs(glm::vec3(a) - glm::vec3(b)), glm::vec3(tolerance)));
 }
 
+// Draws `display` at `zoom` with abuffer into `renderer` and enlarges nothing: the reduced
+// frame is renderer.targets().outputColor().
+void renderReduced(FrameRenderer& renderer, const test::Fixture& f, glm::ivec2 display, int zoom) {
+    FrameOptions options;
+    options.zoom = zoom;
+    options.enlarge = false;
+    auto technique = test::makeTechnique("abuffer");
+    renderer.render(*f.gpu, f.camera, display, technique.get(), options);
+    gl::checkGl("reduced frame");
+}
+
 }  // namespace
 
 TEST_CASE("zoom gl: the enlarged frame replicates the reduced one exactly, zoom 1 copies nothing") {
@@ -65,12 +76,8 @@ TEST_CASE("zoom gl: the reduced frame samples the display's pixel centres") {
     const test::Rendered full = test::renderWith(*f.gpu, f.camera, display, "abuffer");
     for (int zoom : {3, 5}) {
         CAPTURE(zoom);
-        FrameOptions options;
-        options.zoom = zoom;
-        options.enlarge = false;
-        auto technique = test::makeTechnique("abuffer");
         FrameRenderer renderer;
-        renderer.render(*f.gpu, f.camera, display, technique.get(), options);
+        renderReduced(renderer, f, display, zoom);
         const Image reduced = readRgbaTexture(renderer.targets().outputColor(), renderer.targets().size());
         int compared = 0, mismatches = 0;
         for (int j = 0; j < reduced.height; ++j)
@@ -118,12 +125,8 @@ TEST_CASE("zoom gl: a deflection folds into the enlargement: one pass, the same 
     test::Fixture f(makeBuiltinScene("cubes"));
     const glm::ivec2 display{48, 36};
     const int zoom = 3;
-    FrameOptions options;
-    options.zoom = zoom;
-    options.enlarge = false;
-    auto technique = test::makeTechnique("abuffer");
     FrameRenderer renderer;
-    renderer.render(*f.gpu, f.camera, display, technique.get(), options);
+    renderReduced(renderer, f, display, zoom);
     DeflectionWarp enlarge, folded;
     DeflectionParams identity;
     identity.zoom = zoom;

@@ -7,7 +7,7 @@
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
 #include "render/frame_size.hpp"
-#include "render/zoom.hpp"
+#include "zoom_options.hpp"
 #include "settings_options.hpp"
 
 #include <cstdio>
@@ -26,12 +26,8 @@ struct BenchArgs {
     std::string cameraPath;
     std::string json, csv, images;
     SettingsArgs settings;
-    std::string zoom = "1";
-    bool zoomBlur = false;
+    ZoomArgs zoom;
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
-    double budgetMs = 0.0;
-    std::string controller = "reactive";
-    int maxZoom = 8;
 };
 
 std::vector<std::string> splitModes(const std::string& text) {
@@ -58,15 +54,10 @@ void run(const BenchArgs& a) {
     // Settings are checked against every mode before the scene loads or a frame renders.
     options.settings = resolveSettingsArgs(benchModeIds(options.modes), a.settings);
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
-    options.zoom = parseZoom(a.zoom);
-    options.zoomFilter = a.zoomBlur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
-    if (a.budgetMs > 0.0) {
-        ZoomBudget budget;
-        budget.targetMs = a.budgetMs;
-        budget.maxZoom = a.maxZoom;
-        options.budget = budget;
-        options.zoomController = parseZoomController(a.controller);
-    }
+    options.zoom = a.zoom.fixedZoom();
+    options.zoomFilter = a.zoom.filter();
+    options.budget = a.zoom.budget();
+    if (options.budget) options.zoomController = a.zoom.controllerKind();
     if (!a.images.empty()) checkFolderCreatable(a.images);
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
@@ -105,23 +96,10 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--json", args->json, "write the JSON report here");
     cmd->add_option("--csv", args->csv, "write one CSV row per technique here");
     cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
-    auto* zoom = cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16)")->capture_default_str();
-    cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
+    addZoomOptions(cmd, args->zoom, true, "size");
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two
-    auto* budget = cmd->add_option("--frame-budget-ms", args->budgetMs,
-                                   "pick the zoom per frame for this frame time (with --zoom-controller)")
-                       ->check(CLI::Range(0.001, 1e6));
-    budget->excludes(zoom);
-    cmd->add_option("--zoom-controller", args->controller, "reactive or predictive (with --frame-budget-ms)")
-        ->check(CLI::IsMember({"reactive", "predictive"}))
-        ->capture_default_str()
-        ->needs(budget);
-    cmd->add_option("--zoom-max", args->maxZoom, "the largest zoom a controller may pick")
-        ->check(CLI::Range(1, 16))
-        ->capture_default_str()
-        ->needs(budget);
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

@@ -10,7 +10,7 @@
 #include "oit/technique_settings.hpp"
 #include "render/coplanarity.hpp"
 #include "render/frame_size.hpp"
-#include "render/zoom.hpp"
+#include "zoom_options.hpp"
 #include "frame/frame_renderer.hpp"
 #include "settings_options.hpp"
 
@@ -30,14 +30,13 @@ struct RenderArgs {
     std::string heatmap;
     std::string highlight;
     SettingsArgs settings;
-    std::string zoom = "1";
-    bool zoomBlur = false;
+    ZoomArgs zoom;
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
 };
 
 void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
-    const int zoom = parseZoom(a.zoom);
+    const int zoom = a.zoom.fixedZoom();
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
     const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
     // Images are written after the frame: refuse an unwritable destination before rendering.
@@ -63,7 +62,7 @@ void run(const RenderArgs& a) {
     // The heatmap comes from the GPU detector on the same frame (oit/coplanarity_detector.hpp).
     options.detectCoplanarity = !a.heatmap.empty() || !a.highlight.empty();
     options.zoom = zoom;
-    options.zoomFilter = a.zoomBlur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
+    options.zoomFilter = a.zoom.filter();
     FrameResult result = renderer.render(gpu, camera, size, technique.get(), options);
     gl::checkGl("render");
     Image image = renderer.readOutput();
@@ -124,9 +123,7 @@ void registerRenderCommand(CLI::App& app) {
                    "in Fig. 13's colours (GPU detector); prints C_p");
     cmd->add_option("--highlight-coplanar", args->highlight,
                     "the image with coplanar and self-intersecting surfaces tinted by the heatmap's colours (Fig. 12)");
-    cmd->add_option("--zoom", args->zoom, "draw at 1/Z of the size and enlarge (1..16); the heatmap is of the drawn frame")
-        ->capture_default_str();
-    cmd->add_flag("--zoom-blur", args->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
+    addZoomOptions(cmd, args->zoom, false, "size (the heatmap is of the frame drawn)");
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two

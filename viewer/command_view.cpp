@@ -2,7 +2,6 @@
 #include "commands.hpp"
 
 #include "oit/technique.hpp"
-#include "render/zoom.hpp"
 #include "settings_options.hpp"
 #include "view_app.hpp"
 
@@ -72,20 +71,7 @@ void registerViewCommand(CLI::App& app) {
         cmd->add_option("--exit-after-frames", options->exitAfterFrames, "render N frames, then exit (smoke tests)");
     cmd->add_option("--screenshot", *screenshot, "with --exit-after-frames: save the window here (.png)")->needs(exitAfter);
     cmd->add_option("--size", *size, "window size WxH")->capture_default_str();
-    auto zoom = std::make_shared<std::string>("1");
-    auto* zoomOption = cmd->add_option("--zoom", *zoom, "draw at 1/Z of the window and enlarge (1..16)")->capture_default_str();
-    cmd->add_flag("--zoom-blur", options->zoomBlur, "enlarge with a bilinear blur instead of pixel replication");
-    auto* budget = cmd->add_option("--frame-budget-ms", options->frameBudgetMs,
-                                   "pick the zoom per frame for this frame time (with --zoom-controller)")
-                       ->check(CLI::Range(0.001, 1e6));
-    budget->excludes(zoomOption);
-    cmd->add_option("--zoom-controller", options->zoomController, "reactive or predictive (with --frame-budget-ms)")
-        ->check(CLI::IsMember({"reactive", "predictive"}))
-        ->capture_default_str()
-        ->needs(budget);
-    cmd->add_option("--zoom-max", options->zoomMax, "the largest zoom a controller may pick")
-        ->check(CLI::Range(1, 16))
-        ->capture_default_str();
+    addZoomOptions(cmd, options->zoom, true, "window");
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);
         if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
@@ -94,7 +80,7 @@ void registerViewCommand(CLI::App& app) {
         // Against every technique: the panel can switch to any of them.
         options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
         options->view = *parseView(*view);  // checked by CLI::IsMember above
-        options->zoom = parseZoom(*zoom);
+        options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
         options->width = s.x;
         options->height = s.y;
         if (!play->empty()) options->playPath = *play;

@@ -2,6 +2,7 @@
 // `strata view`: the interactive window (GLFW + Dear ImGui) over the same frame pipeline the
 // headless commands use.
 #include "view_kind.hpp"
+#include "zoom_options.hpp"
 
 #include "oit/technique_settings.hpp"
 
@@ -37,11 +38,7 @@ struct ViewOptions {
     std::optional<std::filesystem::path> screenshot;
     int width = 1280, height = 800;
     // Zoom rendering (--zoom, or --frame-budget-ms with --zoom-controller; the panel changes them).
-    int zoom = 1;
-    bool zoomBlur = false;
-    double frameBudgetMs = 0.0;               // > 0: a controller picks the zoom
-    std::string zoomController = "reactive";
-    int zoomMax = 8;
+    ZoomArgs zoom;
 };
 
 // The panel's zoom choices the command line asks for.

@@ -14,12 +14,12 @@ namespace strata {
 
 ZoomChoices zoomChoicesFrom(const ViewOptions& options) {
     ZoomChoices c;
-    c.fixedZoom = options.zoom;
-    c.blur = options.zoomBlur;
-    c.maxZoom = options.zoomMax;
-    if (options.frameBudgetMs > 0.0) {
-        c.targetMs = float(options.frameBudgetMs);
-        c.controller = options.zoomController == "predictive" ? 2 : 1;
+    c.fixedZoom = options.zoom.fixedZoom();
+    c.blur = options.zoom.blur;
+    c.maxZoom = options.zoom.maxZoom;
+    if (const auto budget = options.zoom.budget()) {
+        c.targetMs = float(budget->targetMs);
+        c.controller = options.zoom.controllerKind() == ZoomControllerKind::Predictive ? 2 : 1;
     }
     return c;
 }
