@@ -2,6 +2,7 @@
 #include "gl_test_support.hpp"
 
 #include "gl/shader_program.hpp"
+#include "render/scene_program.hpp"
 
 #include <doctest/doctest.h>
 
@@ -96,7 +97,7 @@ TEST_CASE("every shipped program compiles and links") {
     for (const char* frag : {"common/opaque.frag.glsl", "common/count_fragments.frag.glsl", "oit/blend.frag.glsl",
                              "oit/abuffer_store.frag.glsl"}) {
         CAPTURE(frag);
-        CHECK_NOTHROW(gl::buildProgram({"common/scene.vert.glsl", frag}));
+        CHECK_NOTHROW(gl::buildProgram({"common/scene.vert.glsl", frag}, {}, sceneFragmentWrap()));
     }
     CHECK_NOTHROW(gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}));
     gl::checkGl("shipped programs");

@@ -25,7 +25,7 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     glm::mat4 projection =
         zoomProjection(camera.projection(float(displaySize.x) / float(displaySize.y)), displaySize, options.zoom);
     FrameContext frame{scene, camera, view, projection, projection * view, size, targets_, timer,
-                       scene.transparentObjects()};
+                       scene.transparentObjects(), options.standIns};
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -46,7 +46,7 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         glClearNamedFramebufferfv(targets_.opaqueFramebuffer(), GL_DEPTH, 0, &clearDepth);
         glUseProgram(opaqueProgram_.id());
         scene.setFrameUniforms(opaqueProgram_, frame.viewProjection);
-        for (int object : scene.opaqueObjects()) scene.draw(opaqueProgram_, object);
+        for (int object : scene.opaqueObjects()) frame.draw(opaqueProgram_, object);
     }
     targets_.copyOpaqueToOutput();
 

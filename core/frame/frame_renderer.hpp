@@ -36,6 +36,9 @@ struct FrameOptions {
     // false: keep the reduced frame (targets()) and enlarge nothing; the caller folds the
     // enlargement into its own pass (immersive mode's deflection: DeflectionParams::zoom).
     bool enlarge = true;
+    // What draws in objects' places (layered impostors, lod/), indexed like GpuScene::objects();
+    // null entries and a null pointer draw the objects' triangles. Held by the caller.
+    const StandIns* standIns = nullptr;
 };
 
 struct FrameResult {

@@ -39,7 +39,8 @@ struct Preprocessor {
         return rel.empty() ? file.string() : rel.string();
     }
 
-    void expand(const fs::path& file, const std::string& from, bool top, const Defines& defines) {
+    void expand(const fs::path& file, const std::string& from, bool top, const Defines& defines,
+                const StageWrap& wrap = {}) {
         std::string canonical = fs::weakly_canonical(file).string();
         if (including.count(canonical)) throw ShaderError(from + ": #include cycle through " + file.string());
         including.insert(canonical);
@@ -58,6 +59,7 @@ struct Preprocessor {
                 versionSeen = true;
                 out.text += line + "\n";
                 for (const auto& [name, value] : defines) out.text += "#define " + name + " " + value + "\n";
+                if (!wrap.prelude.empty()) expand(root / wrap.prelude, displayName(file) + " (prelude)", false, {});
                 out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
                 continue;
             }
@@ -72,6 +74,7 @@ struct Preprocessor {
             out.text += line + "\n";
         }
         if (top && !versionSeen) throw ShaderError(displayName(file) + ":1: missing #version line");
+        if (top && !wrap.epilogue.empty()) expand(root / wrap.epilogue, displayName(file) + " (epilogue)", false, {});
         including.erase(canonical);
     }
 };
@@ -86,9 +89,10 @@ GLenum stageOf(const std::string& file) {
 
 }  // namespace
 
-PreprocessedSource preprocessShader(const fs::path& file, const Defines& defines, const fs::path& root) {
+PreprocessedSource preprocessShader(const fs::path& file, const Defines& defines, const fs::path& root,
+                                    const StageWrap& wrap) {
     Preprocessor p{root, {}, {}};
-    p.expand(file, "", true, defines);
+    p.expand(file, "", true, defines, wrap);
     return std::move(p.out);
 }
 
@@ -109,13 +113,14 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
     return out;
 }
 
-Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines) {
+Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines, const StageWrap& fragmentWrap) {
     fs::path root = shaderRoot();
     Program program = Program::create();
     std::vector<Shader> shaders;
     for (const auto& name : stageFiles) {
         GLenum stage = stageOf(name);
-        PreprocessedSource source = preprocessShader(root / name, defines, root);
+        PreprocessedSource source =
+            preprocessShader(root / name, defines, root, stage == GL_FRAGMENT_SHADER ? fragmentWrap : StageWrap{});
         Shader shader(glCreateShader(stage));
         const char* text = source.text.c_str();
         glShaderSource(shader.id(), 1, &text, nullptr);

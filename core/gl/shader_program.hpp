@@ -29,14 +29,24 @@ struct PreprocessedSource {
     std::vector<std::string> files;
 };
 
+// Files (relative to the shader root) expanded right after the #version line and the defines,
+// and at the very end, of the stage they wrap: scene programs wrap their fragment stage so one
+// main() runs before every technique's (render/scene_program.cpp).
+struct StageWrap {
+    std::string prelude;
+    std::string epilogue;
+};
+
 PreprocessedSource preprocessShader(const std::filesystem::path& file, const Defines& defines,
-                                    const std::filesystem::path& root);
+                                    const std::filesystem::path& root, const StageWrap& wrap = {});
 
 // Rewrites driver log lines ("0:12(5): error" Mesa, "0(12) : error" NVIDIA) to "file:12: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
 
 // Builds a program from stage files (stage from the name: .vert/.frag/.comp/.geom.glsl),
 // given relative to the shader root.
-Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines = {});
+// `fragmentWrap` wraps the fragment stage.
+Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines = {},
+                     const StageWrap& fragmentWrap = {});
 
 }  // namespace strata::gl

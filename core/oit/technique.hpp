@@ -57,6 +57,15 @@ struct FrameContext {
     const FrameTargets& targets;
     gl::GpuTimer* timer;                  // null when not timing
     std::vector<int> transparentOrder;    // submission order of transparent objects
+    // What draws in each object's place this frame (render/stand_in.hpp); null: every object
+    // draws its own triangles.
+    const StandIns* standIns = nullptr;
+
+    // Draws `object` (or its stand-in) with `program`, which must be bound: every pass draws
+    // scene objects through this, so a stand-in reaches every technique.
+    void draw(const SceneProgram& program, int object) const {
+        scene.draw(program, object, standIns ? (*standIns)[std::size_t(object)] : nullptr);
+    }
 };
 
 class Technique {

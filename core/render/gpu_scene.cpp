@@ -1,5 +1,7 @@
 #include "render/gpu_scene.hpp"
 
+#include "common/bindings.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <stdexcept>
@@ -62,7 +64,7 @@ void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProj
     glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(scene_.lightDirection));
 }
 
-void GpuScene::draw(const SceneProgram& p, int objectIndex) const {
+void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
     const Object& o = objects_[objectIndex];
     const Material& m = scene_.materials[o.material];
     glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(o.world)));
@@ -76,6 +78,17 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex) const {
     glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
     glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
     glProgramUniform1i(program, p.volumeEntry, volumeEntry_[std::size_t(objectIndex)]);
+    glProgramUniform1i(program, p.impostor, standIn ? 1 : 0);
+    if (standIn) {
+        glProgramUniform1i(program, p.impostorSlices, standIn->slices);
+        glProgramUniform1f(program, p.impostorOverlap, standIn->overlap);
+        glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, standIn->atlas);
+        if (standIn->first.empty()) return;
+        glBindVertexArray(standIn->vertexArray);
+        glMultiDrawArrays(GL_TRIANGLES, standIn->first.data(), standIn->count.data(),
+                          GLsizei(standIn->first.size()));
+        return;
+    }
     const GpuMesh& mesh = meshes_[o.mesh];
     if (mesh.indexCount == 0) return;
     glBindVertexArray(mesh.vertexArray.id());

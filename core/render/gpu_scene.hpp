@@ -3,6 +3,7 @@
 // transparent lists, and the draw call every pass uses.
 #include "gl/objects.hpp"
 #include "render/scene_program.hpp"
+#include "render/stand_in.hpp"
 #include "scene/mesh_volume.hpp"
 #include "scene/scene.hpp"
 
@@ -38,8 +39,8 @@ public:
 
     // Sets the per-object uniforms (model, normal matrix, material with its volume parameters
     // tau and albedo, id, which faces enter a volume) on `program`, which must be bound, and
-    // draws the object's triangles.
-    void draw(const SceneProgram& program, int objectIndex) const;
+    // draws the object's triangles, or with `standIn` the stand-in's quads in their place.
+    void draw(const SceneProgram& program, int objectIndex, const StandInDraw* standIn = nullptr) const;
 
     // Uniforms every scene program shares for a frame.
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;

@@ -2,6 +2,8 @@
 
 namespace strata {
 
+gl::StageWrap sceneFragmentWrap() { return {"common/scene_prelude.glsl", "common/scene_main.glsl"}; }
+
 SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines) {
     return buildSceneProgram(std::vector<std::string>{fragmentStage}, defines);
 }
@@ -10,7 +12,7 @@ SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, cons
     std::vector<std::string> stages{"common/scene.vert.glsl"};
     stages.insert(stages.end(), laterStages.begin(), laterStages.end());
     SceneProgram p;
-    p.program = gl::buildProgram(stages, defines);
+    p.program = gl::buildProgram(stages, defines, sceneFragmentWrap());
     GLuint id = p.program.id();
     p.viewProj = glGetUniformLocation(id, "uViewProj");
     p.model = glGetUniformLocation(id, "uModel");
@@ -23,6 +25,9 @@ SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, cons
     p.tau = glGetUniformLocation(id, "uTau");
     p.albedo = glGetUniformLocation(id, "uAlbedo");
     p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
+    p.impostor = glGetUniformLocation(id, "uImpostor");
+    p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
+    p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
     return p;
 }
 

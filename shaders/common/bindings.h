@@ -13,6 +13,9 @@ GPU_CONST uint BIND_OPAQUE_COLOR = 0u;    // texture unit
 GPU_CONST uint BIND_OPAQUE_DEPTH = 1u;    // texture unit
 GPU_CONST uint BIND_RESOLVE_OUTPUT = 3u;  // image unit: compute resolves write the output colour
 GPU_CONST uint BIND_SOURCE = 0u;          // texture unit: the image a full-screen pass warps or presents
+// Texture unit of a layered impostor's atlas (render/stand_in.hpp, common/scene_main.glsl); above
+// every technique's units (dual-2p reaches 19) so a stand-in draws inside any pass.
+GPU_CONST uint BIND_IMPOSTOR_ATLAS = 20u;
 
 // Compute resolves run square groups of this many pixels a side; the host rounds the
 // dispatch up to whole groups.

@@ -14,8 +14,13 @@ uniform vec3 uAlbedo;
 
 in vec3 vWorldNormal;
 
+// The interpolated mesh normal, or for a stand-in the impostor texel's (common/scene_main.glsl).
+vec3 surfaceNormal() {
+    return uImpostor ? strataImpostorNormal : vWorldNormal;
+}
+
 vec4 surfaceColor() {
-    return vec4(shadeSurface(uBaseColor, vWorldNormal, uLightDir), uAlpha);
+    return vec4(shadeSurface(uBaseColor, surfaceNormal(), uLightDir), uAlpha);
 }
 
 // What `distance` metres of this object's medium let through, per channel: exp(-tau d). Finite,

@@ -154,7 +154,7 @@ void ObjectSkipper::draw(const FrameContext& frame, const SceneProgram& program,
     frame.scene.setFrameUniforms(program, frame.viewProjection);
     for (int o : frame.transparentOrder) {
         if (!enabled_) {
-            frame.scene.draw(program, o);
+            frame.draw(program, o);
             ++stats.objectDraws;
             continue;
         }
@@ -187,11 +187,11 @@ void ObjectSkipper::draw(const FrameContext& frame, const SceneProgram& program,
         ++stats.objectDraws;
         if (unknown) {
             glBeginConditionalRender(unknown, GL_QUERY_WAIT);
-            frame.scene.draw(program, o);
+            frame.draw(program, o);
             glEndConditionalRender();
             conditional_.push_back({unknown});
         } else {
-            frame.scene.draw(program, o);
+            frame.draw(program, o);
         }
     }
 }

@@ -26,7 +26,7 @@ float crowAlpha(float nz) {
 }
 
 void main() {
-    vec3 n = normalize(vWorldNormal);
+    vec3 n = normalize(surfaceNormal());
     vec3 toEye = normalize(uEyePosition - vWorldPosition);
     float nz = clamp(abs(dot(n, toEye)), 0.0, 1.0);
     outColor = vec4(surfaceColor().rgb, crowAlpha(nz));

@@ -23,6 +23,16 @@ uniform vec3 uViewAxis;         // unit vector the camera looks along
 uniform float uSamplesPerUnit;  // supersampled pixels per scene unit at distance 1
 uniform uint uObjectId;
 
+// Passed on to the scene fragment wrapper (common/scene_main.glsl) under the same block name.
+in ImpostorVarying {
+    vec2 uv;
+    flat ivec2 layer;
+} impostorIn[];
+out ImpostorVarying {
+    vec2 uv;
+    flat ivec2 layer;
+} impostorOut;
+
 out vec3 gWorldNormal;
 out vec2 gMaskCoord;  // mask texels
 
@@ -39,6 +49,8 @@ void main() {
     for (int i = 0; i < 3; ++i) {
         gl_Position = gl_in[i].gl_Position;
         gWorldNormal = vWorldNormal[i];
+        impostorOut.uv = impostorIn[i].uv;
+        impostorOut.layer = impostorIn[i].layer;
         gMaskCoord = offset + coords[i];
         EmitVertex();
     }

@@ -1,0 +1,32 @@
+#pragma once
+// What a pass draws in an object's place for one frame: a layered impostor's slice quads
+// (lod/layered_impostor.hpp builds them; Schauffler, "Image-based object representation by
+// layered impostors"). The quads go through the same scene program as the object's triangles,
+// with the object's uniforms, and every scene program's fragment stage runs the impostor alpha
+// test first (shaders/common/scene_main.glsl), so each technique sees a stand-in's fragments as
+// it sees a mesh's. render/ knows only this description; lod/ decides what stands in for what.
+#include <epoxy/gl.h>
+
+#include <vector>
+
+namespace strata {
+
+struct StandInDraw {
+    // Triangles: attribute 0 the position in the object's own space (drawn with its model
+    // matrix), attribute 2 (u, v, atlas layer, slice).
+    GLuint vertexArray = 0;
+    // GL_TEXTURE_2D_ARRAY, RGBA8: rgb the object-space normal * 0.5 + 0.5, a the depth code
+    // along the view's slice axis (0 empty; see shaders/common/scene_main.glsl).
+    GLuint atlas = 0;
+    int slices = 1;          // L: every stack's number of depth slices (1..256)
+    float overlap = 0.0f;    // slice widths each slice's interval reaches past its own, each side
+    // The vertex ranges (glMultiDrawArrays, GL_TRIANGLES) drawn this frame.
+    std::vector<GLint> first;
+    std::vector<GLsizei> count;
+};
+
+// Per object (indexed like GpuScene::objects()): what draws in its place, or null for its own
+// triangles. Held by the caller for the frame.
+using StandIns = std::vector<const StandInDraw*>;
+
+}  // namespace strata

@@ -1,0 +1,40 @@
+// The real main() of every scene program's fragment stage (see common/scene_prelude.glsl).
+// For a stand-in it is the layered impostor's alpha test (Schauffler, section 3.2): the slice
+// quad keeps only the atlas texels whose stored depth falls in its interval, widened by
+// uImpostorOverlap slice widths on each side (section 3.3, Fig. 4; 0 keeps the intervals
+// disjoint so no surface is emitted twice, which transparency needs). The test runs before the
+// technique's body, so a rejected texel never reaches a counter, an image store or a colour.
+#undef main
+#include "bindings.h"
+
+uniform int uImpostorSlices;
+uniform float uImpostorOverlap;
+uniform mat3 uNormalMatrix;
+// RGBA8: rgb the object-space normal * 0.5 + 0.5, a the depth code (0 empty, 1..255 the depth
+// along the view's slice axis, t = (code - 0.5) / 255 over the slab the slices cover).
+layout(binding = BIND_IMPOSTOR_ATLAS) uniform sampler2DArray uImpostorAtlas;
+
+in ImpostorVarying {
+    vec2 uv;
+    flat ivec2 layer;  // atlas layer, slice
+} vImpostor;
+
+void main() {
+    if (uImpostor) {
+        ivec2 size = textureSize(uImpostorAtlas, 0).xy;
+        ivec2 texel = clamp(ivec2(vImpostor.uv * vec2(size)), ivec2(0), size - 1);
+        vec4 stored = texelFetch(uImpostorAtlas, ivec3(texel, vImpostor.layer.x), 0);
+        int code = int(round(stored.a * 255.0));
+        if (code == 0) discard;
+        float t = (float(code) - 0.5) / 255.0;
+        int slice = vImpostor.layer.y;
+        float slices = float(uImpostorSlices);
+        if (uImpostorOverlap <= 0.0) {
+            if (min(int(t * slices), uImpostorSlices - 1) != slice) discard;
+        } else if (abs(t - (float(slice) + 0.5) / slices) > (0.5 + uImpostorOverlap) / slices) {
+            discard;
+        }
+        strataImpostorNormal = normalize(uNormalMatrix * (stored.rgb * 2.0 - 1.0));
+    }
+    strataSceneFragmentMain();
+}
