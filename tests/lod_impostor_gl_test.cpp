@@ -7,6 +7,7 @@
 #include "lod/layered_impostor.hpp"
 #include "lod/view_directions.hpp"
 #include "scene/mesh_builders.hpp"
+#include "scene/scene_source.hpp"
 
 #include <doctest/doctest.h>
 
@@ -15,6 +16,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <sstream>
 
 using namespace strata;
 using namespace strata::lod;
@@ -309,4 +312,28 @@ TEST_CASE("lod impostor gl: ranges per frame: the nearest view in full, holes fr
         std::size_t holes = imp.holeSlices(n[0], n[1]).size() + imp.holeSlices(n[0], n[2]).size();
         CHECK(total == plainTotal + GLsizei(holes) * 6);
     }
+}
+
+TEST_CASE("lod impostor gl: the set bakes the shipped bunny (res 128, 20 views, 64 slices) with a progress line") {
+    const std::filesystem::path file = std::filesystem::path(STRATA_SHARED_SCENES_DIR) / "stanford-bunny.glb";
+    if (!std::filesystem::exists(file)) {
+        MESSAGE("skipped: ", file.string(), " is absent");
+        return;
+    }
+    test::Fixture fx(openScene(file.string()));
+    ImpostorSettings settings;  // the defaults are the paper's: 128 px, 20 views, 64 slices
+    REQUIRE(settings.resolution == 128);
+    REQUIRE(settings.views == 20);
+    REQUIRE(settings.slices == 64);
+    std::ostringstream progress;
+    const ImpostorSet set(*fx.gpu, settings, 2, &progress);
+    gl::checkGl("bunny bake");
+    MESSAGE(progress.str(), "triangles ", fx.gpu->triangleCount(), ", bake ", set.bakeMs(), " ms");
+    CHECK(progress.str().find("baking impostors: 1/1 meshes") != std::string::npos);
+    REQUIRE(set.bakedMeshes() == 1);
+    const ImpostorMemory b = set.bytes();
+    CHECK(b.images == 4ull * 128 * 128 * 20);  // 1.311 MB, Table 2
+    CHECK(b.rectangles == 4ull * 20 * 64);
+    CHECK(set.impostorOf(0) != nullptr);
+    CHECK(set.reasonOf(0).empty());
 }
