@@ -114,7 +114,7 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     glGetTextureImage(atlas_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(size), texels.data());
     buildRectangles(texels);
     buildQuads();
-    if (settings_.holeFilling) findHoleSlices();
+    if (settings_.holeFilling) findHoleSlices(vertexArray, indexCount);
     glFinish();
     bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -246,10 +246,12 @@ void LayeredImpostor::buildQuads() {
     glVertexArrayAttribBinding(vao, 2, 0);
 }
 
-void LayeredImpostor::findHoleSlices() {
-    // Section 3.3: from the direction halfway between V and an adjacent Vi, draw V's impostor
-    // (marking the stencil where it covers), then Vi's slices with ids where V left the stencil
-    // clear; the ids in the image are the slices of Vi that close V's holes.
+void LayeredImpostor::findHoleSlices(GLuint meshArray, GLsizei indexCount) {
+    // Section 3.3: from the direction halfway between V and an adjacent Vi, draw V's impostor,
+    // then Vi's slices with ids where V left pixels empty; the ids in the image are the slices
+    // of Vi that close V's holes. Beyond the paper, a hole is also where the mesh itself covers
+    // (stencil 1 from a geometry pass, cleared to 0 where V covers): pixels just outside V's
+    // silhouette are not holes, and Vi's slices drawn for them would only thicken the rim.
     adjacency_ = adjacentViews(directions_);
     const int res = settings_.resolution, L = settings_.slices, peels = settings_.peels;
     gl::Texture ids = gl::createTexture(GL_TEXTURE_2D);
@@ -259,6 +261,8 @@ void LayeredImpostor::findHoleSlices() {
     glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, ids.id(), 0);
     glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, depthStencil.id(), 0);
     gl::Program program = gl::buildProgram({"lod/slice_id.vert.glsl", "lod/slice_id.frag.glsl"});
+    gl::Program geometry = gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"});
+    const GLint geometryViewProj = glGetUniformLocation(geometry.id(), "uViewProj");
     const GLuint id = program.id();
     glProgramUniform1i(id, glGetUniformLocation(id, "uSlices"), L);
     glProgramUniform1f(id, glGetUniformLocation(id, "uOverlap"), settings_.overlap);
@@ -288,17 +292,25 @@ void LayeredImpostor::findHoleSlices() {
         const float far = 1.0f;
         glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, &zero);
         glClearNamedFramebufferfi(fbo.id(), GL_DEPTH_STENCIL, 0, far, 0);
-        // V: stencil 1 wherever one of its slices accepts a texel.
+        // The mesh: stencil 1 where it covers.
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDisable(GL_DEPTH_TEST);
         glStencilFunc(GL_ALWAYS, 1, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glUseProgram(geometry.id());
+        glProgramUniformMatrix4fv(geometry.id(), geometryViewProj, 1, GL_FALSE, glm::value_ptr(viewProj));
+        glBindVertexArray(meshArray);
+        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+        // V: stencil 0 wherever one of its slices accepts a texel.
+        glUseProgram(id);
+        glBindVertexArray(quadArray_.id());
+        glStencilFunc(GL_ALWAYS, 0, 0xFF);
         if (viewCount_[std::size_t(v)] > 0) glDrawArrays(GL_TRIANGLES, viewFirst_[std::size_t(v)], viewCount_[std::size_t(v)]);
         // Vi: ids where V left the stencil clear, nearest slice wins.
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
-        glStencilFunc(GL_EQUAL, 0, 0xFF);
+        glStencilFunc(GL_EQUAL, 1, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
         if (viewCount_[std::size_t(w)] > 0) glDrawArrays(GL_TRIANGLES, viewFirst_[std::size_t(w)], viewCount_[std::size_t(w)]);
         glGetTextureImage(ids.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(image.size() * sizeof(GLuint)), image.data());

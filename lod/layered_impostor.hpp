@@ -87,7 +87,8 @@ public:
     // Vertex range of one (view, peel, slice): count 0 when the slice is empty.
     std::pair<GLint, GLsizei> sliceRange(int view, int peel, int slice) const;
     // The adjacent pairs (V, Vi) the preprocessing ran, and for each the slices of Vi (as
-    // peel * slices + slice) that showed through V's holes from the direction halfway between.
+    // peel * slices + slice) that showed through V's holes (pixels the mesh covers and V's
+    // impostor does not) from the direction halfway between.
     const std::vector<std::pair<int, int>>& adjacency() const { return adjacency_; }
     const std::vector<int>& holeSlices(int view, int adjacentView) const;
     GLuint atlas() const { return atlas_.id(); }
@@ -101,7 +102,7 @@ private:
     void bakeImages(GLuint meshArray, GLsizei indexCount);
     void buildRectangles(const std::vector<std::uint8_t>& texels);
     void buildQuads();
-    void findHoleSlices();
+    void findHoleSlices(GLuint meshArray, GLsizei indexCount);
 
     ImpostorSettings settings_;
     std::string reason_;
