@@ -7,6 +7,7 @@
 
 #include "common/bindings.h"
 #include "debug/error_map.h"
+#include "lod/lod_bindings.h"
 #include "gl/shader_program.hpp"
 #include "render/scene_program.hpp"
 #include "oit/abuffer_node.h"
@@ -406,6 +407,10 @@ std::vector<ProgramCase> programCases() {
         {{"debug/error_map.comp.glsl"}, {},
          {{"uImage", tex(BIND_ERROR_IMAGE)}, {"uReference", tex(BIND_ERROR_REFERENCE)},
           {"uFalseColor", image(BIND_RESOLVE_OUTPUT)}, {"ErrorPartials", ssbo(BIND_ERROR_PARTIALS)}}},
+        // layered impostors (lod/layered_impostor.cpp): the bake, its peels, the hole-filling id render
+        {{"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, {}, {}},
+        {{"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, {{"PEEL", ""}}, {{"uPreviousDepth", tex(BIND_BAKE_PREVIOUS_DEPTH)}}},
+        {{"lod/slice_id.vert.glsl", "lod/slice_id.frag.glsl"}, {}, {{"uAtlas", tex(BIND_SLICE_ATLAS)}}},
     };
 }
 

@@ -1,0 +1,110 @@
+#include "lod/impostor_set.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <ostream>
+
+namespace strata::lod {
+
+ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels,
+                         std::ostream* progress)
+    : scene_(&scene), settings_(settings) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene& s = scene.scene();
+    const auto& objects = scene.objects();
+    std::vector<bool> wanted(s.meshes.size(), false), transparent(s.meshes.size(), false);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (scene.objectVolumes()[i].volume) continue;
+        const std::size_t m = std::size_t(objects[i].mesh);
+        wanted[m] = true;
+        if (s.materials[std::size_t(objects[i].material)].isTransparent()) transparent[m] = true;
+    }
+    int total = 0, done = 0;
+    for (bool w : wanted) total += w ? 1 : 0;
+    meshImpostors_.resize(s.meshes.size());
+    meshReasons_.assign(s.meshes.size(), "no surface object uses the mesh");
+    for (std::size_t m = 0; m < s.meshes.size(); ++m) {
+        if (!wanted[m]) continue;
+        ImpostorSettings own = settings;
+        if (transparent[m]) own.peels = transparentPeels;
+        // Objects share the mesh's vertex array; find one that draws it.
+        const GpuMesh* mesh = nullptr;
+        for (std::size_t i = 0; i < objects.size() && !mesh; ++i)
+            if (std::size_t(objects[i].mesh) == m) mesh = &scene.meshOf(int(i));
+        auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[m].bounds(), own);
+        if (impostor->valid()) meshImpostors_[m] = std::move(impostor);
+        else meshReasons_[m] = impostor->reason();
+        ++done;
+        if (progress) *progress << "baking impostors: " << done << "/" << total << " meshes" << std::endl;
+    }
+    draws_.resize(objects.size());
+    bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (progress) {
+        const ImpostorMemory b = bytes();
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "impostors: %d/%d meshes baked in %.0f ms, %llu bytes (images %llu, rectangles %llu, vertices %llu)",
+                      bakedMeshes(), total, bakeMs_, (unsigned long long)b.total(), (unsigned long long)b.images,
+                      (unsigned long long)b.rectangles, (unsigned long long)b.vertexBuffer);
+        *progress << line << std::endl;
+    }
+}
+
+const LayeredImpostor* ImpostorSet::impostorOfMesh(int mesh) const {
+    if (mesh < 0 || std::size_t(mesh) >= meshImpostors_.size()) return nullptr;
+    return meshImpostors_[std::size_t(mesh)].get();
+}
+
+const LayeredImpostor* ImpostorSet::impostorOf(int objectIndex) const {
+    if (objectIndex < 0 || std::size_t(objectIndex) >= scene_->objects().size()) return nullptr;
+    if (scene_->objectVolumes()[std::size_t(objectIndex)].volume) return nullptr;
+    return impostorOfMesh(scene_->objects()[std::size_t(objectIndex)].mesh);
+}
+
+std::string ImpostorSet::reasonOf(int objectIndex) const {
+    if (objectIndex < 0 || std::size_t(objectIndex) >= scene_->objects().size()) return "no such object";
+    if (scene_->objectVolumes()[std::size_t(objectIndex)].volume) return "a volume medium";
+    if (impostorOf(objectIndex)) return {};
+    return meshReasons_[std::size_t(scene_->objects()[std::size_t(objectIndex)].mesh)];
+}
+
+glm::vec3 ImpostorSet::eyeInObject(int objectIndex, const glm::vec3& eyeWorld) const {
+    const glm::mat4& world = scene_->objects()[std::size_t(objectIndex)].world;
+    return glm::vec3(glm::inverse(world) * glm::vec4(eyeWorld, 1.0f));
+}
+
+const StandInDraw* ImpostorSet::drawFor(int objectIndex, const glm::vec3& eyeWorld) {
+    const LayeredImpostor* impostor = impostorOf(objectIndex);
+    if (!impostor) return nullptr;
+    const bool fillHoles = impostor->settings().peels == 1;
+    StandInDraw& d = draws_[std::size_t(objectIndex)];
+    d = impostor->drawFor(eyeInObject(objectIndex, eyeWorld), fillHoles);
+    return &d;
+}
+
+std::vector<const StandInDraw*> ImpostorSet::drawsFor(const glm::vec3& eyeWorld, const std::vector<bool>& useImpostor) {
+    std::vector<const StandInDraw*> out(scene_->objects().size(), nullptr);
+    for (std::size_t i = 0; i < out.size() && i < useImpostor.size(); ++i)
+        if (useImpostor[i]) out[i] = drawFor(int(i), eyeWorld);
+    return out;
+}
+
+float ImpostorSet::nearestViewAngle(int objectIndex, const glm::vec3& eyeWorld) const {
+    const LayeredImpostor* impostor = impostorOf(objectIndex);
+    return impostor ? impostor->nearestViewAngle(eyeInObject(objectIndex, eyeWorld)) : 0.0f;
+}
+
+ImpostorMemory ImpostorSet::bytes() const {
+    ImpostorMemory total;
+    for (const auto& i : meshImpostors_)
+        if (i) total += i->bytes();
+    return total;
+}
+
+int ImpostorSet::bakedMeshes() const {
+    int n = 0;
+    for (const auto& i : meshImpostors_) n += i ? 1 : 0;
+    return n;
+}
+
+}  // namespace strata::lod

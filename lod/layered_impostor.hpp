@@ -1,0 +1,128 @@
+#pragma once
+// A layered impostor of one mesh (Schaufler sections 3-4): RGBz images from view directions on
+// a platonic solid, each with the back-perspective projection of impostor_frame.hpp, baked on
+// the GPU into one RGBA8 2D-array atlas; per (view, peel, slice) the bounding rectangle of the
+// texels the slice accepts (Fig. 6 left) and one vertex buffer of all non-empty slice quads;
+// hole filling by the id-render preprocessing of section 3.3. Per frame, drawFor() picks the
+// ranges to draw (nearest view in full, the hole-closing slices of the two other nearest views)
+// as a StandInDraw that the scene passes draw in the object's place (lod-contract.md).
+//
+// Atlas convention (lod-contract.md): layer = view * peels + peel; rgb = object-space normal *
+// 0.5 + 0.5; a = depth code / 255, code 0 empty, else t = (code - 0.5) / 255 over the slab
+// (t = 0 nearest the apex). The surface kept is the one FARTHEST from the apex (nearest a viewer
+// on the view's side); transparent meshes keep `peels` surfaces per texel, peeling towards the
+// apex, with overlap forced to 0 so that no surface is emitted twice.
+#include "gl/objects.hpp"
+#include "lod/impostor_frame.hpp"
+#include "lod/impostor_memory.hpp"
+#include "render/gpu_scene.hpp"
+#include "render/stand_in.hpp"
+#include "scene/scene.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace strata::lod {
+
+struct ImpostorSettings {
+    int views = 20;          // 12, 20 or 32 (view_directions.hpp)
+    int resolution = 128;    // image side in texels, 1..256 (a rectangle's extents are bytes)
+    int slices = 64;         // L, 1..256
+    float overlap = 0.5f;    // slice widths each slice's depth interval reaches past its own, each side
+    int peels = 1;           // surfaces kept per texel: 1 opaque, 1..4 transparent (overlap then 0)
+    float apexFactor = kDefaultApexFactor;  // D = apexFactor * r, > 1
+    bool holeFilling = true; // run the id-render preprocessing (else drawFor never fills holes)
+
+    // Empty when usable, else why not (one line).
+    std::string validate() const;
+};
+
+// Inclusive texel extents of the texels one slice accepts; x0 > x1 when it accepts none.
+struct SliceRect {
+    std::uint8_t x0 = 1, y0 = 1, x1 = 0, y1 = 0;
+    bool empty() const { return x0 > x1; }
+};
+static_assert(sizeof(SliceRect) == 4, "the paper's 4 bytes per rectangle");
+
+class LayeredImpostor {
+public:
+    // Bakes now on the current GL context: `mesh`'s vertex array (attribute 0 position, 1
+    // normal, indexed triangles) inside `bounds` (object space). A mesh with no triangles, empty
+    // or zero-radius bounds, or invalid settings gives no impostor: valid() false, reason() says
+    // why. Nothing throws for those; a GL failure is reported by the caller's checkGl as usual.
+    LayeredImpostor(const GpuMesh& mesh, const Bounds& bounds, const ImpostorSettings& settings);
+    LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds, const ImpostorSettings& settings);
+    LayeredImpostor(LayeredImpostor&&) noexcept = default;
+    LayeredImpostor& operator=(LayeredImpostor&&) noexcept = default;
+
+    bool valid() const { return reason_.empty(); }
+    const std::string& reason() const { return reason_; }
+    // As used: overlap is 0 when peels > 1.
+    const ImpostorSettings& settings() const { return settings_; }
+
+    // The ranges to draw for an eye at `eyeInObjectSpace`: every non-empty slice of the nearest
+    // view (all its peels) and, with fillHoles, the slices of the two other nearest views that
+    // the preprocessing found closing that view's holes. An eye at the centre uses view 0.
+    // Empty ranges when !valid().
+    StandInDraw drawFor(const glm::vec3& eyeInObjectSpace, bool fillHoles = true) const;
+    // The view error: angle in radians between the direction centre -> eye and the nearest view.
+    float nearestViewAngle(const glm::vec3& eyeInObjectSpace) const;
+    int nearestView(const glm::vec3& eyeInObjectSpace) const;
+
+    // Images and rectangles exactly per the formulas (impostor_memory.hpp), the vertex buffer apart.
+    ImpostorMemory bytes() const;
+    int quadCount() const { return quads_; }
+    double bakeMs() const { return bakeMs_; }
+
+    const std::vector<glm::vec3>& directions() const { return directions_; }
+    const ImpostorFrame& frame(int view) const { return frames_[std::size_t(view)]; }
+    glm::vec3 centre() const { return centre_; }
+    float radius() const { return radius_; }
+    SliceRect rectangle(int view, int peel, int slice) const { return rects_[rangeIndex(view, peel, slice)]; }
+    // Vertex range of one (view, peel, slice): count 0 when the slice is empty.
+    std::pair<GLint, GLsizei> sliceRange(int view, int peel, int slice) const;
+    // The adjacent pairs (V, Vi) the preprocessing ran, and for each the slices of Vi (as
+    // peel * slices + slice) that showed through V's holes (pixels the mesh covers and V's
+    // impostor does not) from the direction halfway between.
+    const std::vector<std::pair<int, int>>& adjacency() const { return adjacency_; }
+    const std::vector<int>& holeSlices(int view, int adjacentView) const;
+    GLuint atlas() const { return atlas_.id(); }
+    GLuint vertexArray() const { return quadArray_.id(); }
+
+private:
+    std::size_t rangeIndex(int view, int peel, int slice) const {
+        return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) * std::size_t(settings_.slices) +
+               std::size_t(slice);
+    }
+    void bakeImages(GLuint meshArray, GLsizei indexCount);
+    void buildRectangles(const std::vector<std::uint8_t>& texels);
+    void buildQuads();
+    void findHoleSlices(GLuint meshArray, GLsizei indexCount);
+
+    ImpostorSettings settings_;
+    std::string reason_;
+    glm::vec3 centre_{0.0f};
+    float radius_ = 0.0f;
+    std::vector<glm::vec3> directions_;
+    std::vector<ImpostorFrame> frames_;
+    gl::Texture atlas_;
+    gl::Buffer quadBuffer_;
+    gl::VertexArray quadArray_;
+    std::vector<SliceRect> rects_;          // per rangeIndex
+    std::vector<GLint> first_;              // per rangeIndex
+    std::vector<GLsizei> count_;            // per rangeIndex, 0 empty
+    std::vector<GLint> viewFirst_;          // per view: all its peels' quads are contiguous
+    std::vector<GLsizei> viewCount_;
+    std::vector<std::pair<int, int>> adjacency_;
+    std::map<std::pair<int, int>, std::vector<int>> holeSlices_;
+    int quads_ = 0;
+    std::uint64_t vertexBytes_ = 0;
+    double bakeMs_ = 0.0;
+};
+
+}  // namespace strata::lod
