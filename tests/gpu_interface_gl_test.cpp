@@ -405,6 +405,9 @@ std::vector<ProgramCase> programCases() {
         {{"debug/error_map.comp.glsl"}, {},
          {{"uImage", tex(BIND_ERROR_IMAGE)}, {"uReference", tex(BIND_ERROR_REFERENCE)},
           {"uFalseColor", image(BIND_RESOLVE_OUTPUT)}, {"ErrorPartials", ssbo(BIND_ERROR_PARTIALS)}}},
+        // lod cost calibration (lod/lod_cost_calibration.cpp)
+        {{scene, "lod/calibrate_mesh.frag.glsl"}, {}, {}},
+        {{"lod/calibrate_slices.vert.glsl", "lod/calibrate_slices.frag.glsl"}, {}, {{"uAtlas", tex(BIND_SOURCE)}}},
     };
 }
 
