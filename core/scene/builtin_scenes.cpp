@@ -327,7 +327,7 @@ Scene makeFieldScene(int count, bool transparentInstances) {
               s.addMaterial(opaque("ground", {0.42f, 0.45f, 0.38f})), glm::mat4(1.0f), "ground");
     // Looking over the field from in front and above: the near rows large, the far rows small.
     const float extent = std::max(2.0f * halfWidth, depth);
-    s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 2.0f + 0.35f * extent}, {0.0f, 0.0f, -0.45f * depth}, 50.0f);
+    s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 3.0f + 0.45f * extent}, {0.0f, 0.0f, -0.4f * depth}, 50.0f);
     return s;
 }
 
