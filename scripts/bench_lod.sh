@@ -6,12 +6,20 @@
 # median GPU frame ms, speedup against geometry, PSNR of the first frame against geometry's,
 # impostor objects and impostor memory (the bench JSON's impostor_objects, impostor_bytes).
 # The issue's aim: >= 5x faster than geometry at PSNR >= 30 dB on field:1000 at 1080p.
+# Then the crossover (Fig. 8): builtin:field:1 (one instance, its bounding sphere 0.592 x the
+# image height across: tests/field_scene_test.cpp) in square images of --crossover-sizes, geometry
+# against impostors (20 views, 128 px) per slice count; the measured on-screen size where the
+# impostor stops being cheaper, next to the cost model's prediction (lod/lod_cost_model.hpp
+# crossoverSizePx for 46080 triangles) when the bench JSON carries the calibrated model as
+# "lod_model": {geometry_fixed_ms, geometry_ms_per_megatriangle, geometry_ms_per_megapixel,
+# impostor_fixed_ms, impostor_ms_per_megapixel}.
 # Each run's JSON and first frame stay in the output folder; the table goes to stdout (markdown).
 #
 # usage: scripts/bench_lod.sh [--out DIR] [--strata PATH] [--count N] [--size WxH] [--frames N]
 #        [--views 12,20,32] [--slices 16,64,256] [--resolutions 64,128,256] [--mode ID]
-#        [--transparent] [--quick]
-#   --quick: field:100 at 640x360, views 20, slices 16,64, resolutions 64,128, 2 frames.
+#        [--transparent] [--crossover-sizes 64,128,256,512,1024] [--quick]
+#   --quick: field:100 at 640x360, views 20, slices 16,64, resolutions 64,128, 2 frames,
+#            crossover sizes 64,128,256.
 # The impostor settings reach strata as --impostor-views, --impostor-slices and
 # --impostor-resolution (change VIEWS_FLAG, SLICES_FLAG, RES_FLAG below if they are named otherwise).
 set -euo pipefail
@@ -24,6 +32,7 @@ frames=3
 views=12,20,32
 slices=16,64,256
 resolutions=64,128,256
+crossover_sizes=64,128,256,512,1024
 mode=blend-sorted  # the transparency technique: the opaque field does not depend on it
 variant=""
 VIEWS_FLAG=--impostor-views
@@ -41,8 +50,10 @@ while [[ $# -gt 0 ]]; do
         --resolutions) resolutions=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
         --transparent) variant=:transparent; shift ;;
-        --quick) count=100; size=640x360; views=20; slices=16,64; resolutions=64,128; frames=2; shift ;;
-        -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+        --crossover-sizes) crossover_sizes=$2; shift 2 ;;
+        --quick) count=100; size=640x360; views=20; slices=16,64; resolutions=64,128; frames=2
+                 crossover_sizes=64,128,256; shift ;;
+        -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
         *) echo "bench_lod.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -56,11 +67,14 @@ export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 scene=builtin:field:$count$variant
 tag=$count${variant:+-transparent}-$size
 
-bench() {  # name, then extra arguments
-    local name=$1; shift
-    echo "bench_lod.sh: $scene at $size: $name" >&2
-    rm -rf "$out/$name"
-    "$strata" bench "$scene" --modes "$mode" --size "$size" --frames "$frames" --warmup 1 \
+bench() {  # name, then extra arguments: the field at --size
+    bench_at "$scene" "$size" "$@"
+}
+bench_at() {  # scene, size, name, then extra arguments
+    local at=$1 wh=$2 name=$3; shift 3
+    echo "bench_lod.sh: $at at $wh: $name" >&2
+    rm -rf "${out:?}/$name"
+    "$strata" bench "$at" --modes "$mode" --size "$wh" --frames "$frames" --warmup 1 \
         --json "$out/$name.json" --images "$out/$name" "$@" >/dev/null
 }
 
@@ -74,10 +88,18 @@ for v in ${views//,/ }; do
     done
 done
 
-python3 - "$out" "$tag" "$mode" "$scene" "$size" "$views" "$slices" "$resolutions" <<'PY'
+for c in ${crossover_sizes//,/ }; do
+    bench_at "builtin:field:1$variant" "${c}x$c" "crossover-geometry-$c" --lod geometry
+    for l in ${slices//,/ }; do
+        bench_at "builtin:field:1$variant" "${c}x$c" "crossover-impostors-$c-l$l" --lod impostors \
+            "$VIEWS_FLAG" 20 "$SLICES_FLAG" "$l" "$RES_FLAG" 128
+    done
+done
+
+python3 - "$out" "$tag" "$mode" "$scene" "$size" "$views" "$slices" "$resolutions" "$crossover_sizes" <<'PY'
 import json, math, os, struct, sys, zlib
 out, tag, mode, scene, size = sys.argv[1:6]
-views, slices, resolutions = (s.split(',') for s in sys.argv[6:9])
+views, slices, resolutions, crossover_sizes = (s.split(',') for s in sys.argv[6:10])
 
 def png(path):
     """8-bit grey/RGB/RGBA, non-interlaced PNG -> (width, height, channels, rows of bytes)."""
@@ -158,4 +180,37 @@ for v in views:
     for l in slices:
         for r in resolutions:
             row(f'impostors-{tag}-v{v}-l{l}-r{r}', 'impostors', v, l, f'{r}x{r}')
+
+# Fig. 8: where the impostor stops being cheaper than the 46080-triangle model.
+FRACTION, TRIANGLES = 0.592, 46080  # field:1's bounding diameter / image height; the mesh
+print(f'\n### Crossover on builtin:field:1 (one {TRIANGLES}-triangle instance; impostors 20 views, 128 px; median GPU frame ms)\n')
+print('| image | object px | geometry ms | ' + ' | '.join(f'L={l} ms' for l in slices) + ' |')
+print('|---:|---:|---:|' + '---:|' * len(slices))
+geometry = {c: load(f'crossover-geometry-{c}')[0] for c in crossover_sizes}
+impostor = {(c, l): load(f'crossover-impostors-{c}-l{l}')[0] for c in crossover_sizes for l in slices}
+for c in crossover_sizes:
+    print(f'| {c}x{c} | {FRACTION * int(c):.0f} | {geometry[c]:.2f} | ' +
+          ' | '.join(f'{impostor[(c, l)]:.2f}' for l in slices) + ' |')
+with open(os.path.join(out, f'crossover-geometry-{crossover_sizes[0]}.json')) as f:
+    model = json.load(f).get('lod_model')
+def predicted(l):
+    if not model:
+        return 'n/a (no lod_model in the bench JSON)'
+    growth = (model['impostor_ms_per_megapixel'] * l - model['geometry_ms_per_megapixel']) * 1e-6
+    margin = model['geometry_fixed_ms'] + model['geometry_ms_per_megatriangle'] * TRIANGLES * 1e-6 - model['impostor_fixed_ms']
+    if growth <= 0:
+        return 'every size' if margin > 0 else 'never'
+    return f'{math.sqrt(margin / growth):.0f} px' if margin > 0 else 'never'
+print('\n| slices | measured crossover (object px) | predicted (cost model) |')
+print('|---:|---:|---:|')
+for l in slices:
+    points = [(FRACTION * int(c), impostor[(c, l)] - geometry[c]) for c in crossover_sizes]
+    measured = 'impostor cheaper at every size' if all(d < 0 for _, d in points) else \
+               'geometry cheaper at every size' if all(d >= 0 for _, d in points) else None
+    if measured is None:  # the first sign change, interpolated linearly
+        for (p0, d0), (p1, d1) in zip(points, points[1:]):
+            if (d0 < 0) != (d1 < 0):
+                measured = f'{p0 + (p1 - p0) * d0 / (d0 - d1):.0f} px'
+                break
+    print(f'| {l} | {measured} | {predicted(int(l))} |')
 PY
