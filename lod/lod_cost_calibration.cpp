@@ -59,8 +59,10 @@ public:
     ~StateGuard() {
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(framebuffer_));
         glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-        glUseProgram(GLuint(program_));
-        glBindVertexArray(GLuint(vertexArray_));
+        // A program or vertex array deleted while bound lived on only while bound: once ours
+        // replaced it, it is gone, and binding its name again would be an error.
+        glUseProgram(glIsProgram(GLuint(program_)) ? GLuint(program_) : 0u);
+        glBindVertexArray(glIsVertexArray(GLuint(vertexArray_)) ? GLuint(vertexArray_) : 0u);
         glDepthFunc(GLenum(depthFunc_));
         glDepthMask(depthMask_);
         glClearDepthf(depthClear_);

@@ -2,6 +2,8 @@
 // coefficients from real timed draws, the geometry cost growing with the triangle count.
 #include "gl_test_support.hpp"
 
+#include "gl/debug.hpp"
+#include "gl/shader_program.hpp"
 #include "lod/lod_cost_model.hpp"
 
 #include <doctest/doctest.h>
@@ -18,7 +20,15 @@ TEST_CASE("lod calibration gl: finite positive coefficients, a 4x mesh costs mor
     glViewport(0, 0, 17, 13);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
+    // A program deleted while current (it lives until unbound): restoring its name afterwards
+    // would be a GL error, so calibration must not.
+    {
+        gl::Program doomed = gl::buildProgram({"common/scene.vert.glsl", "lod/calibrate_mesh.frag.glsl"});
+        glUseProgram(doomed.id());
+    }
+    gl::takeErrors();
     const LodCalibration c = calibrateLodCost();
+    CHECK(gl::takeErrors().empty());
     const LodCostModel& m = c.model;
     MESSAGE("lod calibration on " << c.device << " in " << c.wallMs << " ms: geometry " << m.geometryFixedMs << " ms + "
                                   << m.geometryMsPerMegatriangle << " ms/Mtri + " << m.geometryMsPerMegapixel
