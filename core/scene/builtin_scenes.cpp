@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -89,6 +90,8 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
         {"volumes", "", "intersecting transparent spheres with attenuation and albedo"},
         {"slabs", "N (1..2048, default 8)",
          "N full-view closed slabs of medium (tau, albedo), 0.1 thick: exactly 2N fragments per pixel"},
+        {"field", "N[:transparent] (1..1000, default 100)",
+         "N instances of one dense mesh (46080 triangles) on a grid over an opaque ground: the impostor LOD bench"},
         {"default", "", "the demo room: interpenetrating glass, a decal on a transparent panel, a wireframe over its "
                         "surface, volumes, dense opaque detail behind"},
     };
@@ -293,6 +296,41 @@ Scene makeDefaultScene() {
     return s;
 }
 
+Scene makeFieldScene(int count, bool transparentInstances) {
+    if (count < 1 || count > kFieldMaxInstances)
+        throw std::invalid_argument("field: " + std::to_string(count) + " instances is outside 1.." +
+                                    std::to_string(kFieldMaxInstances));
+    Scene s = emptyScene("field:" + std::to_string(count) + (transparentInstances ? ":transparent" : ""));
+    // One mesh for every instance: the case impostors are for (one bake, many draws).
+    const int blob = s.addMesh(makeBumpyBlob(kFieldMeshSegments));
+    constexpr int kColours = 6;
+    int materials[kColours];
+    for (int k = 0; k < kColours; ++k)
+        materials[k] = s.addMaterial(transparentInstances ? transparent("field" + std::to_string(k), paletteColor(k), 0.5f)
+                                                          : opaque("field" + std::to_string(k), paletteColor(k)));
+    // A grid about as wide as deep, rows going away from the camera (-Z), 3 units apart (the blob
+    // is about 2 x 1.7 x 1.5), centred in x.
+    constexpr float kSpacing = 3.0f;
+    const int columns = int(std::ceil(std::sqrt(double(count))));
+    const int rows = (count + columns - 1) / columns;
+    for (int i = 0; i < count; ++i) {
+        const int row = i / columns, column = i % columns;
+        const glm::vec3 at((float(column) - 0.5f * float(columns - 1)) * kSpacing, 1.0f, -float(row) * kSpacing);
+        // Varied orientation: golden-angle turns about the vertical, a tilt of -20..+20 degrees.
+        glm::mat4 world = glm::translate(glm::mat4(1.0f), at);
+        world = glm::rotate(world, glm::radians(137.508f * float(i)), glm::vec3(0, 1, 0));
+        world = glm::rotate(world, glm::radians(float((i * 53) % 41) - 20.0f), glm::vec3(1, 0, 0));
+        placeMesh(s, blob, materials[i % kColours], world, "instance " + std::to_string(i));
+    }
+    const float halfWidth = 0.5f * float(columns) * kSpacing + 2.0f, depth = float(rows) * kSpacing;
+    placeMesh(s, s.addMesh(makeBox({-halfWidth, -0.1f, -depth - 2.0f}, {halfWidth, 0.0f, 0.5f * kSpacing + 2.0f})),
+              s.addMaterial(opaque("ground", {0.42f, 0.45f, 0.38f})), glm::mat4(1.0f), "ground");
+    // Looking over the field from in front and above: the near rows large, the far rows small.
+    const float extent = std::max(2.0f * halfWidth, depth);
+    s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 3.0f + 0.45f * extent}, {0.0f, 0.0f, -0.4f * depth}, 50.0f);
+    return s;
+}
+
 namespace {
 
 Scene makeBuiltinSceneWithoutOptions(const std::string& spec);
@@ -334,6 +372,13 @@ Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
     }
     if (name == "volumes" && arg.empty()) return makeVolumesScene();
     if (name == "slabs") return makeSlabsScene(parseCount(spec, arg, 8, 1, 2048));
+    if (name == "field") {
+        auto second = arg.find(':');
+        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
+        if (second != std::string::npos && option != "transparent")
+            throw std::invalid_argument("builtin:" + spec + ": the only option of field is 'transparent'");
+        return makeFieldScene(parseCount(spec, arg.substr(0, second), 100, 1, kFieldMaxInstances), option == "transparent");
+    }
     if (name == "default" && arg.empty()) return makeDefaultScene();
     std::string known;
     for (const auto& b : builtinScenes()) known += (known.empty() ? "" : ", ") + b.name;

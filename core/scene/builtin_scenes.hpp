@@ -13,6 +13,11 @@
 //                        pixel): the volumetric paper's Tables 1-2 setup
 //   builtin:NAME[:ARG]:wireframe  any of them with a translucent wireframe over its transparent
 //                        surfaces, coplanar with them (scene/wireframe.hpp, the paper's Fig. 12)
+//   builtin:field:N[:transparent]  N instances (1..1000, default 100) of one dense procedural
+//                        mesh (makeBumpyBlob, kFieldMeshTriangles triangles) on a grid with
+//                        varied rotations, on an opaque ground, the camera looking over the
+//                        field: the layered-impostor LOD bench (issue 11). Opaque instances, or
+//                        with transparent alpha 0.5
 //   builtin:default      the demo: interpenetrating glass, a decal coplanar with a transparent
 //                        panel, a translucent wireframe over its own surface, two intersecting
 //                        volumes, dense opaque detail behind (a relief of blocks), a row of models
@@ -42,6 +47,13 @@ Scene makeCubesScene(bool separated);
 Scene makeVolumesScene();
 Scene makeSlabsScene(int slabs);
 Scene makeDefaultScene();
+// The field: `count` instances (1..1000) sharing mesh 0 (objects in grid order, nearest row
+// first), then the ground (mesh 1) as the last object.
+Scene makeFieldScene(int count, bool transparentInstances);
+// The field's mesh: makeBumpyBlob(kFieldMeshSegments), 20 * 48^2 triangles.
+inline constexpr int kFieldMeshSegments = 48;
+inline constexpr int kFieldMeshTriangles = 20 * kFieldMeshSegments * kFieldMeshSegments;  // 46080
+inline constexpr int kFieldMaxInstances = 1000;
 
 // A distinct, saturated colour for index i (golden-angle hue steps).
 glm::vec3 paletteColor(int i);

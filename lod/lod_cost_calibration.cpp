@@ -1,0 +1,360 @@
+// calibrateLodCost (lod/lod_cost_model.hpp): the two curves of Fig. 8 measured on the current
+// device at start-up, in the style of core/frame/zoom_calibration.cpp (a few timed draws, least
+// squares, slopes kept non-negative).
+#include "lod/lod_cost_model.hpp"
+
+#include "camera/camera.hpp"
+#include "common/bindings.h"
+#include "gl/debug.hpp"
+#include "gl/gpu_timer.hpp"
+#include "gl/objects.hpp"
+#include "gl/shader_program.hpp"
+#include "render/scene_program.hpp"
+#include "scene/mesh_builders.hpp"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace strata::lod {
+namespace {
+
+// Geometry cases (blob edge segments -> 20 n^2 triangles, viewport side): two dense meshes a 4x
+// step apart (5120 and 20480 triangles) and a coarse one (80) at a tiny viewport, where vertices
+// dominate, give the fixed and per-triangle costs; the coarse one again at the largest viewport
+// gives the per-pixel cost by difference (its vertex work is the same and negligible). One fit
+// of all three from the four points would let the dense draws' noise (milliseconds on a busy
+// CPU) swamp the per-pixel part (hundredths of a millisecond).
+struct GeometryCase {
+    int segments, viewport;
+};
+constexpr GeometryCase kGeometryCases[4] = {{2, 8}, {16, 8}, {32, 8}, {2, 192}};
+// Slice stacks: two slice counts at two viewport sides (layer pixels L * side^2: 32k..1.2M).
+constexpr int kSliceCounts[2] = {8, 32};
+constexpr int kSliceViewports[2] = {64, 192};
+constexpr int kAtlasSize = 64;
+constexpr int kDrawsPerPass = 2;  // draws per timed pass: the time of one is their mean
+constexpr int kTimedPasses = 3;   // the fastest pass counts
+constexpr int kTargetSize = 192;  // the framebuffer: the largest viewport
+
+// The GL state calibration changes, put back as it was.
+class StateGuard {
+public:
+    StateGuard() {
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
+        glGetIntegerv(GL_VIEWPORT, viewport_);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
+        glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
+        glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+        glGetFloatv(GL_DEPTH_CLEAR_VALUE, &depthClear_);
+        depthTest_ = glIsEnabled(GL_DEPTH_TEST);
+        blend_ = glIsEnabled(GL_BLEND);
+        cull_ = glIsEnabled(GL_CULL_FACE);
+    }
+    ~StateGuard() {
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(framebuffer_));
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+        // A program or vertex array deleted while bound lived on only while bound: once ours
+        // replaced it, it is gone, and binding its name again would be an error.
+        glUseProgram(glIsProgram(GLuint(program_)) ? GLuint(program_) : 0u);
+        glBindVertexArray(glIsVertexArray(GLuint(vertexArray_)) ? GLuint(vertexArray_) : 0u);
+        glDepthFunc(GLenum(depthFunc_));
+        glDepthMask(depthMask_);
+        glClearDepthf(depthClear_);
+        set(GL_DEPTH_TEST, depthTest_);
+        set(GL_BLEND, blend_);
+        set(GL_CULL_FACE, cull_);
+    }
+    StateGuard(const StateGuard&) = delete;
+    StateGuard& operator=(const StateGuard&) = delete;
+
+private:
+    static void set(GLenum cap, GLboolean on) { on ? glEnable(cap) : glDisable(cap); }
+    GLint framebuffer_ = 0, viewport_[4] = {}, program_ = 0, vertexArray_ = 0, depthFunc_ = GL_LESS;
+    GLboolean depthMask_ = GL_TRUE, depthTest_ = GL_FALSE, blend_ = GL_FALSE, cull_ = GL_FALSE;
+    GLfloat depthClear_ = 1.0f;
+};
+
+struct GpuMesh {
+    gl::Buffer vertices, indices;
+    gl::VertexArray vertexArray;
+    GLsizei indexCount = 0;
+};
+
+// Interleaved position + normal, attributes 0 and 1: the layout of render/gpu_scene.cpp.
+GpuMesh upload(const Mesh& mesh) {
+    GpuMesh g;
+    std::vector<float> interleaved;
+    interleaved.reserve(mesh.positions.size() * 6);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::vec3 p = mesh.positions[i], n = mesh.normals[i];
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    }
+    g.vertices = gl::Buffer::create();
+    g.indices = gl::Buffer::create();
+    glNamedBufferStorage(g.vertices.id(), GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), 0);
+    glNamedBufferStorage(g.indices.id(), GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(), 0);
+    g.vertexArray = gl::VertexArray::create();
+    const GLuint vao = g.vertexArray.id();
+    glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 6 * sizeof(float));
+    glVertexArrayElementBuffer(vao, g.indices.id());
+    glEnableVertexArrayAttrib(vao, 0);
+    glEnableVertexArrayAttrib(vao, 1);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    glVertexArrayAttribBinding(vao, 1, 0);
+    g.indexCount = GLsizei(mesh.indices.size());
+    return g;
+}
+
+// A stack of `slices` viewport-filling quads (two triangles each), nearest first, with the
+// impostor vertex layout: attribute 0 position (clip space), attribute 2 (u, v, layer, slice).
+struct GpuSlices {
+    gl::Buffer vertices;
+    gl::VertexArray vertexArray;
+    GLsizei vertexCount = 0;
+};
+
+GpuSlices makeSlices(int slices) {
+    std::vector<float> data;
+    const float corners[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+    for (int s = 0; s < slices; ++s) {
+        // Reversed-Z window depth: nearer is larger; the stack spans (0.2, 0.8).
+        const float depth = 0.8f - 0.6f * (float(s) + 0.5f) / float(slices);
+        for (const auto& c : corners)
+            data.insert(data.end(), {c[0] * 2.0f - 1.0f, c[1] * 2.0f - 1.0f, depth, c[0], c[1], 0.0f, float(s)});
+    }
+    GpuSlices g;
+    g.vertices = gl::Buffer::create();
+    glNamedBufferStorage(g.vertices.id(), GLsizeiptr(data.size() * sizeof(float)), data.data(), 0);
+    g.vertexArray = gl::VertexArray::create();
+    const GLuint vao = g.vertexArray.id();
+    glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 7 * sizeof(float));
+    glEnableVertexArrayAttrib(vao, 0);
+    glEnableVertexArrayAttrib(vao, 2);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    glVertexArrayAttribBinding(vao, 2, 0);
+    g.vertexCount = GLsizei(slices * 6);
+    return g;
+}
+
+// An impostor-like atlas layer: a disc of surface texels (normal in rgb, depth code 1..255 in
+// alpha, scattered so every slice keeps its share) in empty texels (code 0: discarded).
+gl::Texture makeAtlas() {
+    gl::Texture atlas = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(atlas.id(), 1, GL_RGBA8, kAtlasSize, kAtlasSize, 1);
+    glTextureParameteri(atlas.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(atlas.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    std::vector<std::uint8_t> texels(std::size_t(kAtlasSize * kAtlasSize * 4), 0);
+    const float centre = 0.5f * float(kAtlasSize), radius = 0.45f * float(kAtlasSize);
+    for (int y = 0; y < kAtlasSize; ++y)
+        for (int x = 0; x < kAtlasSize; ++x) {
+            const glm::vec2 d = (glm::vec2(float(x), float(y)) + 0.5f - centre) / radius;
+            if (glm::dot(d, d) > 1.0f) continue;
+            const glm::vec3 n(d, std::sqrt(std::max(0.0f, 1.0f - glm::dot(d, d))));
+            std::uint8_t* t = &texels[std::size_t((y * kAtlasSize + x) * 4)];
+            t[0] = std::uint8_t(std::lround((n.x * 0.5f + 0.5f) * 255.0f));
+            t[1] = std::uint8_t(std::lround((n.y * 0.5f + 0.5f) * 255.0f));
+            t[2] = std::uint8_t(std::lround((n.z * 0.5f + 0.5f) * 255.0f));
+            t[3] = std::uint8_t(1 + (std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u) % 255u);
+        }
+    glTextureSubImage3D(atlas.id(), 0, 0, 0, 0, kAtlasSize, kAtlasSize, 1, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    return atlas;
+}
+
+// The fastest of kTimedPasses passes of kDrawsPerPass draws, per draw, after one warm-up draw.
+template <class Clear, class Draw>
+double timeDraws(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
+    clear();
+    draw();
+    double best = 1e300;
+    for (int pass = 0; pass < kTimedPasses; ++pass) {
+        clear();
+        timer.begin("lod calibration");
+        for (int i = 0; i < kDrawsPerPass; ++i) draw();
+        timer.end();
+        const auto times = timer.resolve();
+        best = std::min(best, times.front().gpuMs / double(kDrawsPerPass));
+    }
+    return best;
+}
+
+// Least squares for ms = c0 + c1 x1 + c2 x2 (x in millions) through the normal equations; a
+// term left out gets a unit diagonal so the system stays solvable and its slope is 0.
+glm::dvec3 fit(const std::vector<glm::dvec3>& x, const std::vector<double>& ms, bool use1, bool use2) {
+    glm::dmat3 a(0.0);
+    glm::dvec3 b(0.0);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const glm::dvec3 row(1.0, use1 ? x[i].y : 0.0, use2 ? x[i].z : 0.0);
+        a += glm::outerProduct(row, row);
+        b += row * ms[i];
+    }
+    if (!use1) a[1][1] = 1.0;
+    if (!use2) a[2][2] = 1.0;
+    return glm::inverse(a) * b;
+}
+
+// The full fit; a negative slope (noise, or a cost that does not grow) is dropped and the rest refit.
+glm::dvec3 fitNonNegative(const std::vector<glm::dvec3>& x, const std::vector<double>& ms, bool use2) {
+    glm::dvec3 c = fit(x, ms, true, use2);
+    if (c.y < 0.0 || c.z < 0.0) c = fit(x, ms, c.y >= 0.0, use2 && c.z >= 0.0);
+    return glm::max(c, glm::dvec3(0.0));
+}
+
+double rms(const std::vector<double>& residuals) {
+    double sum = 0.0;
+    for (double r : residuals) sum += r * r;
+    return residuals.empty() ? 0.0 : std::sqrt(sum / double(residuals.size()));
+}
+
+}  // namespace
+
+LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& progress) {
+    const auto started = std::chrono::steady_clock::now();
+    LodCalibration calibration;
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    calibration.device = renderer ? renderer : "";
+    StateGuard restore;
+
+    gl::Texture color = gl::createTexture2D(GL_RGBA8, kTargetSize, kTargetSize);
+    gl::Texture depth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, kTargetSize, kTargetSize);
+    gl::Framebuffer framebuffer = gl::Framebuffer::create();
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
+    glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer.id());
+    // Reversed-Z as every scene pass (camera/camera.hpp): cleared to 0, nearer is greater.
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glClearDepthf(0.0f);
+    glDisable(GL_BLEND);
+    gl::GpuTimer timer;
+    // Cleared before each timed pass, outside the timer; within a pass every draw passes the
+    // depth test again (GEQUAL on equal depths), so each draw pays its whole fragment work.
+    glDepthFunc(GL_GEQUAL);
+    auto clear = [&](int side) {
+        glViewport(0, 0, side, side);
+        const GLfloat black[4] = {0, 0, 0, 1}, far = 0.0f;
+        glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, black);
+        glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
+    };
+
+    // ---- geometry: ms = fixed + per triangle + per covered pixel ----
+    {
+        gl::Program program =
+            gl::buildProgram({"common/scene.vert.glsl", "lod/calibrate_mesh.frag.glsl"}, {}, sceneFragmentWrap());
+        glUseProgram(program.id());
+        // The blob (radius about 1) fills the square view from 2.6 away at 50 degrees.
+        Camera camera;
+        camera.fovYDegrees = 50.0f;
+        camera.nearPlane = 0.5f;
+        camera.farPlane = 10.0f;
+        camera.lookAt({0.3f, 0.4f, 2.55f}, {0.0f, 0.0f, 0.0f});
+        const glm::mat4 viewProjection = camera.projection(1.0f) * camera.view();
+        const glm::mat4 model(1.0f);
+        const glm::mat3 normalMatrix(1.0f);
+        glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "uViewProj"), 1, GL_FALSE, &viewProjection[0][0]);
+        glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "uModel"), 1, GL_FALSE, &model[0][0]);
+        glProgramUniformMatrix3fv(program.id(), glGetUniformLocation(program.id(), "uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+        glDisable(GL_CULL_FACE);  // as the frame's opaque pass draws: both faces rasterised
+        gl::Query samples = gl::createQuery(GL_SAMPLES_PASSED);
+        std::vector<LodCalibrationPoint> points;
+        for (const GeometryCase& g : kGeometryCases) {
+            const Mesh mesh = makeBumpyBlob(g.segments);
+            GpuMesh gpu = upload(mesh);
+            glBindVertexArray(gpu.vertexArray.id());
+            const int side = g.viewport;
+            if (progress)
+                progress("lod calibration: " + std::to_string(mesh.triangleCount()) + " triangles at " +
+                         std::to_string(side) + "x" + std::to_string(side));
+            auto draw = [&] { glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr); };
+            clear(side);
+            glBeginQuery(GL_SAMPLES_PASSED, samples.id());
+            draw();
+            glEndQuery(GL_SAMPLES_PASSED);
+            GLuint64 passed = 0;
+            glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
+            LodCalibrationPoint p;
+            p.kind = LodCalibrationPoint::Kind::Geometry;
+            p.triangles = double(mesh.triangleCount());
+            p.pixels = double(passed);
+            p.viewport = side;
+            p.ms = timeDraws(timer, [&] { clear(side); }, draw);
+            points.push_back(p);
+        }
+        glDisable(GL_CULL_FACE);
+        // Per pixel: the coarse mesh large minus small. Then fixed + per triangle by least squares
+        // over the tiny-viewport points, their (few) pixels' cost taken off.
+        const LodCalibrationPoint &coarse = points[0], &large = points[3];
+        const double perMegapixel = large.pixels > coarse.pixels
+                                        ? std::max(0.0, (large.ms - coarse.ms) / ((large.pixels - coarse.pixels) * 1e-6))
+                                        : 0.0;
+        std::vector<glm::dvec3> x;
+        std::vector<double> ms;
+        for (std::size_t i = 0; i < 3; ++i) {
+            x.emplace_back(1.0, points[i].triangles * 1e-6, 0.0);
+            ms.push_back(points[i].ms - perMegapixel * points[i].pixels * 1e-6);
+        }
+        const glm::dvec3 c = fitNonNegative(x, ms, false);
+        calibration.model.geometryFixedMs = c.x;
+        calibration.model.geometryMsPerMegatriangle = c.y;
+        calibration.model.geometryMsPerMegapixel = perMegapixel;
+        std::vector<double> residuals;
+        for (const auto& p : points) residuals.push_back(calibration.model.geometryMs(p.triangles, p.pixels) - p.ms);
+        calibration.geometryRmsResidualMs = rms(residuals);
+        calibration.points.insert(calibration.points.end(), points.begin(), points.end());
+        gl::checkGl("lod calibration: geometry");
+    }
+
+    // ---- impostor: ms = fixed + per layer pixel ----
+    {
+        gl::Program program = gl::buildProgram({"lod/calibrate_slices.vert.glsl", "lod/calibrate_slices.frag.glsl"});
+        glUseProgram(program.id());
+        gl::Texture atlas = makeAtlas();
+        glBindTextureUnit(gpu::BIND_SOURCE, atlas.id());
+        const GLint slicesAt = glGetUniformLocation(program.id(), "uSlices");
+        std::vector<glm::dvec3> x;
+        std::vector<double> ms;
+        std::vector<double> residuals;
+        for (int slices : kSliceCounts) {
+            GpuSlices stack = makeSlices(slices);
+            glBindVertexArray(stack.vertexArray.id());
+            glProgramUniform1i(program.id(), slicesAt, slices);
+            for (int side : kSliceViewports) {
+                if (progress)
+                    progress("lod calibration: " + std::to_string(slices) + " slices at " + std::to_string(side) + "x" +
+                             std::to_string(side));
+                auto draw = [&] { glDrawArrays(GL_TRIANGLES, 0, stack.vertexCount); };
+                LodCalibrationPoint p;
+                p.kind = LodCalibrationPoint::Kind::Impostor;
+                p.slices = slices;
+                p.viewport = side;
+                p.pixels = impostorLayerPixels(double(side), slices);
+                p.ms = timeDraws(timer, [&] { clear(side); }, draw);
+                calibration.points.push_back(p);
+                x.emplace_back(1.0, p.pixels * 1e-6, 0.0);
+                ms.push_back(p.ms);
+            }
+        }
+        glBindTextureUnit(gpu::BIND_SOURCE, 0);
+        const glm::dvec3 c = fitNonNegative(x, ms, false);
+        calibration.model.impostorFixedMs = c.x;
+        calibration.model.impostorMsPerMegapixel = c.y;
+        for (const auto& p : calibration.points)
+            if (p.kind == LodCalibrationPoint::Kind::Impostor) residuals.push_back(calibration.model.impostorMs(p.pixels) - p.ms);
+        calibration.impostorRmsResidualMs = rms(residuals);
+        gl::checkGl("lod calibration: impostor");
+    }
+    calibration.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    return calibration;
+}
+
+}  // namespace strata::lod

@@ -1,0 +1,81 @@
+#pragma once
+// Predicted GPU time of one object drawn as geometry or as a layered impostor, on one device:
+// the two curves of Schauffler's Fig. 8 (layered-impostors.md section 4). Geometry is
+// vertex-bound (a dense model's triangles are smaller than a pixel, so its time grows with the
+// triangle count and hardly with its screen size); an impostor is fill-bound (a stack of L
+// textured, alpha-tested slice quads: its time grows with the screen area of the slices summed
+// over the slices drawn, the "layer pixels", and not with the model's triangles). The
+// crossover between the two is the paper's dashed lines.
+//
+// Times are per draw of one object, in milliseconds; counts in millions keep the coefficients
+// readable (ms per million triangles, ms per million pixels).
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace strata::lod {
+
+struct LodCostModel {
+    // Geometry: fixed + per triangle (vertex and triangle setup) + per covered pixel (shading
+    // the fragments the model leaves on screen; small for a dense model).
+    double geometryFixedMs = 0.0;
+    double geometryMsPerMegatriangle = 0.0;
+    double geometryMsPerMegapixel = 0.0;
+    // Impostor: fixed + per layer pixel (each slice quad's screen area, summed over the slices
+    // drawn: every such pixel is a texture fetch and an alpha test, kept or discarded).
+    double impostorFixedMs = 0.0;
+    double impostorMsPerMegapixel = 0.0;
+
+    double geometryMs(double triangles, double coveredPixels) const;
+    double impostorMs(double layerPixels) const;
+};
+
+// The layer pixels of an impostor of `slices` slices whose every slice fills a square of
+// `sizePx` x `sizePx` pixels (the paper's measurement: a viewport-filling layered impostor),
+// times `drawnFraction` (in (0, 1]: what the per-slice bounding rectangles leave of it, Fig. 6).
+double impostorLayerPixels(double sizePx, int slices, double drawnFraction = 1.0);
+
+// Fig. 8's crossover, for an object on screen as a square of `sizePx` x `sizePx` pixels drawn
+// as an impostor of `slices` full slices or as a model covering the same square:
+// the triangle count above which the impostor is cheaper. 0 when the impostor is cheaper
+// whatever the model (its cost is below the geometry's fixed part); +infinity when the model's
+// triangles cost nothing on this device (no count makes the impostor cheaper).
+double crossoverTriangles(const LodCostModel& model, double sizePx, int slices);
+
+// The inverse: the largest on-screen size (pixels, side of the square) at which an impostor of
+// `slices` slices is cheaper than a model of `triangles` triangles. 0 when it is never cheaper;
+// +infinity when it is cheaper at every size (its per-pixel cost does not exceed the model's).
+double crossoverSizePx(const LodCostModel& model, double triangles, int slices);
+
+// ---- calibration on the current GL device ----
+
+struct LodCalibrationPoint {
+    enum class Kind { Geometry, Impostor } kind = Kind::Geometry;
+    double triangles = 0.0;    // geometry: the mesh's triangles
+    double pixels = 0.0;       // geometry: covered pixels (samples passed); impostor: layer pixels
+    int slices = 0;            // impostor: quads in the stack
+    int viewport = 0;          // side of the square viewport, pixels
+    double ms = 0.0;           // GPU time of one draw (fastest of the timed repetitions)
+};
+
+struct LodCalibration {
+    LodCostModel model;
+    std::vector<LodCalibrationPoint> points;
+    double geometryRmsResidualMs = 0.0;  // of each fit over its own points
+    double impostorRmsResidualMs = 0.0;
+    double wallMs = 0.0;                 // CPU wall time the calibration took
+    std::string device;                  // GL_RENDERER
+};
+
+// Measures the model on the current GL context (one must be current) in well under a second on
+// llvmpipe, into its own small framebuffer (the caller's framebuffer binding, viewport and
+// depth/blend/cull state are restored). Geometry: a dense procedural mesh (makeBumpyBlob) at two
+// triangle counts (a 4x step), each at a tiny and a small viewport, covered pixels counted by a
+// samples-passed query; impostor: a stack of alpha-tested textured quads
+// (shaders/lod/calibrate_slices.*, the impostor alpha test's work per pixel) with two slice
+// counts at two viewport areas. Each point: one warm-up draw, the fastest of three timed
+// (gl::GpuTimer), each timed pass several draws averaged. Least squares per curve, slopes
+// kept non-negative (a negative slope, from noise, is dropped and the rest refit).
+LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace strata::lod

@@ -1,0 +1,122 @@
+#pragma once
+// The per-object LOD decision (issue 11, "LOD in the scene graph"): geometry or layered
+// impostor for each object this frame, from the cost model calibrated on this device
+// (lod/lod_cost_model.hpp) under a screen-space error bound (lod/lod_error.hpp). Pure: no GL,
+// no scene graph; the caller fills one LodObjectInput per object and reads one LodDecision back.
+//
+// Rules, in order (the first that applies decides):
+//  1. an object with no triangles: geometry (nothing to replace);
+//  2. the eye inside the bounding sphere, or closer than kTooCloseRadii radii to its centre:
+//     geometry, in every mode. The impostor is baked for viewers outside the sphere: inside it
+//     there is no image of what surrounds the eye, and near it the object spans more than 60
+//     degrees of view (half-angle asin(1/2)), its slices are seen at grazing angles and tear,
+//     and the parallax error r/L sin a is a large part of the screen;
+//  3. mode Geometry: geometry (forced);
+//  4. no impostor baked for the object: geometry;
+//  5. mode Impostors: impostor (forced, whatever its error or cost);
+//  6. mode Auto: error above maxErrorPx: geometry; else the cheaper of the two predictions
+//     (ties go to geometry: exact for the same cost).
+#include "lod/lod_cost_model.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace strata {
+struct Camera;
+}
+
+namespace strata::lod {
+
+enum class LodMode { Geometry, Impostors, Auto };
+
+// "geometry", "impostors", "auto"; anything else throws std::invalid_argument:
+//   lod mode 'X' is not one of geometry|impostors|auto
+LodMode parseLodMode(std::string_view text);
+const char* to_string(LodMode mode);
+
+// The distance, in bounding radii, under which an object is "too close" for its impostor.
+inline constexpr double kTooCloseRadii = 2.0;
+// The classic engines' switch: an impostor is acceptable while its error stays under ~4 px.
+inline constexpr double kDefaultMaxErrorPx = 4.0;
+
+// What selection needs to know of an object's impostor this frame.
+struct ImpostorSummary {
+    int id = -1;                   // which impostor (instances of one mesh share one); -1: its own
+    int slices = 1;                // L
+    int resolution = 64;           // texels a side of each view's image
+    double viewAngleRadians = 0.0; // from the eye direction to the nearest baked view
+    std::uint64_t bytes = 0;       // its memory (Table 2's formula + rectangles)
+    double drawnFraction = 1.0;    // of the full slice squares actually drawn (per-slice rectangles)
+};
+
+struct LodObjectInput {
+    glm::vec3 center{0.0f};        // world bounding sphere
+    float radius = 0.0f;
+    std::uint64_t triangles = 0;
+    bool hasImpostor = false;
+    ImpostorSummary impostor;
+};
+
+struct LodView {
+    glm::vec3 eye{0.0f};
+    double fovYRadians = 0.8726646259971648;  // 50 degrees
+    glm::ivec2 imageSize{1, 1};
+};
+LodView lodView(const Camera& camera, glm::ivec2 imageSize);
+
+struct LodSelectOptions {
+    LodMode mode = LodMode::Auto;
+    double maxErrorPx = kDefaultMaxErrorPx;
+};
+
+enum class LodReason {
+    NoTriangles,      // geometry: nothing to replace
+    EyeInside,        // geometry: the eye is inside the bounding sphere
+    TooClose,         // geometry: the eye is within kTooCloseRadii radii of the centre
+    GeometryForced,   // geometry: mode geometry
+    NoImpostor,       // geometry: none baked for this object
+    ImpostorsForced,  // impostor: mode impostors
+    ErrorAboveBound,  // geometry: the impostor's error exceeds maxErrorPx
+    GeometryCheaper,  // geometry: predicted no slower than the impostor
+    ImpostorCheaper,  // impostor: predicted faster, error within the bound
+};
+const char* to_string(LodReason reason);
+
+struct LodDecision {
+    bool impostor = false;
+    LodReason reason = LodReason::GeometryForced;
+    double distance = 0.0;       // eye to the bounding sphere's centre
+    double projectedPx = 0.0;    // projected diameter of the bounding sphere (infinite inside)
+    // Predictions: geometry covers the sphere's disc (pi/4 d^2 pixels), each impostor slice the
+    // square d x d (times drawnFraction), both clipped to the image's area.
+    double geometryMs = 0.0;     // predicted for every object
+    double impostorMs = 0.0;     // predicted when it has an impostor and the eye is outside 2 r
+    double errorPx = 0.0;        // the impostor's error bound (0 without an impostor)
+    double parallaxPx = 0.0, samplingPx = 0.0;
+};
+
+// One line saying why, e.g. "too close: distance 1.50 < 2 x radius 1.00" or
+// "impostor cheaper: 0.120 ms < geometry 0.800 ms, error 2.1 px <= 4 px".
+std::string explain(const LodDecision& decision, const LodObjectInput& object, const LodSelectOptions& options);
+
+struct LodSelection {
+    std::vector<LodDecision> objects;     // one per input, same order
+    int impostorObjects = 0;              // objects drawn as impostors
+    int impostorsUsed = 0;                // distinct impostors among them (by id; -1 counts each)
+    std::uint64_t impostorBytes = 0;      // memory of the impostors used, each shared one once
+    double predictedMs = 0.0;             // sum of the chosen predictions
+    double geometryOnlyMs = 0.0;          // sum of the geometry predictions (all geometry)
+};
+
+LodSelection selectLod(const std::vector<LodObjectInput>& objects, const LodView& view, const LodCostModel& model,
+                       const LodSelectOptions& options = {});
+
+// One object's decision (what selectLod does per object).
+LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, const LodCostModel& model,
+                         const LodSelectOptions& options = {});
+
+}  // namespace strata::lod

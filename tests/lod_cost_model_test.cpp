@@ -1,0 +1,75 @@
+// The LOD cost model's arithmetic (lod/lod_cost_model.hpp) with a synthetic device whose
+// coefficients are round numbers, so every prediction and crossover is known exactly.
+#include "lod/lod_cost_model.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace strata::lod;
+
+namespace {
+
+// 10 ms per million triangles (100 M triangles/s), 0.5 ms per million covered pixels, 0.05 ms a
+// draw; impostors 2 ms per million layer pixels (500 M/s), 0.02 ms a draw.
+LodCostModel synthetic() {
+    LodCostModel m;
+    m.geometryFixedMs = 0.05;
+    m.geometryMsPerMegatriangle = 10.0;
+    m.geometryMsPerMegapixel = 0.5;
+    m.impostorFixedMs = 0.02;
+    m.impostorMsPerMegapixel = 2.0;
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("lod cost: predictions are fixed + slope x count") {
+    const LodCostModel m = synthetic();
+    CHECK(m.geometryMs(0.0, 0.0) == doctest::Approx(0.05));
+    CHECK(m.geometryMs(100000.0, 0.0) == doctest::Approx(1.05));
+    CHECK(m.geometryMs(100000.0, 1e6) == doctest::Approx(1.55));
+    CHECK(m.impostorMs(0.0) == doctest::Approx(0.02));
+    CHECK(m.impostorMs(160000.0) == doctest::Approx(0.34));
+    // 16 slices each filling 100 x 100 pixels; a quarter of it left by the bounding rectangles.
+    CHECK(impostorLayerPixels(100.0, 16) == doctest::Approx(160000.0));
+    CHECK(impostorLayerPixels(100.0, 16, 0.25) == doctest::Approx(40000.0));
+    CHECK(impostorLayerPixels(100.0, 256) == doctest::Approx(2560000.0));
+    CHECK(impostorLayerPixels(100.0, 1) == doctest::Approx(10000.0));
+}
+
+TEST_CASE("lod cost: the crossover triangle count and size are each other's inverse (Fig. 8)") {
+    const LodCostModel m = synthetic();
+    // 100 px, 16 slices: impostor 0.02 + 2 x 0.16 = 0.34 ms; geometry without triangles
+    // 0.05 + 0.5 x 0.01 = 0.055 ms; T = (0.34 - 0.055) / 10 ms per million = 28500.
+    CHECK(crossoverTriangles(m, 100.0, 16) == doctest::Approx(28500.0));
+    // And back: (2 x 16 - 0.5) s^2 1e-6 = 0.05 + 0.285 - 0.02 = 0.315  ->  s = 100.
+    CHECK(crossoverSizePx(m, 28500.0, 16) == doctest::Approx(100.0));
+    // More slices: the impostor costs more per pixel, so it needs a denser model at one size
+    // and wins over a smaller area for one model.
+    CHECK(crossoverTriangles(m, 100.0, 64) > crossoverTriangles(m, 100.0, 16));
+    CHECK(crossoverSizePx(m, 28500.0, 64) < 100.0);
+    // Larger on screen: a denser model is needed.
+    CHECK(crossoverTriangles(m, 200.0, 16) > crossoverTriangles(m, 100.0, 16));
+    // 256 slices at 10 px: 0.02 + 2 x 0.0256 = 0.0712 ms vs 0.05 + 0.5 x 1e-4 = 0.05005 ms.
+    CHECK(crossoverTriangles(m, 10.0, 256) == doctest::Approx((0.0712 - 0.05005) / 10.0 * 1e6));
+}
+
+TEST_CASE("lod cost: crossover limits: always, never, free triangles") {
+    LodCostModel m = synthetic();
+    // An impostor below the geometry's fixed cost at that size is cheaper whatever the model.
+    m.impostorFixedMs = 0.0;
+    m.impostorMsPerMegapixel = 0.0;
+    CHECK(crossoverTriangles(m, 100.0, 16) == 0.0);
+    // Its cost does not grow with size: it wins at every size once it wins at all.
+    CHECK(std::isinf(crossoverSizePx(m, 1000.0, 16)));
+    // Triangles free: no triangle count makes a costlier impostor cheaper.
+    m = synthetic();
+    m.geometryMsPerMegatriangle = 0.0;
+    CHECK(std::isinf(crossoverTriangles(m, 100.0, 16)));
+    // A model with no triangles costs 0.05 ms; an impostor with a 0.1 ms fixed cost never wins.
+    m = synthetic();
+    m.impostorFixedMs = 0.1;
+    CHECK(crossoverSizePx(m, 0.0, 16) == 0.0);
+}
