@@ -1,5 +1,6 @@
 #include "lod/layered_impostor.hpp"
 
+#include "gl/saved_state.hpp"
 #include "gl/shader_program.hpp"
 #include "lod/view_directions.hpp"
 
@@ -22,32 +23,6 @@ constexpr int kVerticesPerQuad = 6;  // two triangles, glMultiDrawArrays(GL_TRIA
 // Slice acceptance is decided in float on the GPU; the CPU's rectangles count a texel for every
 // slice within this much (in slice units) of the rule's boundary, so they never miss one.
 constexpr double kAcceptMargin = 1e-4;
-
-// The GL state the bake and the preprocessing change that the frame pipeline relies on.
-struct SavedState {
-    GLint framebuffer = 0, program = 0, vertexArray = 0, viewport[4] = {};
-    GLint clipOrigin = GL_LOWER_LEFT, clipDepth = GL_ZERO_TO_ONE;
-    SavedState() {
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-        glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
-        glGetIntegerv(GL_VIEWPORT, viewport);
-        glGetIntegerv(GL_CLIP_ORIGIN, &clipOrigin);
-        glGetIntegerv(GL_CLIP_DEPTH_MODE, &clipDepth);
-    }
-    ~SavedState() {
-        glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-        glUseProgram(GLuint(program));
-        glBindVertexArray(GLuint(vertexArray));
-        glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-        glClipControl(GLenum(clipOrigin), GLenum(clipDepth));
-        // The frame pipeline's conventions (reversed-Z): GREATER, writes on, no stencil.
-        glDisable(GL_STENCIL_TEST);
-        glDepthFunc(GL_GREATER);
-        glDepthMask(GL_TRUE);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    }
-};
 
 gl::Texture depthTexture(int resolution, GLenum format) {
     gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
@@ -104,7 +79,7 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     const auto start = std::chrono::steady_clock::now();
     directions_ = viewDirections(settings_.views);
     for (const auto& d : directions_) frames_.push_back(makeImpostorFrame(centre_, radius_, d, settings_.apexFactor));
-    SavedState saved;
+    gl::SavedDrawState saved;
     bakeImages(vertexArray, indexCount);
     // One read-back: the rectangles need every texel's depth code.
     const int layers = settings_.views * settings_.peels;

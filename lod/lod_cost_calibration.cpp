@@ -8,6 +8,7 @@
 #include "gl/debug.hpp"
 #include "gl/gpu_timer.hpp"
 #include "gl/objects.hpp"
+#include "gl/saved_state.hpp"
 #include "gl/shader_program.hpp"
 #include "render/scene_program.hpp"
 #include "scene/mesh_builders.hpp"
@@ -42,44 +43,6 @@ constexpr int kDrawsPerPass = 2;  // draws per timed pass: the time of one is th
 constexpr int kTimedPasses = 3;   // the fastest pass counts
 constexpr int kTargetSize = 192;  // the framebuffer: the largest viewport
 
-// The GL state calibration changes, put back as it was.
-class StateGuard {
-public:
-    StateGuard() {
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
-        glGetIntegerv(GL_VIEWPORT, viewport_);
-        glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
-        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray_);
-        glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
-        glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
-        glGetFloatv(GL_DEPTH_CLEAR_VALUE, &depthClear_);
-        depthTest_ = glIsEnabled(GL_DEPTH_TEST);
-        blend_ = glIsEnabled(GL_BLEND);
-        cull_ = glIsEnabled(GL_CULL_FACE);
-    }
-    ~StateGuard() {
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(framebuffer_));
-        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-        // A program or vertex array deleted while bound lived on only while bound: once ours
-        // replaced it, it is gone, and binding its name again would be an error.
-        glUseProgram(glIsProgram(GLuint(program_)) ? GLuint(program_) : 0u);
-        glBindVertexArray(glIsVertexArray(GLuint(vertexArray_)) ? GLuint(vertexArray_) : 0u);
-        glDepthFunc(GLenum(depthFunc_));
-        glDepthMask(depthMask_);
-        glClearDepthf(depthClear_);
-        set(GL_DEPTH_TEST, depthTest_);
-        set(GL_BLEND, blend_);
-        set(GL_CULL_FACE, cull_);
-    }
-    StateGuard(const StateGuard&) = delete;
-    StateGuard& operator=(const StateGuard&) = delete;
-
-private:
-    static void set(GLenum cap, GLboolean on) { on ? glEnable(cap) : glDisable(cap); }
-    GLint framebuffer_ = 0, viewport_[4] = {}, program_ = 0, vertexArray_ = 0, depthFunc_ = GL_LESS;
-    GLboolean depthMask_ = GL_TRUE, depthTest_ = GL_FALSE, blend_ = GL_FALSE, cull_ = GL_FALSE;
-    GLfloat depthClear_ = 1.0f;
-};
 
 struct GpuMesh {
     gl::Buffer vertices, indices;
@@ -223,7 +186,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
     LodCalibration calibration;
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     calibration.device = renderer ? renderer : "";
-    StateGuard restore;
+    gl::SavedDrawState restore;
 
     gl::Texture color = gl::createTexture2D(GL_RGBA8, kTargetSize, kTargetSize);
     gl::Texture depth = gl::createTexture2D(GL_DEPTH_COMPONENT32F, kTargetSize, kTargetSize);
