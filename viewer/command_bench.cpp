@@ -7,11 +7,13 @@
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
 #include "render/frame_size.hpp"
+#include "lod_options.hpp"
 #include "zoom_options.hpp"
 #include "settings_options.hpp"
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace strata {
@@ -27,6 +29,7 @@ struct BenchArgs {
     std::string json, csv, images;
     SettingsArgs settings;
     ZoomArgs zoom;
+    LodArgs lod;
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
 };
 
@@ -59,6 +62,7 @@ void run(const BenchArgs& a) {
     options.budget = a.zoom.budget();
     if (options.budget) options.zoomController = a.zoom.controllerKind();
     if (!a.images.empty()) checkFolderCreatable(a.images);
+    const lod::LodOptions lodOptions = a.lod.options();
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
     Scene scene = openSceneAndWarn(a.scene);
@@ -75,7 +79,24 @@ void run(const BenchArgs& a) {
             writeImage(outputs, std::filesystem::path(a.images) / (id + ".png"), frame);
         };
     }
+    // Level of detail: impostors baked and the cost model calibrated before the first timed frame.
+    std::optional<lod::LodController> lodController;
+    if (lodOptions.mode != lod::LodMode::Geometry) {
+        lodController.emplace(gpu, lodOptions, &std::cerr);
+        lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size);
+        options.lod = [&](const Camera& camera, glm::ivec2 size) {
+            BenchLodFrame frame;
+            frame.standIns = lodController->select(camera, size);
+            frame.impostorObjects = lodController->selection().impostorObjects;
+            frame.impostorBytes = lodController->selection().impostorBytes;
+            return frame;
+        };
+        options.lodReport = lodReport(*lodController);
+    } else {
+        options.lodReport = {{"mode", "geometry"}};
+    }
     BenchReport report = runBench(gpu, options);
+    if (lodController) std::fprintf(stderr, "%s\n", lodSummary(*lodController).c_str());
     if (!a.json.empty()) outputs.addText(a.json, benchToJson(report).dump(2) + "\n");
     if (!a.csv.empty()) outputs.addText(a.csv, benchToCsv(report));
     outputs.commit();
@@ -97,6 +118,7 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--csv", args->csv, "write one CSV row per technique here");
     cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
     addZoomOptions(cmd, args->zoom, true, "size");
+    addLodOptions(cmd, args->lod);
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two

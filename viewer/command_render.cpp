@@ -10,6 +10,7 @@
 #include "oit/technique_settings.hpp"
 #include "render/coplanarity.hpp"
 #include "render/frame_size.hpp"
+#include "lod_options.hpp"
 #include "zoom_options.hpp"
 #include "frame/frame_renderer.hpp"
 #include "settings_options.hpp"
@@ -31,6 +32,7 @@ struct RenderArgs {
     std::string highlight;
     SettingsArgs settings;
     ZoomArgs zoom;
+    LodArgs lod;
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
 };
 
@@ -39,6 +41,7 @@ void run(const RenderArgs& a) {
     const int zoom = a.zoom.fixedZoom();
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
     const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
+    const lod::LodOptions lodOptions = a.lod.options();
     // Images are written after the frame: refuse an unwritable destination before rendering.
     checkImageWritable(a.out);
     if (!a.heatmap.empty()) checkImageWritable(a.heatmap);
@@ -63,6 +66,11 @@ void run(const RenderArgs& a) {
     options.detectCoplanarity = !a.heatmap.empty() || !a.highlight.empty();
     options.zoom = zoom;
     options.zoomFilter = a.zoom.filter();
+    std::optional<lod::LodController> lodController;
+    if (lodOptions.mode != lod::LodMode::Geometry) {
+        lodController.emplace(gpu, lodOptions, &std::cerr);
+        options.standIns = lodController->select(camera, size);
+    }
     FrameResult result = renderer.render(gpu, camera, size, technique.get(), options);
     gl::checkGl("render");
     Image image = renderer.readOutput();
@@ -88,6 +96,7 @@ void run(const RenderArgs& a) {
     std::printf("%s: %s %dx%d%s, %.3f ms GPU (%d passes), %llu of %llu fragments%s\n", a.out.c_str(), a.mode.c_str(),
                 size.x, size.y, zoomed.c_str(), result.gpuMs, s.passes, (unsigned long long)s.fragmentsCaptured,
                 (unsigned long long)result.fragmentsTotal.value_or(0), s.overflowed ? ", OVERFLOWED" : "");
+    if (lodController) std::printf("  %s\n", lodSummary(*lodController).c_str());
     for (const auto& p : result.passTimes)
         std::printf("  %-20s %9.3f ms GPU %9.3f ms CPU\n", p.name.c_str(), p.gpuMs, p.cpuMs);
     if (result.coplanarity) {
@@ -124,6 +133,7 @@ void registerRenderCommand(CLI::App& app) {
     cmd->add_option("--highlight-coplanar", args->highlight,
                     "the image with coplanar and self-intersecting surfaces tinted by the heatmap's colours (Fig. 12)");
     addZoomOptions(cmd, args->zoom, false, "size (the heatmap is of the frame drawn)");
+    addLodOptions(cmd, args->lod);
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two

@@ -97,7 +97,9 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     if (options.budget) report.zoomController = std::string(zoomControllerName(options.zoomController));
     // A zoomed technique is compared with the reference at zoom 1: the reference's own rows then
     // render like any other technique's, against a reference technique of their own.
-    const bool zoomed = options.zoom > 1 || options.budget.has_value();
+    // So is a technique drawn with stand-ins (BenchOptions::lod): the reference draws geometry.
+    const bool zoomed = options.zoom > 1 || options.budget.has_value() || bool(options.lod);
+    report.lod = options.lodReport;
 
     std::vector<Camera> cameras = benchCameras(scene, options);
     {
@@ -156,6 +158,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         frameOptions.countFragments = true;
         frameOptions.zoom = options.budget ? 1 : options.zoom;
         frameOptions.zoomFilter = options.zoomFilter;
+        if (options.lod) frameOptions.standIns = options.lod(cameras.front(), options.size).standIns;
         for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique, frameOptions);
         gl::checkGl(("bench warm-up of " + id).c_str());
 
@@ -190,6 +193,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 load.transparentArea = transparentScreenArea(
                     scene, c.projection(float(options.size.x) / float(options.size.y)) * c.view(), options.size);
                 frameOptions.zoom = controller->choose(load);
+            }
+            if (options.lod) {
+                const BenchLodFrame lod = options.lod(cameras[f], options.size);
+                frameOptions.standIns = lod.standIns;
+                mode.impostorObjects = std::max(mode.impostorObjects, lod.impostorObjects);
+                mode.impostorBytes = std::max(mode.impostorBytes, lod.impostorBytes);
             }
             FrameResult r = renderer.render(scene, cameras[f], options.size, technique, frameOptions);
             gl::checkGl(("bench frame of " + id).c_str());

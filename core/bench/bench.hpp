@@ -13,6 +13,7 @@
 #include "oit/technique_settings.hpp"
 #include "render/deflection_warp.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/stand_in.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,13 @@
 #include <vector>
 
 namespace strata {
+
+// What stands in for objects in one bench frame (BenchOptions::lod).
+struct BenchLodFrame {
+    const StandIns* standIns = nullptr;
+    int impostorObjects = 0;
+    std::uint64_t impostorBytes = 0;
+};
 
 struct BenchOptions {
     std::string sceneName;                  // as given on the command line
@@ -49,6 +57,12 @@ struct BenchOptions {
     DeflectFilter zoomFilter = DeflectFilter::Nearest;
     std::optional<ZoomBudget> budget;
     ZoomControllerKind zoomController = ZoomControllerKind::Reactive;
+    // Per-object level of detail (lod/, which sits above core): called before each technique
+    // frame with its camera and the bench size; says what stands in for objects (null: all
+    // geometry) and how many and how much. The reference always draws geometry, so the error
+    // includes what the impostors lose. `lodReport` goes into the JSON as "lod" as given.
+    std::function<BenchLodFrame(const Camera&, glm::ivec2 size)> lod;
+    nlohmann::json lodReport;
 };
 
 // A run of consecutive frames over the budget's upper edge (target x (1 + band)).
@@ -95,6 +109,10 @@ struct BenchMode {
     BudgetHits budgetHits;
     std::vector<BudgetExcursion> excursions;
     ZoomCostModel calibratedModel;                            // predictive: what calibration fitted
+    // Under BenchOptions::lod: the most objects drawn as impostors in one frame, and the most
+    // impostor memory one frame used.
+    int impostorObjects = 0;
+    std::uint64_t impostorBytes = 0;
 };
 
 struct BenchReport {
@@ -114,6 +132,7 @@ struct BenchReport {
     std::string zoomFilter = "nearest";
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
+    nlohmann::json lod;                // BenchOptions::lodReport (null without LOD)
 };
 
 // Maximal runs of frames over targetMs x (1 + band).

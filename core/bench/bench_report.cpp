@@ -66,6 +66,8 @@ nlohmann::json benchToJson(const BenchReport& r) {
         modes.back()["frame_ms_median"] = finite(m.frameMsMedian);
         modes.back()["enlarge_ms_median"] = finite(m.enlargeMsMedian);
         modes.back()["zoom"] = m.zoom;
+        modes.back()["impostor_objects"] = m.impostorObjects;
+        modes.back()["impostor_bytes"] = m.impostorBytes;
         if (r.budget) {
             nlohmann::json excursions = nlohmann::json::array();
             for (const auto& e : m.excursions)
@@ -100,6 +102,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"zoom_filter", r.zoomFilter},
         {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
         {"zoom_controller", r.zoomController},
+        {"lod", r.lod},
     };
 }
 

@@ -1,0 +1,92 @@
+#include "lod/lod_controller.hpp"
+
+#include <ostream>
+#include <stdexcept>
+
+namespace strata::lod {
+
+LodController::LodController(const GpuScene& scene, const LodOptions& options, std::ostream* progress)
+    : scene_(scene), options_(options), progress_(progress) {
+    const std::string invalid = options_.impostor.validate();
+    if (!invalid.empty()) throw std::invalid_argument("impostor settings: " + invalid);
+    const auto& objects = scene_.objects();
+    inputs_.resize(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const Object& o = objects[i];
+        LodObjectInput& in = inputs_[i];
+        in.center = o.worldBounds.center();
+        in.radius = o.worldBounds.radius();
+        in.triangles = scene_.scene().meshes[std::size_t(o.mesh)].triangleCount();
+        in.impostor.id = o.mesh;  // instances of one mesh share its impostor
+    }
+}
+
+LodController::~LodController() = default;
+
+void LodController::ensureBaked() {
+    if (impostors_) return;
+    impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_);
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+        const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
+        inputs_[i].hasImpostor = impostor != nullptr;
+        if (!impostor) continue;
+        inputs_[i].impostor.slices = impostor->settings().slices;
+        inputs_[i].impostor.resolution = impostor->settings().resolution;
+        inputs_[i].impostor.bytes = impostor->bytes().total();
+    }
+}
+
+// The share of the full slice squares the nearest view's rectangles cover: what the fill costs.
+double LodController::drawnFraction(int objectIndex, const glm::vec3& eyeWorld) const {
+    const LayeredImpostor* impostor = impostors_->impostorOf(objectIndex);
+    const ImpostorSettings& s = impostor->settings();
+    const int view = impostor->nearestView(impostors_->eyeInObject(objectIndex, eyeWorld));
+    double texels = 0.0;
+    for (int peel = 0; peel < s.peels; ++peel)
+        for (int slice = 0; slice < s.slices; ++slice) {
+            const SliceRect r = impostor->rectangle(view, peel, slice);
+            if (!r.empty()) texels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
+        }
+    return texels / (double(s.resolution) * s.resolution * s.slices);
+}
+
+const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
+    selection_ = {};
+    if (options_.mode == LodMode::Geometry) {
+        // Nothing baked or measured: every object's own triangles, predicted for nobody.
+        selection_.objects.assign(inputs_.size(), LodDecision{});
+        return nullptr;
+    }
+    ensureBaked();
+    if (options_.mode == LodMode::Auto && !calibration_) {
+        calibration_ = calibrateLodCost([this](const std::string& line) {
+            if (progress_) *progress_ << line << "\n";
+        });
+        if (progress_)
+            *progress_ << "lod: cost model on " << calibration_->device << ": geometry "
+                       << calibration_->model.geometryMsPerMegatriangle << " ms/Mtri, impostor "
+                       << calibration_->model.impostorMsPerMegapixel << " ms per million layer pixels ("
+                       << calibration_->wallMs << " ms)\n";
+    }
+    const LodView view = lodView(camera, size);
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+        if (!inputs_[i].hasImpostor) continue;
+        inputs_[i].impostor.viewAngleRadians = impostors_->nearestViewAngle(int(i), camera.position);
+        inputs_[i].impostor.drawnFraction = drawnFraction(int(i), camera.position);
+    }
+    const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
+    selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
+    std::vector<bool> use(inputs_.size());
+    for (std::size_t i = 0; i < use.size(); ++i) use[i] = selection_.objects[i].impostor;
+    standIns_ = impostors_->drawsFor(camera.position, use);
+    return selection_.impostorObjects > 0 ? &standIns_ : nullptr;
+}
+
+std::string LodController::explainObject(int objectIndex) const {
+    const std::size_t i = std::size_t(objectIndex);
+    if (i >= selection_.objects.size() || i >= inputs_.size()) return "";
+    if (options_.mode == LodMode::Geometry) return "geometry: forced";
+    return explain(selection_.objects[i], inputs_[i], {options_.mode, options_.maxErrorPx});
+}
+
+}  // namespace strata::lod

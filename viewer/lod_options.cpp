@@ -1,0 +1,80 @@
+#include "lod_options.hpp"
+
+#include <cstdio>
+
+namespace strata {
+
+lod::LodOptions LodArgs::options() const {
+    lod::LodOptions o;
+    o.mode = lod::parseLodMode(mode);
+    o.maxErrorPx = maxErrorPx;
+    o.impostor.views = views;
+    o.impostor.resolution = resolution;
+    o.impostor.slices = slices;
+    o.impostor.overlap = overlap;
+    return o;
+}
+
+void addLodOptions(CLI::App* cmd, LodArgs& args) {
+    cmd->add_option("--lod", args.mode,
+                    "per-object level of detail: geometry, impostors (layered impostors wherever the eye is "
+                    "outside 2 bounding radii), or auto (the cheaper by the cost model, under --lod-max-error-px)")
+        ->check(CLI::IsMember({"geometry", "impostors", "auto"}))
+        ->capture_default_str();
+    cmd->add_option("--lod-max-error-px", args.maxErrorPx, "auto: the largest impostor error accepted, pixels")
+        ->check(CLI::Range(0.0, 1e6))
+        ->capture_default_str();
+    cmd->add_option("--impostor-views", args.views, "baked view directions per impostor: 12, 20 or 32")
+        ->check(CLI::IsMember({12, 20, 32}))
+        ->capture_default_str();
+    cmd->add_option("--impostor-resolution", args.resolution, "texels a side of each baked view (1..256)")
+        ->check(CLI::Range(1, 256))
+        ->capture_default_str();
+    cmd->add_option("--impostor-slices", args.slices, "depth slices per view (1..256)")
+        ->check(CLI::Range(1, 256))
+        ->capture_default_str();
+    cmd->add_option("--impostor-overlap", args.overlap,
+                    "slice widths each slice's depth interval reaches into its neighbours' (opaque only)")
+        ->check(CLI::Range(0.0, 16.0))
+        ->capture_default_str();
+}
+
+nlohmann::json lodReport(const lod::LodController& controller) {
+    const lod::LodOptions& o = controller.options();
+    nlohmann::json j = {
+        {"mode", lod::to_string(o.mode)},
+        {"max_error_px", o.maxErrorPx},
+        {"views", o.impostor.views},
+        {"resolution", o.impostor.resolution},
+        {"slices", o.impostor.slices},
+        {"overlap", o.impostor.overlap},
+    };
+    if (const lod::ImpostorSet* set = controller.impostors()) {
+        const lod::ImpostorMemory m = set->bytes();
+        j["baked_meshes"] = set->bakedMeshes();
+        j["bake_ms"] = set->bakeMs();
+        j["image_bytes"] = m.images;
+        j["rectangle_bytes"] = m.rectangles;
+        j["vertex_bytes"] = m.vertexBuffer;
+    }
+    if (const auto& c = controller.calibration()) {
+        j["model"] = {{"geometry_fixed_ms", c->model.geometryFixedMs},
+                      {"geometry_ms_per_megatriangle", c->model.geometryMsPerMegatriangle},
+                      {"geometry_ms_per_megapixel", c->model.geometryMsPerMegapixel},
+                      {"impostor_fixed_ms", c->model.impostorFixedMs},
+                      {"impostor_ms_per_megapixel", c->model.impostorMsPerMegapixel},
+                      {"calibration_ms", c->wallMs}};
+    }
+    return j;
+}
+
+std::string lodSummary(const lod::LodController& controller) {
+    const lod::LodSelection& s = controller.selection();
+    char line[256];
+    std::snprintf(line, sizeof line, "lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors",
+                  lod::to_string(controller.options().mode), s.impostorObjects, s.objects.size(), s.impostorsUsed,
+                  double(s.impostorBytes) / 1e6);
+    return line;
+}
+
+}  // namespace strata

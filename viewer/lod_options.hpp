@@ -1,0 +1,35 @@
+#pragma once
+// The level-of-detail options, described once for `render`, `bench` and `view`:
+// `--lod geometry|impostors|auto` (default auto: per object, by the cost model calibrated at
+// start-up, under --lod-max-error-px) and the layered impostors' --impostor-views,
+// --impostor-resolution, --impostor-slices and --impostor-overlap.
+#include "lod/lod_controller.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace strata {
+
+struct LodArgs {
+    std::string mode = "auto";
+    int views = 20;
+    int resolution = 128;
+    int slices = 64;
+    float overlap = 0.5f;
+    double maxErrorPx = lod::kDefaultMaxErrorPx;
+
+    lod::LodOptions options() const;  // throws naming a bad mode
+};
+
+void addLodOptions(CLI::App* cmd, LodArgs& args);
+
+// What a bench JSON's "lod" holds: the mode, the impostor settings, and once calibrated the
+// cost model (lod/lod_cost_model.hpp) and the bake's time and memory.
+nlohmann::json lodReport(const lod::LodController& controller);
+
+// One line for the terminal: "lod auto: 37 of 101 objects as impostors, 1.4 MB of impostors".
+std::string lodSummary(const lod::LodController& controller);
+
+}  // namespace strata
