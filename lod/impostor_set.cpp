@@ -7,47 +7,61 @@
 namespace strata::lod {
 
 ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels,
-                         std::ostream* progress)
-    : scene_(&scene), settings_(settings) {
-    const auto start = std::chrono::steady_clock::now();
+                         std::ostream* progress, bool bakeNow)
+    : scene_(&scene), settings_(settings), transparentPeels_(transparentPeels), progress_(progress) {
     const Scene& s = scene.scene();
     const auto& objects = scene.objects();
-    std::vector<bool> wanted(s.meshes.size(), false), transparent(s.meshes.size(), false);
+    wanted_.assign(s.meshes.size(), false);
+    transparent_.assign(s.meshes.size(), false);
+    tried_.assign(s.meshes.size(), false);
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (scene.objectVolumes()[i].volume) continue;
         const std::size_t m = std::size_t(objects[i].mesh);
-        wanted[m] = true;
-        if (s.materials[std::size_t(objects[i].material)].isTransparent()) transparent[m] = true;
+        wanted_[m] = true;
+        if (s.materials[std::size_t(objects[i].material)].isTransparent()) transparent_[m] = true;
     }
-    int total = 0, done = 0;
-    for (bool w : wanted) total += w ? 1 : 0;
     meshImpostors_.resize(s.meshes.size());
     meshReasons_.assign(s.meshes.size(), "no surface object uses the mesh");
-    for (std::size_t m = 0; m < s.meshes.size(); ++m) {
-        if (!wanted[m]) continue;
-        ImpostorSettings own = settings;
-        if (transparent[m]) own.peels = transparentPeels;
+    for (std::size_t m = 0; m < s.meshes.size(); ++m)
+        if (wanted_[m]) meshReasons_[m] = "not baked (no object needed it yet)";
+    draws_.resize(objects.size());
+    if (bakeNow) bakeMeshes(wanted_);
+}
+
+int ImpostorSet::bakeMeshes(const std::vector<bool>& meshes) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene& s = scene_->scene();
+    const auto& objects = scene_->objects();
+    int total = 0, done = 0;
+    for (std::size_t m = 0; m < wanted_.size() && m < meshes.size(); ++m) total += meshes[m] && wanted_[m] && !tried_[m];
+    if (total == 0) return 0;
+    for (std::size_t m = 0; m < wanted_.size() && m < meshes.size(); ++m) {
+        if (!meshes[m] || !wanted_[m] || tried_[m]) continue;
+        tried_[m] = true;
+        ImpostorSettings own = settings_;
+        if (transparent_[m]) own.peels = transparentPeels_;
         // Objects share the mesh's vertex array; find one that draws it.
         const GpuMesh* mesh = nullptr;
         for (std::size_t i = 0; i < objects.size() && !mesh; ++i)
-            if (std::size_t(objects[i].mesh) == m) mesh = &scene.meshOf(int(i));
+            if (std::size_t(objects[i].mesh) == m) mesh = &scene_->meshOf(int(i));
         auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[m].bounds(), own);
         if (impostor->valid()) meshImpostors_[m] = std::move(impostor);
         else meshReasons_[m] = impostor->reason();
         ++done;
-        if (progress) *progress << "baking impostors: " << done << "/" << total << " meshes" << std::endl;
+        if (progress_) *progress_ << "baking impostors: " << done << "/" << total << " meshes" << std::endl;
     }
-    draws_.resize(objects.size());
-    bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (progress) {
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    bakeMs_ += ms;
+    if (progress_) {
         const ImpostorMemory b = bytes();
         char line[256];
         std::snprintf(line, sizeof line,
-                      "impostors: %d/%d meshes baked in %.0f ms, %llu bytes (images %llu, rectangles %llu, vertices %llu)",
-                      bakedMeshes(), total, bakeMs_, (unsigned long long)b.total(), (unsigned long long)b.images,
+                      "impostors: %d meshes baked in %.0f ms; %d baked, %llu bytes (images %llu, rectangles %llu, vertices %llu)",
+                      done, ms, bakedMeshes(), (unsigned long long)b.total(), (unsigned long long)b.images,
                       (unsigned long long)b.rectangles, (unsigned long long)b.vertexBuffer);
-        *progress << line << std::endl;
+        *progress_ << line << std::endl;
     }
+    return done;
 }
 
 const LayeredImpostor* ImpostorSet::impostorOfMesh(int mesh) const {

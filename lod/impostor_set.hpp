@@ -19,8 +19,15 @@ public:
     // or by no object are not baked. A mesh any transparent object uses gets `transparentPeels`
     // peels (overlap 0); others `settings.peels`. `progress` (null: silent) gets
     // "baking impostors: i/n meshes" lines and a total.
+    // With bakeNow false nothing is baked until bakeMeshes asks (LOD bakes only the meshes its
+    // selection could use).
     ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels = 2,
-                std::ostream* progress = nullptr);
+                std::ostream* progress = nullptr, bool bakeNow = true);
+
+    // Bakes the meshes flagged (indexed like Scene::meshes) that objects can use and that were
+    // not tried before; returns how many it tried. A progress line per mesh and a total.
+    int bakeMeshes(const std::vector<bool>& meshes);
+    bool tried(int mesh) const { return tried_[std::size_t(mesh)]; }
 
     // The impostor an object draws, or null (volume medium, or its mesh has none: see reasonOf).
     const LayeredImpostor* impostorOf(int objectIndex) const;
@@ -51,6 +58,9 @@ private:
     ImpostorSettings settings_;
     std::vector<std::unique_ptr<LayeredImpostor>> meshImpostors_;  // per mesh, null: not baked
     std::vector<std::string> meshReasons_;
+    std::vector<bool> wanted_, transparent_, tried_;  // per mesh
+    int transparentPeels_ = 2;
+    std::ostream* progress_ = nullptr;
     std::vector<StandInDraw> draws_;                                // per object
     double bakeMs_ = 0.0;
 };

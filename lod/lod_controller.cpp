@@ -23,9 +23,28 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
 
 LodController::~LodController() = default;
 
-void LodController::ensureBaked() {
-    if (impostors_) return;
-    impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_);
+// Bakes the meshes this frame's selection could draw as impostors and has not tried yet: each
+// judged as if baked (view angle 0, a disc's share pi/4 of every slice square drawn), so a scene
+// whose objects all stay geometry bakes nothing.
+void LodController::bakeCandidates(const LodView& view, const LodCostModel& model) {
+    if (!impostors_)
+        impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_, false);
+    const auto& objects = scene_.objects();
+    std::vector<bool> wanted(scene_.scene().meshes.size(), false);
+    bool any = false;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const int mesh = objects[i].mesh;
+        if (impostors_->tried(mesh) || wanted[std::size_t(mesh)]) continue;
+        LodObjectInput guess = inputs_[i];
+        guess.hasImpostor = true;
+        guess.impostor.slices = options_.impostor.slices;
+        guess.impostor.resolution = options_.impostor.resolution;
+        guess.impostor.viewAngleRadians = 0.0;
+        guess.impostor.drawnFraction = 0.785;
+        if (selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx}).impostor)
+            wanted[std::size_t(mesh)] = any = true;
+    }
+    if (!any || impostors_->bakeMeshes(wanted) == 0) return;
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
         inputs_[i].hasImpostor = impostor != nullptr;
@@ -52,16 +71,14 @@ double LodController::drawnFraction(int objectIndex, const glm::vec3& eyeWorld) 
 
 const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
     selection_ = {};
+    lastEye_ = camera.position;
     if (options_.mode == LodMode::Geometry) {
         // Nothing baked or measured: every object's own triangles, predicted for nobody.
         selection_.objects.assign(inputs_.size(), LodDecision{});
         return nullptr;
     }
-    ensureBaked();
     if (options_.mode == LodMode::Auto && !calibration_) {
-        calibration_ = calibrateLodCost([this](const std::string& line) {
-            if (progress_) *progress_ << line << "\n";
-        });
+        calibration_ = calibrateLodCost();
         if (progress_)
             *progress_ << "lod: cost model on " << calibration_->device << ": geometry "
                        << calibration_->model.geometryMsPerMegatriangle << " ms/Mtri, impostor "
@@ -69,12 +86,13 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
                        << calibration_->wallMs << " ms)\n";
     }
     const LodView view = lodView(camera, size);
+    const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
+    bakeCandidates(view, model);
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         if (!inputs_[i].hasImpostor) continue;
         inputs_[i].impostor.viewAngleRadians = impostors_->nearestViewAngle(int(i), camera.position);
         inputs_[i].impostor.drawnFraction = drawnFraction(int(i), camera.position);
     }
-    const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
     selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     std::vector<bool> use(inputs_.size());
     for (std::size_t i = 0; i < use.size(); ++i) use[i] = selection_.objects[i].impostor;

@@ -1,8 +1,9 @@
 #pragma once
 // Per-object level of detail for a frame (DESIGN's data flow: scene graph -> LOD selection ->
-// ... -> opaque pass -> technique): bakes the scene's layered impostors and calibrates the cost
-// model on first need, then each frame decides geometry or impostor per object (lod_select.hpp)
-// and hands the frame the stand-ins (FrameOptions::standIns). Geometry mode bakes nothing.
+// ... -> opaque pass -> technique): calibrates the cost model on the first frame (auto), bakes a
+// mesh's layered impostor the first time selection could use it, then each frame decides
+// geometry or impostor per object (lod_select.hpp) and hands the frame the stand-ins
+// (FrameOptions::standIns). Geometry mode bakes and measures nothing.
 #include "lod/impostor_set.hpp"
 #include "lod/lod_cost_model.hpp"
 #include "lod/lod_select.hpp"
@@ -36,6 +37,7 @@ public:
     const StandIns* select(const Camera& camera, glm::ivec2 size);
 
     const LodSelection& selection() const { return selection_; }  // the last frame's
+    const glm::vec3& lastEye() const { return lastEye_; }         // the last frame's eye, world
     const LodOptions& options() const { return options_; }
     void setMode(LodMode mode) { options_.mode = mode; }
     void setMaxErrorPx(double px) { options_.maxErrorPx = px; }
@@ -45,7 +47,7 @@ public:
     std::string explainObject(int objectIndex) const;
 
 private:
-    void ensureBaked();
+    void bakeCandidates(const LodView& view, const LodCostModel& model);
     double drawnFraction(int objectIndex, const glm::vec3& eyeWorld) const;
 
     const GpuScene& scene_;
@@ -56,6 +58,7 @@ private:
     std::vector<LodObjectInput> inputs_;
     LodSelection selection_;
     StandIns standIns_;
+    glm::vec3 lastEye_{0.0f};
 };
 
 }  // namespace strata::lod

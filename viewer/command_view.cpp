@@ -72,6 +72,7 @@ void registerViewCommand(CLI::App& app) {
     cmd->add_option("--screenshot", *screenshot, "with --exit-after-frames: save the window here (.png)")->needs(exitAfter);
     cmd->add_option("--size", *size, "window size WxH")->capture_default_str();
     addZoomOptions(cmd, options->zoom, true, "window");
+    addLodOptions(cmd, options->lod);
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);
         if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
@@ -81,6 +82,7 @@ void registerViewCommand(CLI::App& app) {
         options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
         options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
+        options->lod.options();     // and a bad impostor setting
         options->width = s.x;
         options->height = s.y;
         if (!play->empty()) options->playPath = *play;

@@ -1,4 +1,5 @@
 #include "panel.hpp"
+#include "lod_panel.hpp"
 #include "zoom_driver.hpp"
 
 #include "panel_widgets.hpp"
@@ -205,6 +206,7 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(state, requests);
     if (state.zoom && ImGui::CollapsingHeader("Zoom rendering", ImGuiTreeNodeFlags_DefaultOpen))
         drawZoomSection(*state.zoom, false);
+    if (state.lod && ImGui::CollapsingHeader("Level of detail", ImGuiTreeNodeFlags_DefaultOpen)) drawLodSection(*state.lod);
     if (ImGui::Checkbox("vsync", &settings.vsync)) requests.vsyncChanged = true;
     ImGui::SameLine();
     drawErrorLines(state.lastGlError, state.lastError);

@@ -19,6 +19,9 @@
 #include <string>
 
 namespace strata {
+namespace lod {
+class LodController;
+}
 
 class ZoomDriver;
 
@@ -53,6 +56,7 @@ struct PanelState {
     std::string lastGlError;
     std::string lastSaved;      // last screenshot or path written
     ZoomDriver* zoom = nullptr; // zoom rendering: its section edits the driver's choices
+    lod::LodController* lod = nullptr;  // level of detail: its section switches the mode
     // Drawn under the view selector: the error and split views' figures (viewer/error_view.hpp,
     // viewer/split_view.hpp), owned by the mode that shows them.
     std::function<void()> viewDetails;

@@ -46,9 +46,11 @@ void SplitView::setTechnique(const std::string& id, const SettingsById& settings
 int SplitView::dividerColumn(int width) const { return std::clamp(int(std::lround(divider_ * float(width))), 0, width); }
 
 void SplitView::render(const GpuScene& scene, const Camera& camera, glm::ivec2 size, std::uint64_t frameIndex,
-                       const std::string& idA, GLuint outputA, const FrameResult& frameA, ErrorView& errors) {
+                       const std::string& idA, GLuint outputA, const FrameResult& frameA, ErrorView& errors,
+                       const StandIns* standIns) {
     FrameOptions options;
     options.timePasses = true;
+    options.standIns = standIns;  // B draws what A drew: the same objects as impostors
     const FrameResult frameB = renderer_.render(scene, camera, size, technique_.get(), options);
     errors.renderReference(scene, camera, size, frameIndex);
     a_ = {idA, frameA.gpuMs, frameA.stats, errors.compare(outputA, size, false)};

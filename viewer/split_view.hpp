@@ -35,7 +35,8 @@ public:
     // Renders B on A's frame, measures both halves against the reference and composes the
     // shown image: A's texels left of the divider, B's right of it, a 2-pixel white line between.
     void render(const GpuScene& scene, const Camera& camera, glm::ivec2 size, std::uint64_t frameIndex,
-                const std::string& idA, GLuint outputA, const FrameResult& frameA, ErrorView& errors);
+                const std::string& idA, GLuint outputA, const FrameResult& frameA, ErrorView& errors,
+                const StandIns* standIns = nullptr);
     GLuint composite() const { return composite_.id(); }
 
     // Mouse on the window (pixels from the top-left, as GLFW reports): a left press within a few

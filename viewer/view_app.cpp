@@ -2,6 +2,7 @@
 // frame pipeline the headless commands use. Each frame renders the scene with the chosen
 // technique at the framebuffer size, presents the linear output, and draws the panel on top.
 #include "view_app.hpp"
+#include "lod_panel.hpp"
 #include "zoom_driver.hpp"
 
 #include "camera_controls.hpp"
@@ -24,6 +25,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <ctime>
 #include <filesystem>
 #include <memory>
@@ -58,6 +60,7 @@ public:
         settings_.technique = technique_->settings();
         settings_.view = options.view;
         zoom_.choices() = zoomChoicesFrom(options);
+        lod_ = std::make_unique<lod::LodController>(scene_, options.lod.options(), &std::cerr);
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
             path_ = CameraPath::read(*options.playPath);
@@ -113,6 +116,7 @@ public:
         state.lastGlError = lastGlError;
         state.lastSaved = lastSaved_;
         state.zoom = &zoom_;
+        state.lod = lod_.get();
         state.viewDetails = [this] { drawViewDetails(); };
         strata::drawPanel(state, settings_, requests_);
         inspector_.drawWindow(scene_);
@@ -123,6 +127,7 @@ public:
         if (settings_.view == ViewKind::Split) split_->printFigures(lastSize_);
         inspector_.printFigures(scene_);
         zoom_.printFigures();
+        printLodFigures(*lod_);
         std::fflush(stdout);
     }
 
@@ -298,7 +303,8 @@ private:
                 errorShown_ = true;
             }
             if (settings_.view == ViewKind::Split) {
-                split_->render(scene_, camera_, size, frameIndex_, techniqueId_, output, frame_, *errorView_);
+                split_->render(scene_, camera_, size, frameIndex_, techniqueId_, output, frame_, *errorView_,
+                               standIns_);
                 splitShown_ = true;
             }
             inspector_.inspect(scene_, camera_, size, windowSize(), output, techniqueId_, frame_.stats);
@@ -328,6 +334,7 @@ private:
             techniqueSettings_[techniqueId_] = settings_.technique;
         }
         zoom_.begin(scene_, camera_, size, technique_.get(), frameOptions);
+        frameOptions.standIns = standIns_ = lod_->select(camera_, size);
         // The heatmap is of the frame drawn: shown at the window's size, it needs zoom 1.
         if (frameOptions.detectCoplanarity) frameOptions.zoom = 1;
         try {
@@ -391,6 +398,8 @@ private:
     Camera baseCamera_;
     std::unique_ptr<FrameRenderer> renderer_ = std::make_unique<FrameRenderer>();
     ZoomDriver zoom_;
+    std::unique_ptr<lod::LodController> lod_;  // per-object geometry or impostor, every frame
+    const StandIns* standIns_ = nullptr;       // this frame's, from lod_
     std::unique_ptr<Technique> technique_;
     std::string techniqueId_;
     Camera camera_;  // this frame's, from update()

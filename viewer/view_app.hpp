@@ -2,6 +2,7 @@
 // `strata view`: the interactive window (GLFW + Dear ImGui) over the same frame pipeline the
 // headless commands use.
 #include "view_kind.hpp"
+#include "lod_options.hpp"
 #include "zoom_options.hpp"
 
 #include "oit/technique_settings.hpp"
@@ -39,6 +40,8 @@ struct ViewOptions {
     int width = 1280, height = 800;
     // Zoom rendering (--zoom, or --frame-budget-ms with --zoom-controller; the panel changes them).
     ZoomArgs zoom;
+    // Per-object level of detail (--lod and the impostor settings; the panel changes the mode).
+    LodArgs lod;
 };
 
 // The panel's zoom choices the command line asks for.

@@ -1,0 +1,70 @@
+#include "lod_panel.hpp"
+
+#include "lod_options.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace strata {
+namespace {
+
+constexpr const char* kModeNames[] = {"geometry", "impostors", "auto"};
+constexpr int kListedObjects = 200;  // the table lists this many; the totals count all
+
+}  // namespace
+
+void drawLodSection(lod::LodController& lod) {
+    int mode = int(lod.options().mode);
+    if (ImGui::Combo("level of detail", &mode, kModeNames, 3)) lod.setMode(lod::LodMode(mode));
+    float maxError = float(lod.options().maxErrorPx);
+    if (lod.options().mode == lod::LodMode::Auto &&
+        ImGui::SliderFloat("max error px", &maxError, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+        lod.setMaxErrorPx(maxError);
+    const lod::LodSelection& s = lod.selection();
+    ImGui::TextWrapped("%s", lodSummary(lod).c_str());
+    if (lod.options().mode != lod::LodMode::Geometry)
+        ImGui::Text("predicted %.2f ms, all geometry %.2f ms", s.predictedMs, s.geometryOnlyMs);
+    if (const lod::ImpostorSet* set = lod.impostors()) {
+        const lod::ImpostorMemory m = set->bytes();
+        ImGui::Text("%d meshes baked in %.0f ms: images %.2f MB, rectangles %.1f kB, vertices %.2f MB",
+                    set->bakedMeshes(), set->bakeMs(), double(m.images) / 1e6, double(m.rectangles) / 1e3,
+                    double(m.vertexBuffer) / 1e6);
+        const lod::ImpostorSettings& is = set->settings();
+        ImGui::Text("%d views, %d px, %d slices, overlap %.2f", is.views, is.resolution, is.slices, is.overlap);
+    }
+    if (s.objects.empty() || !ImGui::TreeNode("objects")) return;
+    if (ImGui::BeginTable("lod objects", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY, ImVec2(0, 200))) {
+        for (const char* h : {"object", "drawn as", "view err deg", "err px", "geom ms", "imp ms"})
+            ImGui::TableSetupColumn(h);
+        ImGui::TableHeadersRow();
+        for (int i = 0; i < int(s.objects.size()) && i < kListedObjects; ++i) {
+            const lod::LodDecision& d = s.objects[std::size_t(i)];
+            const lod::ImpostorSet* set = lod.impostors();
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", i);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(d.impostor ? "impostor" : "geometry");
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lod.explainObject(i).c_str());
+            ImGui::TableNextColumn();
+            if (set && set->impostorOf(i))
+                ImGui::Text("%.1f", double(set->nearestViewAngle(i, lod.lastEye())) * 180.0 / M_PI);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", d.errorPx);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", d.geometryMs);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", d.impostorMs);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TreePop();
+}
+
+void printLodFigures(const lod::LodController& lod) {
+    std::printf("%s\n", lodSummary(lod).c_str());
+}
+
+}  // namespace strata
