@@ -67,6 +67,10 @@ expect_error "--zoom excludes --frame-budget-ms" view --zoom 3 --frame-budget-ms
 expect_error "--frame-budget-ms: Value -1 not in range" bench builtin:layers:2 --frame-budget-ms -1
 expect_error "--zoom-controller: pid not in {reactive,predictive}" bench builtin:layers:2 --frame-budget-ms 10 --zoom-controller pid
 expect_error "--depth-tie-ulps: Value -1 not in range" render builtin:layers:2 --depth-tie-ulps -1 --out "$work/out.png"
+expect_error "--lod: fast not in {geometry,impostors,auto}" render builtin:layers:2 --lod fast --out "$work/out.png"
+expect_error "--impostor-views: 7 not in {12,20,32}" bench builtin:layers:2 --impostor-views 7
+expect_error "--impostor-slices: Value 0 not in range 1 to 256" view --impostor-slices 0
+expect_error "builtin:field:0: argument '0' must be an integer in [1, 1000]" render builtin:field:0 --out "$work/out.png"
 expect_error "--highlight-coplanar needs the frame at its size" render builtin:layers:2 --zoom 2 --highlight-coplanar "$work/h.png" --out "$work/out.png"
 printf '{"capacity": 4,' >"$tmp/broken.json"
 expect_error "broken.json: " render builtin:layers:2 --mode ll --settings "$tmp/broken.json" --out "$work/out.png"
@@ -208,6 +212,27 @@ assert all(1 <= z <= 3 for z in b['frame_zoom'])
 assert 0.0 <= b['within_band'] <= b['not_over_band'] <= 1.0
 assert b['model']['ms_per_megafragment'] >= 0.0
 PY
+# Level of detail: forced impostors on a field of 4 (the ground stays geometry: the eye is within
+# 2 of its radii), in the render summary and the bench JSON; geometry bakes nothing.
+if "$strata" render builtin:field:4 --lod impostors --size 64x48 --out "$tmp/field.png" >"$tmp/stdout" 2>"$tmp/stderr" &&
+   grep -q "lod impostors: 4 of 5 objects as impostors (1 distinct)" "$tmp/stdout" && [ ! -s "$tmp/stderr" ]
+then ok; else bad "render --lod impostors: $(cat "$tmp/stdout" "$tmp/stderr")"; fi
+if "$strata" bench builtin:field:4 --lod impostors --size 48x32 --frames 1 --warmup 0 --modes blend-sorted \
+     --impostor-resolution 32 --impostor-slices 8 --json "$tmp/lod.json" >/dev/null 2>&1 &&
+   python3 - "$tmp/lod.json" <<'PY'; then ok; else bad "bench --lod impostors JSON"; fi
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d['lod']['mode'] == 'impostors' and d['lod']['slices'] == 8 and d['lod']['resolution'] == 32
+(m,) = d['modes']
+assert m['impostor_objects'] == 4, m['impostor_objects']
+# One shared impostor: 20 views of 32x32 RGBz (Table 2) + 4 bytes per (view, slice) rectangle.
+assert m['impostor_bytes'] >= 4 * 32 * 32 * 20 + 4 * 20 * 8, m['impostor_bytes']
+PY
+if "$strata" bench builtin:field:4 --lod geometry --size 48x32 --frames 1 --warmup 0 --modes blend-sorted \
+     --json "$tmp/geom.json" >/dev/null 2>"$tmp/stderr" &&
+   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['lod']=={'mode':'geometry'} and d['modes'][0]['impostor_objects']==0" "$tmp/geom.json" &&
+   ! grep -q "baking" "$tmp/stderr"
+then ok; else bad "bench --lod geometry bakes nothing"; fi
 # A successful run leaves its outputs and nothing else.
 leftover=$(cd "$work" && find . -mindepth 1 | sort | grep -vxF -e ./a-folder -e ./fandisk.png -e ./bench.json -e ./bench.csv)
 if [ -z "$leftover" ]; then ok; else bad "left in the output folder: $leftover"; fi

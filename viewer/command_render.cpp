@@ -68,7 +68,8 @@ void run(const RenderArgs& a) {
     options.zoomFilter = a.zoom.filter();
     std::optional<lod::LodController> lodController;
     if (lodOptions.mode != lod::LodMode::Geometry) {
-        lodController.emplace(gpu, lodOptions, &std::cerr);
+        // Quiet: one frame's bake and calibration are summed up in the summary line below.
+        lodController.emplace(gpu, lodOptions, nullptr);
         options.standIns = lodController->select(camera, size);
     }
     FrameResult result = renderer.render(gpu, camera, size, technique.get(), options);

@@ -70,10 +70,15 @@ nlohmann::json lodReport(const lod::LodController& controller) {
 
 std::string lodSummary(const lod::LodController& controller) {
     const lod::LodSelection& s = controller.selection();
-    char line[256];
-    std::snprintf(line, sizeof line, "lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors",
-                  lod::to_string(controller.options().mode), s.impostorObjects, s.objects.size(), s.impostorsUsed,
-                  double(s.impostorBytes) / 1e6);
+    char line[320];
+    int n = std::snprintf(line, sizeof line, "lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors",
+                          lod::to_string(controller.options().mode), s.impostorObjects, s.objects.size(),
+                          s.impostorsUsed, double(s.impostorBytes) / 1e6);
+    if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedMeshes() > 0)
+        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d meshes baked in %.0f ms", set->bakedMeshes(),
+                           set->bakeMs());
+    if (const auto& c = controller.calibration())
+        std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model calibrated in %.0f ms", c->wallMs);
     return line;
 }
 
