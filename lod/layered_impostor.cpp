@@ -18,7 +18,7 @@ namespace strata::lod {
 
 namespace {
 
-constexpr int kFloatsPerVertex = 7;  // position xyz (attribute 0), u v layer slice (attribute 2)
+constexpr int kFloatsPerVertex = kStandInFloatsPerVertex;
 constexpr int kVerticesPerQuad = 6;  // two triangles, glMultiDrawArrays(GL_TRIANGLES)
 // Slice acceptance is decided in float on the GPU; the CPU's rectangles count a texel for every
 // slice within this much (in slice units) of the rule's boundary, so they never miss one.
@@ -210,15 +210,7 @@ void LayeredImpostor::buildQuads() {
     quadBuffer_ = gl::Buffer::create();
     glNamedBufferStorage(quadBuffer_.id(), GLsizeiptr(std::max<std::size_t>(vertexBytes_, 4)),
                          vertices.empty() ? nullptr : vertices.data(), 0);
-    quadArray_ = gl::VertexArray::create();
-    const GLuint vao = quadArray_.id();
-    glVertexArrayVertexBuffer(vao, 0, quadBuffer_.id(), 0, kFloatsPerVertex * sizeof(float));
-    glEnableVertexArrayAttrib(vao, 0);
-    glEnableVertexArrayAttrib(vao, 2);
-    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
-    glVertexArrayAttribBinding(vao, 0, 0);
-    glVertexArrayAttribBinding(vao, 2, 0);
+    quadArray_ = makeStandInVertexArray(quadBuffer_.id());
 }
 
 void LayeredImpostor::findHoleSlices(GLuint meshArray, GLsizei indexCount) {

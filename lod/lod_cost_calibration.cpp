@@ -10,7 +10,9 @@
 #include "gl/objects.hpp"
 #include "gl/saved_state.hpp"
 #include "gl/shader_program.hpp"
+#include "render/gpu_scene.hpp"
 #include "render/scene_program.hpp"
+#include "render/stand_in.hpp"
 #include "scene/mesh_builders.hpp"
 
 #include <glm/glm.hpp>
@@ -44,38 +46,6 @@ constexpr int kTimedPasses = 3;   // the fastest pass counts
 constexpr int kTargetSize = 192;  // the framebuffer: the largest viewport
 
 
-struct GpuMesh {
-    gl::Buffer vertices, indices;
-    gl::VertexArray vertexArray;
-    GLsizei indexCount = 0;
-};
-
-// Interleaved position + normal, attributes 0 and 1: the layout of render/gpu_scene.cpp.
-GpuMesh upload(const Mesh& mesh) {
-    GpuMesh g;
-    std::vector<float> interleaved;
-    interleaved.reserve(mesh.positions.size() * 6);
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const glm::vec3 p = mesh.positions[i], n = mesh.normals[i];
-        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-    }
-    g.vertices = gl::Buffer::create();
-    g.indices = gl::Buffer::create();
-    glNamedBufferStorage(g.vertices.id(), GLsizeiptr(interleaved.size() * sizeof(float)), interleaved.data(), 0);
-    glNamedBufferStorage(g.indices.id(), GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(), 0);
-    g.vertexArray = gl::VertexArray::create();
-    const GLuint vao = g.vertexArray.id();
-    glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 6 * sizeof(float));
-    glVertexArrayElementBuffer(vao, g.indices.id());
-    glEnableVertexArrayAttrib(vao, 0);
-    glEnableVertexArrayAttrib(vao, 1);
-    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
-    glVertexArrayAttribBinding(vao, 0, 0);
-    glVertexArrayAttribBinding(vao, 1, 0);
-    g.indexCount = GLsizei(mesh.indices.size());
-    return g;
-}
 
 // A stack of `slices` viewport-filling quads (two triangles each), nearest first, with the
 // impostor vertex layout: attribute 0 position (clip space), attribute 2 (u, v, layer, slice).
@@ -97,15 +67,7 @@ GpuSlices makeSlices(int slices) {
     GpuSlices g;
     g.vertices = gl::Buffer::create();
     glNamedBufferStorage(g.vertices.id(), GLsizeiptr(data.size() * sizeof(float)), data.data(), 0);
-    g.vertexArray = gl::VertexArray::create();
-    const GLuint vao = g.vertexArray.id();
-    glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 7 * sizeof(float));
-    glEnableVertexArrayAttrib(vao, 0);
-    glEnableVertexArrayAttrib(vao, 2);
-    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-    glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
-    glVertexArrayAttribBinding(vao, 0, 0);
-    glVertexArrayAttribBinding(vao, 2, 0);
+    g.vertexArray = makeStandInVertexArray(g.vertices.id());
     g.vertexCount = GLsizei(slices * 6);
     return g;
 }
@@ -232,7 +194,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         std::vector<LodCalibrationPoint> points;
         for (const GeometryCase& g : kGeometryCases) {
             const Mesh mesh = makeBumpyBlob(g.segments);
-            GpuMesh gpu = upload(mesh);
+            GpuMesh gpu = uploadMesh(mesh);
             glBindVertexArray(gpu.vertexArray.id());
             const int side = g.viewport;
             if (progress)
@@ -279,11 +241,22 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
 
     // ---- impostor: ms = fixed + per layer pixel ----
     {
-        gl::Program program = gl::buildProgram({"lod/calibrate_slices.vert.glsl", "lod/calibrate_slices.frag.glsl"});
+        // The frame's own path: the opaque scene program, its fragment wrapper's alpha test
+        // (common/scene_main.glsl) and shading, with identity matrices so the stack's
+        // positions are clip coordinates.
+        const SceneProgram scene = buildSceneProgram("common/opaque.frag.glsl");
+        const gl::Program& program = scene.program;
         glUseProgram(program.id());
+        const glm::mat4 identity(1.0f);
+        const glm::mat3 identity3(1.0f);
+        glProgramUniformMatrix4fv(program.id(), scene.viewProj, 1, GL_FALSE, &identity[0][0]);
+        glProgramUniformMatrix4fv(program.id(), scene.model, 1, GL_FALSE, &identity[0][0]);
+        glProgramUniformMatrix3fv(program.id(), scene.normalMatrix, 1, GL_FALSE, &identity3[0][0]);
+        glProgramUniform1i(program.id(), scene.impostor, 1);
+        glProgramUniform1f(program.id(), scene.impostorOverlap, 0.5f);  // the default overlap
         gl::Texture atlas = makeAtlas();
-        glBindTextureUnit(gpu::BIND_SOURCE, atlas.id());
-        const GLint slicesAt = glGetUniformLocation(program.id(), "uSlices");
+        glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, atlas.id());
+        const GLint slicesAt = scene.impostorSlices;
         std::vector<glm::dvec3> x;
         std::vector<double> ms;
         std::vector<double> residuals;
@@ -307,7 +280,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
                 ms.push_back(p.ms);
             }
         }
-        glBindTextureUnit(gpu::BIND_SOURCE, 0);
+        glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
         const glm::dvec3 c = fitNonNegative(x, ms, false);
         calibration.model.impostorFixedMs = c.x;
         calibration.model.impostorMsPerMegapixel = c.y;

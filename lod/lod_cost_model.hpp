@@ -72,7 +72,7 @@ struct LodCalibration {
 // depth/blend/cull state are restored). Geometry: a dense procedural mesh (makeBumpyBlob) at two
 // triangle counts (a 4x step), each at a tiny and a small viewport, covered pixels counted by a
 // samples-passed query; impostor: a stack of alpha-tested textured quads
-// (shaders/lod/calibrate_slices.*, the impostor alpha test's work per pixel) with two slice
+// (the frame's own opaque scene program with its impostor alpha test, common/scene_main.glsl) with two slice
 // counts at two viewport areas. Each point: one warm-up draw, the fastest of three timed
 // (gl::GpuTimer), each timed pass several draws averaged. Least squares per curve, slopes
 // kept non-negative (a negative slope, from noise, is dropped and the rest refit).

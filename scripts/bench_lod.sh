@@ -11,7 +11,7 @@
 # against impostors (20 views, 128 px) per slice count; the measured on-screen size where the
 # impostor stops being cheaper, next to the cost model's prediction (lod/lod_cost_model.hpp
 # crossoverSizePx for 46080 triangles) when the bench JSON carries the calibrated model as
-# "lod_model": {geometry_fixed_ms, geometry_ms_per_megatriangle, geometry_ms_per_megapixel,
+# "lod": {"model": {geometry_fixed_ms, geometry_ms_per_megatriangle, geometry_ms_per_megapixel,
 # impostor_fixed_ms, impostor_ms_per_megapixel}.
 # Each run's JSON and first frame stay in the output folder; the table goes to stdout (markdown).
 #
@@ -160,21 +160,22 @@ def load(name):
     row = report['modes'][0]
     ms = row.get('frame_ms_median', row.get('ms_median'))
     field = lambda k: row.get(k, report.get(k, 0))
-    return ms, field('impostor_objects'), field('impostor_bytes')
+    return ms, field('impostor_objects'), field('impostor_bytes'), row.get('psnr', 0.0)
 
 def first_frame(name):
     return os.path.join(out, name, mode + '.png')
 
 geo = f'geometry-{tag}'
-geo_ms, _, _ = load(geo)
-print(f'### Layered impostors on {scene} at {size} ({mode}; median GPU frame ms; PSNR of the first frame against geometry)\n')
+geo_ms = load(geo)[0]
+print(f'### Layered impostors on {scene} at {size} ({mode}; median GPU frame ms; PSNR against geometry: the bench\'s, '
+      f'linear RGB over every frame, and of the first frame\'s 8-bit sRGB PNG)\n')
 print(f'geometry: {geo_ms:.2f} ms\n')
-print('| lod | views | slices | image | ms | speedup | PSNR dB | impostor objects | impostor MB |')
-print('|---|---:|---:|---:|---:|---:|---:|---:|---:|')
+print('| lod | views | slices | image | ms | speedup | PSNR dB linear | PSNR dB sRGB 8-bit | impostor objects | impostor MB |')
+print('|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
 def row(name, label, v='-', l='-', r='-'):
-    ms, objects, nbytes = load(name)
+    ms, objects, nbytes, linear = load(name)
     p = psnr(first_frame(geo), first_frame(name))
-    print(f'| {label} | {v} | {l} | {r} | {ms:.2f} | {geo_ms / ms:.2f}x | {p:.2f} | {objects} | {nbytes / 1e6:.3f} |')
+    print(f'| {label} | {v} | {l} | {r} | {ms:.2f} | {geo_ms / ms:.2f}x | {linear:.2f} | {p:.2f} | {objects} | {nbytes / 1e6:.3f} |')
 row(f'auto-{tag}', 'auto')
 for v in views:
     for l in slices:
@@ -191,11 +192,14 @@ impostor = {(c, l): load(f'crossover-impostors-{c}-l{l}')[0] for c in crossover_
 for c in crossover_sizes:
     print(f'| {c}x{c} | {FRACTION * int(c):.0f} | {geometry[c]:.2f} | ' +
           ' | '.join(f'{impostor[(c, l)]:.2f}' for l in slices) + ' |')
-with open(os.path.join(out, f'crossover-geometry-{crossover_sizes[0]}.json')) as f:
-    model = json.load(f).get('lod_model')
+model = None  # the cost model the auto run calibrated (geometry runs measure none)
+for name in sorted(os.listdir(out)):
+    if name.startswith('auto-') and name.endswith('.json'):
+        with open(os.path.join(out, name)) as f:
+            model = model or (json.load(f).get('lod') or {}).get('model')
 def predicted(l):
     if not model:
-        return 'n/a (no lod_model in the bench JSON)'
+        return 'n/a (no lod.model in the bench JSON: run with --lod auto)'
     growth = (model['impostor_ms_per_megapixel'] * l - model['geometry_ms_per_megapixel']) * 1e-6
     margin = model['geometry_fixed_ms'] + model['geometry_ms_per_megatriangle'] * TRIANGLES * 1e-6 - model['impostor_fixed_ms']
     if growth <= 0:

@@ -413,7 +413,6 @@ std::vector<ProgramCase> programCases() {
         {{"lod/slice_id.vert.glsl", "lod/slice_id.frag.glsl"}, {}, {{"uAtlas", tex(BIND_SLICE_ATLAS)}}},
         // lod cost calibration (lod/lod_cost_calibration.cpp)
         {{scene, "lod/calibrate_mesh.frag.glsl"}, {}, {}},
-        {{"lod/calibrate_slices.vert.glsl", "lod/calibrate_slices.frag.glsl"}, {}, {{"uAtlas", tex(BIND_SOURCE)}}},
     };
 }
 

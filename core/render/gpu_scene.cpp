@@ -8,39 +8,41 @@
 
 namespace strata {
 
+GpuMesh uploadMesh(const Mesh& mesh) {
+    if (mesh.normals.size() != mesh.positions.size())
+        throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.normals.size()) +
+                                 " normals for " + std::to_string(mesh.positions.size()) + " positions");
+    std::vector<float> interleaved;
+    interleaved.reserve(mesh.positions.size() * 6);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const auto& p = mesh.positions[i];
+        const auto& n = mesh.normals[i];
+        interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
+    }
+    GpuMesh g;
+    g.vertexArray = gl::VertexArray::create();
+    g.vertices = gl::Buffer::create();
+    g.indices = gl::Buffer::create();
+    glNamedBufferStorage(g.vertices.id(), GLsizeiptr(std::max<std::size_t>(interleaved.size(), 1) * sizeof(float)),
+                         interleaved.empty() ? nullptr : interleaved.data(), 0);
+    glNamedBufferStorage(g.indices.id(), GLsizeiptr(std::max<std::size_t>(mesh.indices.size(), 1) * 4),
+                         mesh.indices.empty() ? nullptr : mesh.indices.data(), 0);
+    GLuint vao = g.vertexArray.id();
+    glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 6 * sizeof(float));
+    glVertexArrayElementBuffer(vao, g.indices.id());
+    glEnableVertexArrayAttrib(vao, 0);
+    glEnableVertexArrayAttrib(vao, 1);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    glVertexArrayAttribBinding(vao, 1, 0);
+    g.indexCount = GLsizei(mesh.indices.size());
+    return g;
+}
+
 GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(scene_)) {
     meshes_.reserve(scene_.meshes.size());
-    for (const Mesh& mesh : scene_.meshes) {
-        if (mesh.normals.size() != mesh.positions.size())
-            throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.normals.size()) +
-                                     " normals for " + std::to_string(mesh.positions.size()) + " positions");
-        std::vector<float> interleaved;
-        interleaved.reserve(mesh.positions.size() * 6);
-        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-            const auto& p = mesh.positions[i];
-            const auto& n = mesh.normals[i];
-            interleaved.insert(interleaved.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-        }
-        GpuMesh g;
-        g.vertexArray = gl::VertexArray::create();
-        g.vertices = gl::Buffer::create();
-        g.indices = gl::Buffer::create();
-        glNamedBufferStorage(g.vertices.id(), GLsizeiptr(std::max<std::size_t>(interleaved.size(), 1) * sizeof(float)),
-                             interleaved.empty() ? nullptr : interleaved.data(), 0);
-        glNamedBufferStorage(g.indices.id(), GLsizeiptr(std::max<std::size_t>(mesh.indices.size(), 1) * 4),
-                             mesh.indices.empty() ? nullptr : mesh.indices.data(), 0);
-        GLuint vao = g.vertexArray.id();
-        glVertexArrayVertexBuffer(vao, 0, g.vertices.id(), 0, 6 * sizeof(float));
-        glVertexArrayElementBuffer(vao, g.indices.id());
-        glEnableVertexArrayAttrib(vao, 0);
-        glEnableVertexArrayAttrib(vao, 1);
-        glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
-        glVertexArrayAttribBinding(vao, 0, 0);
-        glVertexArrayAttribBinding(vao, 1, 0);
-        g.indexCount = GLsizei(mesh.indices.size());
-        meshes_.push_back(std::move(g));
-    }
+    for (const Mesh& mesh : scene_.meshes) meshes_.push_back(uploadMesh(mesh));
     volumes_ = classifyVolumes(scene_, objects_);
     for (std::size_t i = 0; i < objects_.size(); ++i) {
         const ObjectVolume& v = volumes_[i];

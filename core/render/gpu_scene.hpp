@@ -20,6 +20,10 @@ struct GpuMesh {
     GLsizei indexCount = 0;
 };
 
+// Uploads one mesh in the layout every scene program reads (attributes 0 position, 1 normal).
+// Throws when the normals do not match the positions.
+GpuMesh uploadMesh(const Mesh& mesh);
+
 class GpuScene {
 public:
     explicit GpuScene(Scene scene);

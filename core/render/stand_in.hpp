@@ -5,6 +5,8 @@
 // with the object's uniforms, and every scene program's fragment stage runs the impostor alpha
 // test first (shaders/common/scene_main.glsl), so each technique sees a stand-in's fragments as
 // it sees a mesh's. render/ knows only this description; lod/ decides what stands in for what.
+#include "gl/objects.hpp"
+
 #include <epoxy/gl.h>
 
 #include <vector>
@@ -28,5 +30,13 @@ struct StandInDraw {
 // Per object (indexed like GpuScene::objects()): what draws in its place, or null for its own
 // triangles. Held by the caller for the frame.
 using StandIns = std::vector<const StandInDraw*>;
+
+// A stand-in's vertex: position xyz (attribute 0), then u, v, atlas layer, slice (attribute 2),
+// all floats, interleaved in one buffer.
+inline constexpr int kStandInFloatsPerVertex = 7;
+
+// The vertex array that reads `buffer` in that layout (attribute 1, the normal, stays off: the
+// atlas has the normals).
+gl::VertexArray makeStandInVertexArray(GLuint buffer);
 
 }  // namespace strata

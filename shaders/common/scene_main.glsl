@@ -6,6 +6,7 @@
 // technique's body, so a rejected texel never reaches a counter, an image store or a colour.
 #undef main
 #include "bindings.h"
+#include "impostor_accept.glsl"
 
 uniform int uImpostorSlices;
 uniform float uImpostorOverlap;
@@ -24,16 +25,7 @@ void main() {
         ivec2 size = textureSize(uImpostorAtlas, 0).xy;
         ivec2 texel = clamp(ivec2(vImpostor.uv * vec2(size)), ivec2(0), size - 1);
         vec4 stored = texelFetch(uImpostorAtlas, ivec3(texel, vImpostor.layer.x), 0);
-        int code = int(round(stored.a * 255.0));
-        if (code == 0) discard;
-        float t = (float(code) - 0.5) / 255.0;
-        int slice = vImpostor.layer.y;
-        float slices = float(uImpostorSlices);
-        if (uImpostorOverlap <= 0.0) {
-            if (min(int(t * slices), uImpostorSlices - 1) != slice) discard;
-        } else if (abs(t - (float(slice) + 0.5) / slices) > (0.5 + uImpostorOverlap) / slices) {
-            discard;
-        }
+        if (!impostorAccepts(stored.a, vImpostor.layer.y, uImpostorSlices, uImpostorOverlap)) discard;
         strataImpostorNormal = normalize(uNormalMatrix * (stored.rgb * 2.0 - 1.0));
     }
     strataSceneFragmentMain();

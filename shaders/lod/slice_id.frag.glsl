@@ -2,7 +2,7 @@
 // Hole-filling preprocessing: the contract's alpha test, then the slice's id (1 + layer-local
 // peel * slices + slice) so the host can tell which slices show through another view's holes.
 #include "lod/lod_bindings.h"
-#include "lod/impostor_accept.glsl"
+#include "common/impostor_accept.glsl"
 
 layout(binding = BIND_SLICE_ATLAS) uniform sampler2DArray uAtlas;
 uniform int uSlices;

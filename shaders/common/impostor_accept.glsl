@@ -1,5 +1,5 @@
-// The impostor alpha test of lod-contract.md, shared by lod/'s id render (and usable by any
-// scene pass): does slice `slice` of `slices` accept the texel whose alpha holds depth code
+// The layered impostor's alpha test, shared by every scene program's fragment wrapper
+// (common/scene_main.glsl) and lod/'s hole-filling id render: does slice `slice` of `slices` accept the texel whose alpha holds depth code
 // `code` (0 empty, else t = (code - 0.5) / 255 over the slab), with `overlap` slice widths of
 // reach on each side? lod/layered_impostor.cpp's rectangles apply the same rule on the CPU.
 #ifndef STRATA_IMPOSTOR_ACCEPT_GLSL

@@ -1,0 +1,18 @@
+#include "render/stand_in.hpp"
+
+namespace strata {
+
+gl::VertexArray makeStandInVertexArray(GLuint buffer) {
+    gl::VertexArray array = gl::VertexArray::create();
+    const GLuint vao = array.id();
+    glVertexArrayVertexBuffer(vao, 0, buffer, 0, kStandInFloatsPerVertex * sizeof(float));
+    glEnableVertexArrayAttrib(vao, 0);
+    glEnableVertexArrayAttrib(vao, 2);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribFormat(vao, 2, 4, GL_FLOAT, GL_FALSE, 3 * sizeof(float));
+    glVertexArrayAttribBinding(vao, 0, 0);
+    glVertexArrayAttribBinding(vao, 2, 0);
+    return array;
+}
+
+}  // namespace strata
