@@ -244,7 +244,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         // The frame's own path: the opaque scene program, its fragment wrapper's alpha test
         // (common/scene_main.glsl) and shading, with identity matrices so the stack's
         // positions are clip coordinates.
-        const SceneProgram scene = buildSceneProgram("common/opaque.frag.glsl");
+        const SceneProgram scene = buildSceneProgram("common/opaque.frag.glsl", {{"STRATA_IMPOSTOR", ""}});
         const gl::Program& program = scene.program;
         glUseProgram(program.id());
         const glm::mat4 identity(1.0f);
@@ -252,7 +252,6 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         glProgramUniformMatrix4fv(program.id(), scene.viewProj, 1, GL_FALSE, &identity[0][0]);
         glProgramUniformMatrix4fv(program.id(), scene.model, 1, GL_FALSE, &identity[0][0]);
         glProgramUniformMatrix3fv(program.id(), scene.normalMatrix, 1, GL_FALSE, &identity3[0][0]);
-        glProgramUniform1i(program.id(), scene.impostor, 1);
         glProgramUniform1f(program.id(), scene.impostorOverlap, 0.5f);  // the default overlap
         gl::Texture atlas = makeAtlas();
         glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, atlas.id());

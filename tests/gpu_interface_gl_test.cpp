@@ -413,6 +413,9 @@ std::vector<ProgramCase> programCases() {
         {{"lod/slice_id.vert.glsl", "lod/slice_id.frag.glsl"}, {}, {{"uAtlas", tex(BIND_SLICE_ATLAS)}}},
         // lod cost calibration (lod/lod_cost_calibration.cpp)
         {{scene, "lod/calibrate_mesh.frag.glsl"}, {}, {}},
+        // stand-in variants (render/scene_program.hpp): the opaque pass's and a list store's
+        {{scene, "common/opaque.frag.glsl"}, {{"STRATA_IMPOSTOR", ""}}, {}},
+        {{scene, "oit/buffers/ll_store.frag.glsl"}, {{"STRATA_IMPOSTOR", ""}}, with(lists, {{"uNodeCount", kCounters}})},
     };
 }
 
@@ -484,13 +487,14 @@ TEST_CASE("every binding point the host binds is the one the linked program repo
         for (const auto& s : c.stages) label += (label.empty() ? "" : " + ") + s;
         for (const auto& [name, value] : c.defines) label += " -D" + name;
         INFO(label);
-        // A scene program's fragment stage is wrapped (render/scene_program.hpp): it also samples
-        // a stand-in's atlas, which GpuScene::draw binds.
+        // A scene program's fragment stage is wrapped (render/scene_program.hpp); its stand-in
+        // variant (STRATA_IMPOSTOR) also samples the impostor atlas, which GpuScene::draw binds.
         const bool sceneProgram = c.stages.front() == "common/scene.vert.glsl";
         gl::Program program =
             gl::buildProgram(c.stages, c.defines, sceneProgram ? sceneFragmentWrap() : gl::StageWrap{});
         auto expected = c.expected;
-        if (sceneProgram) expected.emplace("uImpostorAtlas", tex(gpu::BIND_IMPOSTOR_ATLAS));
+        if (sceneProgram && c.defines.count("STRATA_IMPOSTOR"))
+            expected.emplace("uImpostorAtlas", tex(gpu::BIND_IMPOSTOR_ATLAS));
         const auto reported = reportedBindings(program.id());
         for (const auto& [name, want] : expected) {
             INFO(name, ": the host binds ", unitName(want.unit), " ", want.point);

@@ -66,7 +66,7 @@ void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProj
     glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(scene_.lightDirection));
 }
 
-void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
+void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
     const Object& o = objects_[objectIndex];
     const Material& m = scene_.materials[o.material];
     glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(o.world)));
@@ -80,21 +80,32 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
     glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
     glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
     glProgramUniform1i(program, p.volumeEntry, volumeEntry_[std::size_t(objectIndex)]);
-    glProgramUniform1i(program, p.impostor, standIn ? 1 : 0);
+}
+
+void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
     if (standIn) {
-        glProgramUniform1i(program, p.impostorSlices, standIn->slices);
-        glProgramUniform1f(program, p.impostorOverlap, standIn->overlap);
-        glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, standIn->atlas);
-        if (standIn->first.empty()) return;
-        glBindVertexArray(standIn->vertexArray);
-        glMultiDrawArrays(GL_TRIANGLES, standIn->first.data(), standIn->count.data(),
-                          GLsizei(standIn->first.size()));
+        drawStandIn(p, objectIndex, *standIn);
         return;
     }
-    const GpuMesh& mesh = meshes_[o.mesh];
+    setObjectUniforms(p, objectIndex);
+    const GpuMesh& mesh = meshes_[objects_[objectIndex].mesh];
     if (mesh.indexCount == 0) return;
     glBindVertexArray(mesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+}
+
+void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandInDraw& standIn) const {
+    if (standIn.first.empty()) return;
+    // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
+    const SceneProgram& variant = p.standInVariant();
+    setObjectUniforms(variant, objectIndex);
+    glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
+    glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);
+    glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, standIn.atlas);
+    glUseProgram(variant.id());
+    glBindVertexArray(standIn.vertexArray);
+    glMultiDrawArrays(GL_TRIANGLES, standIn.first.data(), standIn.count.data(), GLsizei(standIn.first.size()));
+    glUseProgram(p.id());  // the pass goes on with its own program bound
 }
 
 }  // namespace strata

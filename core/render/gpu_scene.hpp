@@ -50,6 +50,9 @@ public:
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
 
 private:
+    void setObjectUniforms(const SceneProgram& program, int objectIndex) const;
+    void drawStandIn(const SceneProgram& program, int objectIndex, const StandInDraw& standIn) const;
+
     Scene scene_;
     std::vector<Object> objects_;
     std::vector<GpuMesh> meshes_;

@@ -1,18 +1,15 @@
 #include "render/scene_program.hpp"
 
+#include <set>
+
 namespace strata {
+namespace {
 
-gl::StageWrap sceneFragmentWrap() { return {"common/scene_prelude.glsl", "common/scene_main.glsl"}; }
-
-SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines) {
-    return buildSceneProgram(std::vector<std::string>{fragmentStage}, defines);
-}
-
-SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, const gl::Defines& defines) {
-    std::vector<std::string> stages{"common/scene.vert.glsl"};
-    stages.insert(stages.end(), laterStages.begin(), laterStages.end());
+SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines defines) {
     SceneProgram p;
     p.program = gl::buildProgram(stages, defines, sceneFragmentWrap());
+    p.stages = std::move(stages);
+    p.defines = std::move(defines);
     GLuint id = p.program.id();
     p.viewProj = glGetUniformLocation(id, "uViewProj");
     p.model = glGetUniformLocation(id, "uModel");
@@ -25,10 +22,83 @@ SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, cons
     p.tau = glGetUniformLocation(id, "uTau");
     p.albedo = glGetUniformLocation(id, "uAlbedo");
     p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
-    p.impostor = glGetUniformLocation(id, "uImpostor");
     p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
     p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
     return p;
+}
+
+}  // namespace
+
+struct SceneProgram::Variant {
+    SceneProgram program;
+    std::vector<UniformCopy> copies;
+};
+
+gl::StageWrap sceneFragmentWrap() { return {"common/scene_prelude.glsl", "common/scene_main.glsl"}; }
+
+SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines) {
+    return buildSceneProgram(std::vector<std::string>{fragmentStage}, defines);
+}
+
+SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, const gl::Defines& defines) {
+    std::vector<std::string> stages{"common/scene.vert.glsl"};
+    stages.insert(stages.end(), laterStages.begin(), laterStages.end());
+    return buildFromStages(std::move(stages), defines);
+}
+
+const SceneProgram& SceneProgram::standInVariant() const {
+    if (!variant_) {
+        auto v = std::make_shared<Variant>();
+        gl::Defines defines = this->defines;
+        defines["STRATA_IMPOSTOR"] = "";
+        v->program = buildFromStages(stages, defines);
+        // Every plain uniform of this program except the per-object ones GpuScene::draw sets on
+        // whichever program draws (samplers, images and blocks bind by layout, not by value).
+        const std::set<std::string> perObject = {"uModel", "uNormalMatrix", "uBaseColor", "uAlpha", "uObjectId",
+                                                 "uAlphaCutoff", "uTau", "uAlbedo", "uVolumeEntry"};
+        GLint count = 0;
+        glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
+        for (GLint i = 0; i < count; ++i) {
+            char name[256];
+            GLint size = 0;
+            GLenum type = 0;
+            glGetActiveUniform(id(), GLuint(i), sizeof name, nullptr, &size, &type, name);
+            std::string base = name;
+            if (auto bracket = base.find('['); bracket != std::string::npos) base.resize(bracket);
+            if (perObject.count(base)) continue;
+            for (GLint element = 0; element < size; ++element) {
+                const std::string at = size > 1 ? base + "[" + std::to_string(element) + "]" : std::string(name);
+                UniformCopy c{glGetUniformLocation(id(), at.c_str()),
+                              glGetUniformLocation(v->program.id(), at.c_str()), type};
+                if (c.from >= 0 && c.to >= 0) v->copies.push_back(c);
+            }
+        }
+        variant_ = std::move(v);
+    }
+    const GLuint from = id(), to = variant_->program.id();
+    for (const UniformCopy& c : variant_->copies) {
+        GLfloat f[16];
+        GLint i[4];
+        GLuint u[4];
+        switch (c.type) {
+        case GL_FLOAT: glGetUniformfv(from, c.from, f); glProgramUniform1fv(to, c.to, 1, f); break;
+        case GL_FLOAT_VEC2: glGetUniformfv(from, c.from, f); glProgramUniform2fv(to, c.to, 1, f); break;
+        case GL_FLOAT_VEC3: glGetUniformfv(from, c.from, f); glProgramUniform3fv(to, c.to, 1, f); break;
+        case GL_FLOAT_VEC4: glGetUniformfv(from, c.from, f); glProgramUniform4fv(to, c.to, 1, f); break;
+        case GL_FLOAT_MAT3: glGetUniformfv(from, c.from, f); glProgramUniformMatrix3fv(to, c.to, 1, GL_FALSE, f); break;
+        case GL_FLOAT_MAT4: glGetUniformfv(from, c.from, f); glProgramUniformMatrix4fv(to, c.to, 1, GL_FALSE, f); break;
+        case GL_INT: case GL_BOOL: glGetUniformiv(from, c.from, i); glProgramUniform1iv(to, c.to, 1, i); break;
+        case GL_INT_VEC2: case GL_BOOL_VEC2: glGetUniformiv(from, c.from, i); glProgramUniform2iv(to, c.to, 1, i); break;
+        case GL_INT_VEC3: case GL_BOOL_VEC3: glGetUniformiv(from, c.from, i); glProgramUniform3iv(to, c.to, 1, i); break;
+        case GL_INT_VEC4: case GL_BOOL_VEC4: glGetUniformiv(from, c.from, i); glProgramUniform4iv(to, c.to, 1, i); break;
+        case GL_UNSIGNED_INT: glGetUniformuiv(from, c.from, u); glProgramUniform1uiv(to, c.to, 1, u); break;
+        case GL_UNSIGNED_INT_VEC2: glGetUniformuiv(from, c.from, u); glProgramUniform2uiv(to, c.to, 1, u); break;
+        case GL_UNSIGNED_INT_VEC3: glGetUniformuiv(from, c.from, u); glProgramUniform3uiv(to, c.to, 1, u); break;
+        case GL_UNSIGNED_INT_VEC4: glGetUniformuiv(from, c.from, u); glProgramUniform4uiv(to, c.to, 1, u); break;
+        default: break;  // samplers, images, atomic counters: bound by layout(binding) in both
+        }
+    }
+    return variant_->program;
 }
 
 }  // namespace strata

@@ -2,8 +2,15 @@
 // A program that draws scene meshes (shaders/common/scene.vert.glsl plus a fragment stage),
 // with the locations of the per-frame and per-object uniforms looked up once. A stage that
 // does not use a uniform has location -1, which GL ignores, so one draw path serves all.
+//
+// Its stand-in variant (render/stand_in.hpp: layered impostors) is the same stages built with
+// STRATA_IMPOSTOR, which wraps the fragment stage in the impostor alpha test
+// (shaders/common/scene_prelude.glsl, scene_main.glsl). It is built on the first stand-in draw;
+// before each, the uniforms the technique set on the program are copied onto it, so the
+// technique never knows which of the two drew.
 #include "gl/shader_program.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,14 +21,29 @@ struct SceneProgram {
     GLint viewProj = -1, model = -1, normalMatrix = -1, baseColor = -1, alpha = -1, objectId = -1,
           lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
           volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
-          impostor = -1, impostorSlices = -1, impostorOverlap = -1;  // common/scene_main.glsl
+          impostorSlices = -1, impostorOverlap = -1;  // common/scene_main.glsl (the variant's)
 
     GLuint id() const { return program.id(); }
+
+    // The stand-in variant with this program's current uniform values (built on first use).
+    const SceneProgram& standInVariant() const;
+
+    // What building the variant needs: the stages and defines this program was built from.
+    std::vector<std::string> stages;
+    gl::Defines defines;
+
+private:
+    // One uniform the technique may set, at its location in this program and in the variant.
+    struct UniformCopy {
+        GLint from = -1, to = -1;
+        GLenum type = 0;
+    };
+    struct Variant;
+    mutable std::shared_ptr<Variant> variant_;
 };
 
 // Every scene program's fragment stage is wrapped by common/scene_prelude.glsl and
-// common/scene_main.glsl: the layered-impostor alpha test runs before the stage's own main()
-// (render/stand_in.hpp).
+// common/scene_main.glsl (the impostor alpha test, in the STRATA_IMPOSTOR build only).
 SceneProgram buildSceneProgram(const std::string& fragmentStage, const gl::Defines& defines = {});
 
 // The wrap itself, for code that builds a scene program's stages by hand (tests).

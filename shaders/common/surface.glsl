@@ -16,7 +16,7 @@ in vec3 vWorldNormal;
 
 // The interpolated mesh normal, or for a stand-in the impostor texel's (common/scene_main.glsl).
 vec3 surfaceNormal() {
-    return uImpostor ? strataImpostorNormal : vWorldNormal;
+    return kStandIn ? strataImpostorNormal : vWorldNormal;
 }
 
 vec4 surfaceColor() {

@@ -23,6 +23,7 @@ uniform vec3 uViewAxis;         // unit vector the camera looks along
 uniform float uSamplesPerUnit;  // supersampled pixels per scene unit at distance 1
 uniform uint uObjectId;
 
+#ifdef STRATA_IMPOSTOR
 // Passed on to the scene fragment wrapper (common/scene_main.glsl) under the same block name.
 in ImpostorVarying {
     vec2 uv;
@@ -32,6 +33,7 @@ out ImpostorVarying {
     vec2 uv;
     flat ivec2 layer;
 } impostorOut;
+#endif
 
 out vec3 gWorldNormal;
 out vec2 gMaskCoord;  // mask texels
@@ -49,8 +51,10 @@ void main() {
     for (int i = 0; i < 3; ++i) {
         gl_Position = gl_in[i].gl_Position;
         gWorldNormal = vWorldNormal[i];
+#ifdef STRATA_IMPOSTOR
         impostorOut.uv = impostorIn[i].uv;
         impostorOut.layer = impostorIn[i].layer;
+#endif
         gMaskCoord = offset + coords[i];
         EmitVertex();
     }

@@ -51,5 +51,5 @@ void main() {
     // Derivatives first, in uniform control flow.
     vec2 dx = dFdx(gMaskCoord), dy = dFdy(gMaskCoord);
     if (!footprintKeeps(gMaskCoord, dx, dy, uAlpha)) discard;
-    outColor = vec4(shadeSurface(uBaseColor, uImpostor ? strataImpostorNormal : gWorldNormal, uLightDir), 1.0);
+    outColor = vec4(shadeSurface(uBaseColor, kStandIn ? strataImpostorNormal : gWorldNormal, uLightDir), 1.0);
 }
