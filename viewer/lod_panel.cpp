@@ -35,8 +35,8 @@ void drawLodSection(lod::LodController& lod) {
         ImGui::Text("%d views, %d px, %d slices, overlap %.2f", is.views, is.resolution, is.slices, is.overlap);
     }
     if (s.objects.empty() || !ImGui::TreeNode("objects")) return;
-    if (ImGui::BeginTable("lod objects", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY, ImVec2(0, 200))) {
-        for (const char* h : {"object", "drawn as", "view err deg", "err px", "geom ms", "imp ms"})
+    if (ImGui::BeginTable("lod objects", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY, ImVec2(0, 200))) {
+        for (const char* h : {"object", "drawn as", "view err deg", "err px", "geom ms", "imp ms", "impostor MB"})
             ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         for (int i = 0; i < int(s.objects.size()) && i < kListedObjects; ++i) {
@@ -57,6 +57,9 @@ void drawLodSection(lod::LodController& lod) {
             ImGui::Text("%.3f", d.geometryMs);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", d.impostorMs);
+            ImGui::TableNextColumn();
+            // Its mesh's impostor, shared by every instance of the mesh.
+            if (set && set->impostorOf(i)) ImGui::Text("%.2f", double(set->impostorOf(i)->bytes().total()) / 1e6);
         }
         ImGui::EndTable();
     }
