@@ -39,7 +39,12 @@ int ImpostorSet::bakeMeshes(const std::vector<bool>& meshes) {
         if (!meshes[m] || !wanted_[m] || tried_[m]) continue;
         tried_[m] = true;
         ImpostorSettings own = settings_;
-        if (transparent_[m]) own.peels = transparentPeels_;
+        if (transparent_[m]) {
+            // Disjoint intervals whatever the peel count: an overlapping slice would blend a
+            // surface twice.
+            own.peels = transparentPeels_;
+            own.overlap = 0.0f;
+        }
         // Objects share the mesh's vertex array; find one that draws it.
         const GpuMesh* mesh = nullptr;
         for (std::size_t i = 0; i < objects.size() && !mesh; ++i)
@@ -90,7 +95,8 @@ glm::vec3 ImpostorSet::eyeInObject(int objectIndex, const glm::vec3& eyeWorld) c
 const StandInDraw* ImpostorSet::drawFor(int objectIndex, const glm::vec3& eyeWorld) {
     const LayeredImpostor* impostor = impostorOf(objectIndex);
     if (!impostor) return nullptr;
-    const bool fillHoles = impostor->settings().peels == 1;
+    // Hole-filling slices overlap the nearest view's: a transparent impostor would blend twice.
+    const bool fillHoles = !transparent_[std::size_t(scene_->objects()[std::size_t(objectIndex)].mesh)];
     StandInDraw& d = draws_[std::size_t(objectIndex)];
     d = impostor->drawFor(eyeInObject(objectIndex, eyeWorld), fillHoles);
     return &d;

@@ -18,6 +18,7 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
         in.radius = o.worldBounds.radius();
         in.triangles = scene_.scene().meshes[std::size_t(o.mesh)].triangleCount();
         in.impostor.id = o.mesh;  // instances of one mesh share its impostor
+        in.transparent = scene_.scene().materials[std::size_t(o.material)].isTransparent();
     }
 }
 
@@ -51,11 +52,13 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         if (!impostor) continue;
         inputs_[i].impostor.slices = impostor->settings().slices;
         inputs_[i].impostor.resolution = impostor->settings().resolution;
+        inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
     }
 }
 
-// The share of the full slice squares the nearest view's rectangles cover: what the fill costs.
+// The share of the full slice squares the nearest view's rectangles cover, over all peels (so up
+// to `peels`): what the fill costs.
 double LodController::drawnFraction(int objectIndex, const glm::vec3& eyeWorld) const {
     const LayeredImpostor* impostor = impostors_->impostorOf(objectIndex);
     const ImpostorSettings& s = impostor->settings();

@@ -39,6 +39,7 @@ const char* to_string(LodReason reason) {
     case LodReason::ErrorAboveBound: return "error above bound";
     case LodReason::GeometryCheaper: return "geometry cheaper";
     case LodReason::ImpostorCheaper: return "impostor cheaper";
+    case LodReason::TransparentAuto: return "transparent (auto)";
     }
     return "?";
 }
@@ -74,7 +75,7 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
 
     if (object.hasImpostor) {
         const ImpostorSummary& s = object.impostor;
-        d.impostorMs = model.impostorMs(double(std::max(s.slices, 1)) * squarePx * std::clamp(s.drawnFraction, 0.0, 1.0));
+        d.impostorMs = model.impostorMs(double(std::max(s.slices, 1)) * squarePx * std::clamp(s.drawnFraction, 0.0, double(std::max(s.peels, 1))));
         const ImpostorError e = impostorError(d.projectedPx, s.slices, s.resolution, s.viewAngleRadians);
         d.parallaxPx = e.parallaxPx;
         d.samplingPx = e.samplingPx;
@@ -87,6 +88,7 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
         d.reason = LodReason::ImpostorsForced;
         return d;
     }
+    if (object.transparent) return geometry(LodReason::TransparentAuto);
     if (d.errorPx > options.maxErrorPx) return geometry(LodReason::ErrorAboveBound);
     if (d.impostorMs >= d.geometryMs) return geometry(LodReason::GeometryCheaper);
     d.impostor = true;
@@ -129,6 +131,7 @@ std::string explain(const LodDecision& d, const LodObjectInput& object, const Lo
                       kTooCloseRadii, double(object.radius));
         return line;
     case LodReason::GeometryForced: return "geometry: forced (--lod geometry)";
+    case LodReason::TransparentAuto: return "geometry: transparent, impostors only with --lod impostors";
     case LodReason::NoImpostor: return "geometry: no impostor baked";
     case LodReason::ImpostorsForced:
         std::snprintf(line, sizeof line, "impostor: forced (--lod impostors), error %.2f px", d.errorPx);

@@ -51,6 +51,7 @@ struct ImpostorSummary {
     double viewAngleRadians = 0.0; // from the eye direction to the nearest baked view
     std::uint64_t bytes = 0;       // its memory (Table 2's formula + rectangles)
     double drawnFraction = 1.0;    // of the full slice squares actually drawn (per-slice rectangles)
+    int peels = 1;                 // images per view (2 for a transparent mesh): drawnFraction <= peels
 };
 
 struct LodObjectInput {
@@ -58,6 +59,11 @@ struct LodObjectInput {
     float radius = 0.0f;
     std::uint64_t triangles = 0;
     bool hasImpostor = false;
+    // Auto leaves transparent objects geometry (only --lod impostors draws them as impostors):
+    // the techniques that count fragments by occlusion queries under early fragment tests
+    // (dual-ll/fab, the coplanar variants' totals, wboit, stochastic) would count the slice
+    // texels the alpha test rejects.
+    bool transparent = false;
     ImpostorSummary impostor;
 };
 
@@ -83,6 +89,7 @@ enum class LodReason {
     ErrorAboveBound,  // geometry: the impostor's error exceeds maxErrorPx
     GeometryCheaper,  // geometry: predicted no slower than the impostor
     ImpostorCheaper,  // impostor: predicted faster, error within the bound
+    TransparentAuto,  // geometry: transparent, and the mode is auto (LodObjectInput::transparent)
 };
 const char* to_string(LodReason reason);
 

@@ -239,9 +239,9 @@ TEST_CASE("lod impostor render: a transparent sphere's peels through ll match it
     CHECK(c.meanAbs < kTransparentMean);
     CHECK(c.coverageMismatch < kCoverageAtView);
     // One peel only (the back surface missing) is measurably worse: both faces are needed
-    // (measured 1.94x the two-peel error on llvmpipe).
+    // (measured 1.63x the two-peel error on llvmpipe).
     ImpostorSet onePeel(*fx.gpu, settingsWith(64), 1);
     const Comparison single = renderBoth(fx, onePeel, cameraAlong(*fx.gpu, set.impostorOf(0)->directions()[2]), "ll");
     MESSAGE("one peel: mean abs ", single.meanAbs);
-    CHECK(single.meanAbs > 1.5 * c.meanAbs);
+    CHECK(single.meanAbs > 1.3 * c.meanAbs);
 }

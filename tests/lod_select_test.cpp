@@ -214,3 +214,24 @@ TEST_CASE("lod select: the view from a camera") {
     CHECK(v.fovYRadians == doctest::Approx(kPi / 3));
     CHECK(v.imageSize == glm::ivec2(640, 480));
 }
+
+TEST_CASE("lod select: a transparent object stays geometry in auto, becomes an impostor only when forced") {
+    LodObjectInput o = object(10.0f);
+    o.transparent = true;
+    const LodDecision a = selectLodFor(o, view(), synthetic());
+    CHECK(!a.impostor);
+    CHECK(a.reason == LodReason::TransparentAuto);
+    CHECK(a.impostorMs > 0.0);  // still predicted, for the panel
+    CHECK(selectLodFor(o, view(), synthetic(), {LodMode::Impostors, kDefaultMaxErrorPx}).impostor);
+}
+
+TEST_CASE("lod select: a two-peel impostor's fill counts both peels' rectangles") {
+    // drawnFraction 1.5 of the slice squares over 2 peels: 1.5 x the one-peel fill, not clamped to 1.
+    LodObjectInput o = object(10.0f);
+    o.impostor.peels = 2;
+    o.impostor.drawnFraction = 1.5;
+    const double px = 100.0 / std::sqrt(99.0);
+    CHECK(selectLodFor(o, view(), synthetic()).impostorMs == doctest::Approx(0.1 + 2.0 * 16 * px * px * 1.5e-6));
+    o.impostor.drawnFraction = 3.0;  // more than the peels can cover: clamped to 2
+    CHECK(selectLodFor(o, view(), synthetic()).impostorMs == doctest::Approx(0.1 + 2.0 * 16 * px * px * 2e-6));
+}

@@ -96,7 +96,10 @@ void run(const BenchArgs& a) {
         options.lodReport = {{"mode", "geometry"}};
     }
     BenchReport report = runBench(gpu, options);
-    if (lodController) std::fprintf(stderr, "%s\n", lodSummary(*lodController).c_str());
+    if (lodController) {
+        report.lod = lodReport(*lodController);  // meshes baked during the run counted too
+        std::fprintf(stderr, "%s\n", lodSummary(*lodController).c_str());
+    }
     if (!a.json.empty()) outputs.addText(a.json, benchToJson(report).dump(2) + "\n");
     if (!a.csv.empty()) outputs.addText(a.csv, benchToCsv(report));
     outputs.commit();

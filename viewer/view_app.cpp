@@ -334,11 +334,13 @@ private:
             techniqueSettings_[techniqueId_] = settings_.technique;
         }
         zoom_.begin(scene_, camera_, size, technique_.get(), frameOptions);
-        frameOptions.standIns = standIns_ = lod_->select(camera_, size);
         // The heatmap is of the frame drawn: shown at the window's size, it needs zoom 1.
         if (frameOptions.detectCoplanarity) frameOptions.zoom = 1;
         try {
             frameOk_ = false;
+            // A failed bake or calibration (an edited shader) is reported like a failed frame.
+            standIns_ = nullptr;
+            frameOptions.standIns = standIns_ = lod_->select(camera_, size);
             frame_ = renderer_->render(scene_, camera_, size, technique_.get(), frameOptions);
             zoom_.end(frame_, technique_.get());
             frameOk_ = true;

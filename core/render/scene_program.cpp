@@ -1,6 +1,8 @@
 #include "render/scene_program.hpp"
 
+#include <cstdio>
 #include <set>
+#include <stdexcept>
 
 namespace strata {
 namespace {
@@ -25,6 +27,37 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
     p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
     return p;
+}
+
+// The uniform types standInVariant copies by value (the switch below).
+bool copyable(GLenum type) {
+    switch (type) {
+    case GL_FLOAT: case GL_FLOAT_VEC2: case GL_FLOAT_VEC3: case GL_FLOAT_VEC4: case GL_FLOAT_MAT3: case GL_FLOAT_MAT4:
+    case GL_INT: case GL_INT_VEC2: case GL_INT_VEC3: case GL_INT_VEC4:
+    case GL_BOOL: case GL_BOOL_VEC2: case GL_BOOL_VEC3: case GL_BOOL_VEC4:
+    case GL_UNSIGNED_INT: case GL_UNSIGNED_INT_VEC2: case GL_UNSIGNED_INT_VEC3: case GL_UNSIGNED_INT_VEC4:
+        return true;
+    default: return false;
+    }
+}
+
+// Samplers, images and atomic counters: both programs take them from layout(binding).
+bool boundByLayout(GLenum type) {
+    switch (type) {
+    case GL_SAMPLER_2D: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_2D_MULTISAMPLE: case GL_SAMPLER_3D:
+    case GL_SAMPLER_2D_SHADOW: case GL_UNSIGNED_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+    case GL_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_BUFFER: case GL_SAMPLER_BUFFER:
+    case GL_IMAGE_2D: case GL_IMAGE_2D_ARRAY: case GL_UNSIGNED_INT_IMAGE_2D: case GL_UNSIGNED_INT_IMAGE_2D_ARRAY:
+    case GL_INT_IMAGE_2D: case GL_UNSIGNED_INT_IMAGE_BUFFER: case GL_UNSIGNED_INT_ATOMIC_COUNTER:
+        return true;
+    default: return false;
+    }
+}
+
+std::string hex(GLenum value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%x", unsigned(value));
+    return text;
 }
 
 }  // namespace
@@ -66,6 +99,9 @@ const SceneProgram& SceneProgram::standInVariant() const {
             std::string base = name;
             if (auto bracket = base.find('['); bracket != std::string::npos) base.resize(bracket);
             if (perObject.count(base)) continue;
+            if (!copyable(type) && !boundByLayout(type))
+                throw std::runtime_error("scene program " + stages.back() + ": uniform " + base +
+                                         " has a type the stand-in variant cannot copy (0x" + hex(type) + ")");
             for (GLint element = 0; element < size; ++element) {
                 const std::string at = size > 1 ? base + "[" + std::to_string(element) + "]" : std::string(name);
                 UniformCopy c{glGetUniformLocation(id(), at.c_str()),
