@@ -416,6 +416,8 @@ std::vector<ProgramCase> programCases() {
         // stand-in variants (render/scene_program.hpp): the opaque pass's and a list store's
         {{scene, "common/opaque.frag.glsl"}, {{"STRATA_IMPOSTOR", ""}}, {}},
         {{scene, "oit/buffers/ll_store.frag.glsl"}, {{"STRATA_IMPOSTOR", ""}}, with(lists, {{"uNodeCount", kCounters}})},
+        {{scene, "oit/screendoor/object_mask.geom.glsl", "oit/screendoor/screendoor_object.frag.glsl"},
+         {{"STRATA_IMPOSTOR", ""}}, {{"uAlphaMasks", tex(BIND_ALPHA_MASKS)}}},
     };
 }
 

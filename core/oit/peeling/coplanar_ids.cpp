@@ -2,6 +2,7 @@
 
 #include "oit/peeling/peel_bindings.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace strata::peeling {
@@ -12,7 +13,15 @@ bool CoplanarIds::bind(const FrameContext& frame) {
     std::uint64_t next = 0;
     for (std::size_t o = 0; o < objects.size(); ++o) {
         base[o] = GLuint(std::min<std::uint64_t>(next, 0xFFFFFFFFu));
-        next += frame.scene.scene().meshes[std::size_t(objects[o].mesh)].triangleCount();
+        std::uint64_t primitives = frame.scene.scene().meshes[std::size_t(objects[o].mesh)].triangleCount();
+        // A stand-in's primitive ids run over its slice quads' triangles (from 0 in each draw of
+        // its multi-draw, so their sum bounds them): the range must hold those instead.
+        if (const StandInDraw* standIn = frame.standIns ? (*frame.standIns)[o] : nullptr) {
+            std::uint64_t quadTriangles = 0;
+            for (GLsizei count : standIn->count) quadTriangles += std::uint64_t(count) / 3;
+            primitives = std::max(primitives, quadTriangles);
+        }
+        next += primitives;
     }
     const std::size_t bytes = base.size() * sizeof(GLuint);
     if (bytes > capacity_) {
