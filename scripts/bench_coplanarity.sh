@@ -41,7 +41,7 @@ done
 scenes="coplanar:1 coplanar:2 coplanar:4 coplanar:8 coplanar:16 layers:2 layers:4 layers:8 layers:16"
 for s in $scenes; do
     echo "bench_coplanarity.sh: builtin:$s at $size" >&2
-    "$strata" bench "builtin:$s" --modes "$modes" --size "$size" --frames "$frames" --warmup 1 \
+    "$strata" bench "builtin:$s" --lod geometry --modes "$modes" --size "$size" --frames "$frames" --warmup 1 \
         --json "$out/sweep-${s/:/-}.json" >/dev/null
 done
 models=""

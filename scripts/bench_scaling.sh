@@ -44,7 +44,7 @@ mkdir -p "$out/runs"
 bench() {
     local name=$1 scene=$2 size=$3
     echo "== $name: $scene at $size" >&2
-    "$strata" bench "$scene" --size "$size" --modes "$modes" --frames "$frames" --warmup "$warmup" \
+    "$strata" bench "$scene" --lod geometry --size "$size" --modes "$modes" --frames "$frames" --warmup "$warmup" \
         --csv "$out/runs/$name.csv" --json "$out/runs/$name.json" > "$out/runs/$name.txt"
     cat "$out/runs/$name.txt"
 }

@@ -45,7 +45,7 @@ for name in "${names[@]}"; do
     for n in "${levels[@]}"; do
         run=$out/runs/screendoor-$name-n$n
         echo "== ${scenes[$name]} at $size, supersampling $n" >&2
-        "$strata" bench "${scenes[$name]}" --size "$size" --modes "$modes" --frames "$frames" --warmup "$warmup" \
+        "$strata" bench "${scenes[$name]}" --lod geometry --size "$size" --modes "$modes" --frames "$frames" --warmup "$warmup" \
             --set "supersampling=$n" --csv "$run.csv" --json "$run.json" > "$run.txt"
         [[ -s $out/screendoor-$name.csv.partial ]] || echo "supersampling,$(head -n1 "$run.csv")" >> "$out/screendoor-$name.csv.partial"
         tail -n +2 "$run.csv" | sed "s/^/$n,/" >> "$out/screendoor-$name.csv.partial"

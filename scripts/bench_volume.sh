@@ -30,7 +30,7 @@ export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 for size in $sizes; do
     for n in $layers; do
         echo "bench_volume.sh: slabs:$n at $size" >&2
-        "$strata" bench "builtin:slabs:$n" --modes abuffer,abuffer-volume,ll,ll-volume --size "$size" \
+        "$strata" bench "builtin:slabs:$n" --lod geometry --modes abuffer,abuffer-volume,ll,ll-volume --size "$size" \
             --frames "$frames" --warmup 1 --set "capacity=$((2 * n))" --json "$out/slabs-$n-$size.json" >/dev/null
     done
 done

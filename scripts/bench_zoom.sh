@@ -49,18 +49,18 @@ export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 scene=builtin:layers:$layers
 for z in 1 2 3 4 5 6 7 8; do
     echo "bench_zoom.sh: $scene at $size, zoom $z" >&2
-    "$strata" bench "$scene" --modes "$modes" --size "$size" --frames "$frames" --warmup 1 --zoom "$z" \
+    "$strata" bench "$scene" --lod geometry --modes "$modes" --size "$size" --frames "$frames" --warmup 1 --zoom "$z" \
         --json "$out/speed-z$z.json" >/dev/null
     if (( z > 1 )); then  # image error where there are edges: the demo room, replicated and blurred
-        "$strata" bench builtin:default --modes abuffer --size "$size" --frames 1 --warmup 0 --zoom "$z" \
+        "$strata" bench builtin:default --lod geometry --modes abuffer --size "$size" --frames 1 --warmup 0 --zoom "$z" \
             --json "$out/error-z$z.json" >/dev/null
-        "$strata" bench builtin:default --modes abuffer --size "$size" --frames 1 --warmup 0 --zoom "$z" --zoom-blur \
+        "$strata" bench builtin:default --lod geometry --modes abuffer --size "$size" --frames 1 --warmup 0 --zoom "$z" --zoom-blur \
             --json "$out/blur-z$z.json" >/dev/null
     fi
 done
 for controller in reactive predictive; do
     echo "bench_zoom.sh: $budget_mode under a $budget_ms ms budget, $controller, at $budget_size" >&2
-    "$strata" bench "builtin:layers:16" --modes "$budget_mode" --size "$budget_size" --frames "$budget_frames" \
+    "$strata" bench "builtin:layers:16" --lod geometry --modes "$budget_mode" --size "$budget_size" --frames "$budget_frames" \
         --warmup 1 --camera-path "$root/scenes/paths/zoom-load-jumps.path" --frame-budget-ms "$budget_ms" \
         --zoom-controller "$controller" --zoom-max 8 --json "$out/budget-$controller.json" >/dev/null
 done

@@ -170,7 +170,7 @@ bench() {
     note "[$n/$total] $name: $scene at $size $extra ..."
     t0=$(date +%s.%N)
     # shellcheck disable=SC2086  # extra is a list of arguments
-    timeout --kill-after=30 "$limit" "$strata" bench "$scene" $extra --size "$size" \
+    timeout --kill-after=30 "$limit" "$strata" bench "$scene" --lod geometry $extra --size "$size" \
         --frames "$frames" --warmup "$warmup" --json "$out/runs/$name.json" --csv "$out/runs/$name.csv" \
         >"$out/runs/$name.txt" 2>"$out/runs/$name.err"
     rc=$?

@@ -10,7 +10,7 @@ strata=${STRATA:-build/viewer/strata}
 json=$(mktemp --suffix=.json)
 trap 'rm -f "$json"' EXIT
 echo "pass_costs: $strata bench $scene --modes all --size $size --frames $frames" >&2
-"$strata" bench "$scene" --modes all --size "$size" --frames "$frames" --json "$json" >/dev/null
+"$strata" bench "$scene" --lod geometry --modes all --size "$size" --frames "$frames" --json "$json" >/dev/null
 python3 - "$json" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
