@@ -24,8 +24,8 @@ float ImpostorFrame::sliceDistance(int slice, int slices) const {
     return slabNear() + 2.0f * radius * (float(slice) + 0.5f) / float(slices);
 }
 
-std::array<glm::vec3, 4> ImpostorFrame::sliceQuad(int slice, int slices, const UvRect& rect) const {
-    const float t = (float(slice) + 0.5f) / float(slices);
+std::array<glm::vec3, 4> ImpostorFrame::sliceQuad(int slice, int slices, const UvRect& rect, float offsetSlices) const {
+    const float t = (float(slice) + 0.5f + offsetSlices) / float(slices);
     return {fromUvt({rect.min.x, rect.min.y, t}), fromUvt({rect.max.x, rect.min.y, t}),
             fromUvt({rect.max.x, rect.max.y, t}), fromUvt({rect.min.x, rect.max.y, t})};
 }

@@ -44,8 +44,9 @@ struct ImpostorFrame {
     // Distance from the apex of slice s's plane: the middle of its interval [s/L, (s+1)/L) of t.
     float sliceDistance(int slice, int slices) const;
     // The quad of slice s (corners counter-clockwise seen from the apex) restricted to
-    // `rect`: corners at (min.x,min.y), (max.x,min.y), (max.x,max.y), (min.x,max.y).
-    std::array<glm::vec3, 4> sliceQuad(int slice, int slices, const UvRect& rect = {}) const;
+    // `rect`: corners at (min.x,min.y), (max.x,min.y), (max.x,max.y), (min.x,max.y); the plane moved
+    // `offsetSlices` slice widths along the axis (negative: towards the apex).
+    std::array<glm::vec3, 4> sliceQuad(int slice, int slices, const UvRect& rect = {}, float offsetSlices = 0.0f) const;
     // Object-space point -> (u, v, t). Inside the sphere all three lie in [0, 1].
     glm::vec3 toUvt(const glm::vec3& p) const;
     // (u, v, t) -> object-space point (the inverse of toUvt).

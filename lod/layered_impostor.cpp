@@ -195,7 +195,10 @@ void LayeredImpostor::buildQuads() {
                 // Texel x covers u in [x / res, (x + 1) / res).
                 const UvRect uv{{float(r.x0) / res, float(r.y0) / res},
                                 {float(r.x1 + 1) / res, float(r.y1 + 1) / res}};
-                const auto q = f.sliceQuad(s, L, uv);
+                // Peel p's surfaces lie behind peel 0's on every ray (nearer the apex): its quads
+                // sit p quarter-slices nearer the apex, so a pixel's two peels in one slice are
+                // not coplanar fragments (which one-layer-per-depth peeling would merge).
+                const auto q = f.sliceQuad(s, L, uv, -0.25f * float(p));
                 const glm::vec2 c[4] = {uv.min, {uv.max.x, uv.min.y}, uv.max, {uv.min.x, uv.max.y}};
                 first_[i] = GLint(vertices.size() / kFloatsPerVertex);
                 count_[i] = kVerticesPerQuad;

@@ -59,10 +59,10 @@ struct LodObjectInput {
     float radius = 0.0f;
     std::uint64_t triangles = 0;
     bool hasImpostor = false;
-    // Auto leaves transparent objects geometry (only --lod impostors draws them as impostors):
-    // the techniques that count fragments by occlusion queries under early fragment tests
-    // (dual-ll/fab, the coplanar variants' totals, wboit, stochastic) would count the slice
-    // texels the alpha test rejects.
+    // Auto leaves transparent objects geometry; only --lod impostors draws them as impostors.
+    // Their composite is what the techniques are compared on, and an impostor moves each
+    // surface to its slice plane (within half a slice): orders within a slice, and so the
+    // blend, can change where the techniques' exact answers would not.
     bool transparent = false;
     ImpostorSummary impostor;
 };

@@ -12,5 +12,16 @@ const bool kStandIn = true;
 const bool kStandIn = false;
 #endif
 
+// Early fragment tests for a pass whose fragments have no side effects (no image store, no
+// atomic): the test then only saves work. In the stand-in variant the wrapper discards, and
+// under early tests an occlusion query counts samples before the shader runs, so the texels the
+// alpha test rejects would be counted; that variant tests late instead. Passes with side
+// effects keep layout(early_fragment_tests): the wrapper discards before any of them.
+#ifdef STRATA_IMPOSTOR
+#define STRATA_EARLY_TESTS_NO_SIDE_EFFECTS
+#else
+#define STRATA_EARLY_TESTS_NO_SIDE_EFFECTS layout(early_fragment_tests) in;
+#endif
+
 // The impostor texel's normal, in world space: what surfaceNormal() returns for a stand-in.
 vec3 strataImpostorNormal;

@@ -5,7 +5,7 @@
 // multiplies the exact total transmittance, T *= (1 - alpha), blended (ZERO, ONE_MINUS_SRC_COLOR).
 #include "stochastic_common.glsl"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_SAMPLE_DEPTHS, r32ui) uniform readonly uimage2DArray uSampleDepths;
 
 layout(location = 0) out vec4 outAccum;

@@ -4,7 +4,7 @@
 // Location 1 is blended with (ZERO, ONE_MINUS_SRC_COLOR): revealage *= (1 - alpha).
 #include "surface.glsl"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(location = 0) out vec4 outAccum;
 layout(location = 1) out vec4 outRevealage;
 

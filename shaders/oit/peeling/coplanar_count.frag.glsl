@@ -11,7 +11,7 @@
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(location = 0) out vec4 outCount;
 #ifdef SUM_COLOR

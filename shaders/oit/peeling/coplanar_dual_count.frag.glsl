@@ -9,7 +9,7 @@
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uFrontState;
 layout(binding = BIND_COPLANAR_STATE + BIND_COPLANAR_BACK_OFFSET) uniform sampler2D uBackState;
 layout(location = 0) out vec4 outFrontCount;

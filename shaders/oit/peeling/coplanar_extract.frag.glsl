@@ -11,7 +11,7 @@
 #include "coplanar_ids.glsl"
 
 #ifdef COPLANAR_ONLY
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 #endif
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;

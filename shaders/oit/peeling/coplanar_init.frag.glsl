@@ -4,7 +4,7 @@
 // MIN-blended (the farthest); the host masks the id channels, so they keep their cleared, open
 // ranges. GL_SAMPLES_PASSED (early tests, no discard) counts every fragment in front of the
 // opaque depth: the total that peeling runs down to.
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(location = 0) out vec4 outFront;
 layout(location = 1) out vec4 outBack;
 

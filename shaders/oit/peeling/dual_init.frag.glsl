@@ -3,7 +3,7 @@
 // r and minus the farthest in g (reversed-Z: nearer is larger). The host counts the fragments
 // in front of the opaque depth with a GL_SAMPLES_PASSED query (early depth test, no discard).
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(location = 0) out vec2 outMinMax;
 
 void main() {

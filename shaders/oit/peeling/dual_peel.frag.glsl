@@ -10,7 +10,7 @@
 #include "surface.glsl"
 #include "peel_bindings.h"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;
 
 layout(location = 0) out vec2 outMinMax;

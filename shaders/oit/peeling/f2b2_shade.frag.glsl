@@ -4,7 +4,7 @@
 // coincident ones through, like f2b's strict test does) and blends it under the accumulation.
 #include "surface.glsl"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(location = 0) out vec4 outColor;
 
 void main() {

@@ -13,7 +13,7 @@
 #include "layer_tie.glsl"
 #include "layer_store.glsl"
 
-layout(early_fragment_tests) in;
+STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uPreviousLayer;
 layout(binding = BIND_PEEL_LAYER) uniform sampler2D uLayer;
