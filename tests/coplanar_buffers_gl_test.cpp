@@ -171,9 +171,13 @@ TEST_CASE("reversed submission order changes nothing") {
             CAPTURE(id);
             auto forward = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id));
             auto backward = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id), reversed);
-            // A layer composites in scene order, whatever order its fragments arrived in. Not
-            // bit-equal: on a GPU another arrival order fills the pools in another order, and
-            // nothing promises the same float rounding; 1e-6 is far below any misordering.
+            // A layer composites in scene order, whatever order its fragments arrived in. That
+            // holds only while every fragment fits: a bounded variant keeps the first K to
+            // arrive, and arrival order is the GPU's. So the premise is checked first. Not
+            // bit-equal either: on a GPU another arrival order fills the pools in another order,
+            // and nothing promises the same float rounding; 1e-6 is far below any misordering.
+            REQUIRE(forward.result.stats.fragmentsDropped == 0);
+            REQUIRE(backward.result.stats.fragmentsDropped == 0);
             CHECK(compareImages(forward.image, backward.image).maxAbsError <= 1e-6);
             CHECK(forward.result.stats.fragmentsCaptured == backward.result.stats.fragmentsCaptured);
             CHECK(compareImages(backward.image, reference).maxAbsError <= kTolerance);
