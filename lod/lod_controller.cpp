@@ -4,6 +4,26 @@
 #include <stdexcept>
 
 namespace strata::lod {
+namespace {
+
+// Per view, the share of the full slice squares its rectangles cover, over all peels (so up to
+// `peels`): what the fill costs. Fixed once baked, so worked out once per mesh.
+std::vector<double> drawnFractions(const LayeredImpostor& impostor) {
+    const ImpostorSettings& s = impostor.settings();
+    std::vector<double> fractions(std::size_t(s.views), 0.0);
+    for (int view = 0; view < s.views; ++view) {
+        double texels = 0.0;
+        for (int peel = 0; peel < s.peels; ++peel)
+            for (int slice = 0; slice < s.slices; ++slice) {
+                const SliceRect r = impostor.rectangle(view, peel, slice);
+                if (!r.empty()) texels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
+            }
+        fractions[std::size_t(view)] = texels / (double(s.resolution) * s.resolution * s.slices);
+    }
+    return fractions;
+}
+
+}  // namespace
 
 LodController::LodController(const GpuScene& scene, const LodOptions& options, std::ostream* progress)
     : scene_(scene), options_(options), progress_(progress) {
@@ -46,6 +66,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             wanted[std::size_t(mesh)] = any = true;
     }
     if (!any || impostors_->bakeMeshes(wanted) == 0) return;
+    viewFractions_.resize(scene_.scene().meshes.size());
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
         inputs_[i].hasImpostor = impostor != nullptr;
@@ -54,22 +75,9 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         inputs_[i].impostor.resolution = impostor->settings().resolution;
         inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
+        auto& fractions = viewFractions_[std::size_t(scene_.objects()[i].mesh)];
+        if (fractions.empty()) fractions = drawnFractions(*impostor);
     }
-}
-
-// The share of the full slice squares the nearest view's rectangles cover, over all peels (so up
-// to `peels`): what the fill costs.
-double LodController::drawnFraction(int objectIndex, const glm::vec3& eyeWorld) const {
-    const LayeredImpostor* impostor = impostors_->impostorOf(objectIndex);
-    const ImpostorSettings& s = impostor->settings();
-    const int view = impostor->nearestView(impostors_->eyeInObject(objectIndex, eyeWorld));
-    double texels = 0.0;
-    for (int peel = 0; peel < s.peels; ++peel)
-        for (int slice = 0; slice < s.slices; ++slice) {
-            const SliceRect r = impostor->rectangle(view, peel, slice);
-            if (!r.empty()) texels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
-        }
-    return texels / (double(s.resolution) * s.resolution * s.slices);
 }
 
 const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
@@ -93,8 +101,11 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
     bakeCandidates(view, model);
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         if (!inputs_[i].hasImpostor) continue;
-        inputs_[i].impostor.viewAngleRadians = impostors_->nearestViewAngle(int(i), camera.position);
-        inputs_[i].impostor.drawnFraction = drawnFraction(int(i), camera.position);
+        const LayeredImpostor& impostor = *impostors_->impostorOf(int(i));
+        const glm::vec3 eye = impostors_->eyeInObject(int(i), camera.position);
+        const int nearest = impostor.nearestView(eye);
+        inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(eye);
+        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(scene_.objects()[i].mesh)][std::size_t(nearest)];
     }
     selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     std::vector<bool> use(inputs_.size());

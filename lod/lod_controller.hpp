@@ -48,7 +48,6 @@ public:
 
 private:
     void bakeCandidates(const LodView& view, const LodCostModel& model);
-    double drawnFraction(int objectIndex, const glm::vec3& eyeWorld) const;
 
     const GpuScene& scene_;
     LodOptions options_;
@@ -59,6 +58,7 @@ private:
     LodSelection selection_;
     StandIns standIns_;
     glm::vec3 lastEye_{0.0f};
+    std::vector<std::vector<double>> viewFractions_;  // per mesh, per view (drawnFractions)
 };
 
 }  // namespace strata::lod
