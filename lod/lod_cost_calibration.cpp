@@ -205,8 +205,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             glBeginQuery(GL_SAMPLES_PASSED, samples.id());
             draw();
             glEndQuery(GL_SAMPLES_PASSED);
-            GLuint64 passed = 0;
-            glGetQueryObjectui64v(samples.id(), GL_QUERY_RESULT, &passed);
+            const std::uint64_t passed = gl::queryResult(samples);
             LodCalibrationPoint p;
             p.kind = LodCalibrationPoint::Kind::Geometry;
             p.triangles = double(mesh.triangleCount());

@@ -67,6 +67,12 @@ using Query = Handle<QueryTraits>;
 
 inline Texture createTexture(GLenum target) { GLuint n = 0; glCreateTextures(target, 1, &n); return Texture(n); }
 inline Query createQuery(GLenum target) { GLuint n = 0; glCreateQueries(target, 1, &n); return Query(n); }
+// The query's result, waiting for it (a sample count, a primitive count, a timestamp).
+inline std::uint64_t queryResult(const Query& query) {
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(query.id(), GL_QUERY_RESULT, &n);
+    return n;
+}
 
 // A 2D texture with immutable storage, nearest filtering, clamped.
 Texture createTexture2D(GLenum internalFormat, int width, int height);

@@ -50,8 +50,7 @@ public:
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
         if (half) copyColor(frame, target, frame.targets.outputFramebuffer());
-        GLuint64 blended = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
+        const std::uint64_t blended = gl::queryResult(samples_);
         stats_.fragmentsCaptured = blended;
         stats_.bytes = half ? std::uint64_t(frame.size.x) * frame.size.y * floatTexelBytes(settings_.precision, 4) : 0;
     }

@@ -43,8 +43,7 @@ public:
             glEndQuery(GL_SAMPLES_PASSED);
             // Read inside the timed pass, as blend-unsorted does: the wait for the result makes a
             // deferred rasterizer (llvmpipe) finish this pass's fragments before its end stamp.
-            GLuint64 rasterized = 0;
-            glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &rasterized);
+            const std::uint64_t rasterized = gl::queryResult(samples_);
             stats_.fragmentsCaptured = rasterized;
         }
         stats_.passes = 1;

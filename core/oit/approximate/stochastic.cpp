@@ -86,8 +86,7 @@ public:
         }
         stats_.passes = 3;
         stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * (std::uint64_t(samples) * 4 + AccumulationTargets::bytesPerPixel(settings_.precision));
-        GLuint64 blended = 0;
-        glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &blended);
+        const std::uint64_t blended = gl::queryResult(query_);
         stats_.fragmentsCaptured = blended;
     }
 

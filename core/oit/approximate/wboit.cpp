@@ -75,8 +75,7 @@ public:
         }
         stats_.passes = 2;
         stats_.bytes = std::uint64_t(frame.size.x) * frame.size.y * AccumulationTargets::bytesPerPixel(settings_.precision);
-        GLuint64 blended = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
+        const std::uint64_t blended = gl::queryResult(samples_);
         stats_.fragmentsCaptured = blended;
     }
 

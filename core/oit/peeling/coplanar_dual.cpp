@@ -143,12 +143,6 @@ private:
         }
     }
 
-    std::uint64_t samplesResult() {
-        GLuint64 n = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &n);
-        return n;
-    }
-
     std::uint64_t initialise(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, "dual-2p init");
         glBindFramebuffer(GL_FRAMEBUFFER, initFbo_.id());
@@ -164,7 +158,7 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        return samplesResult();
+        return gl::queryResult(samples_);
     }
 
     void count(const FrameContext& frame) {
@@ -210,7 +204,7 @@ private:
                 glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
                 drawFullscreen(frame, program);
                 glEndQuery(GL_SAMPLES_PASSED);
-                (minCount == 2 ? c.coplanar : c.any) += samplesResult();
+                (minCount == 2 ? c.coplanar : c.any) += gl::queryResult(samples_);
             }
         }
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

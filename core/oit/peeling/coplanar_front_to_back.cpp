@@ -152,12 +152,6 @@ private:
         if (threePass_) glBindTextureUnit(gpu::BIND_COPLANAR_NEXT_DEPTH, nextDepth_.id());
     }
 
-    std::uint64_t samplesResult() {
-        GLuint64 n = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &n);
-        return n;
-    }
-
     // MAX of the depth into the state's r (the other channels masked): the first anchors.
     std::uint64_t initialise(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, "coplanar init");
@@ -173,7 +167,7 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        return samplesResult();
+        return gl::queryResult(samples_);
     }
 
     // f2b-3p: the nearest fragment beyond each pixel's layer into nextDepth_.
@@ -221,7 +215,7 @@ private:
         drawFullscreen(frame, checkProgram_.id());
         glEndQuery(GL_SAMPLES_PASSED);
         ++stats_.passes;
-        return samplesResult();
+        return gl::queryResult(samples_);
     }
 
     // The id-min and id-max fragments' colours; returns the fragments extracted (f2b-3p, late
@@ -241,7 +235,7 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        return threePass_ ? samplesResult() : 0;
+        return threePass_ ? gl::queryResult(samples_) : 0;
     }
 
     // Returns the pixels that captured at least one fragment.
@@ -256,7 +250,7 @@ private:
         drawFullscreen(frame, resolveProgram_.id());
         glEndQuery(GL_SAMPLES_PASSED);
         ++stats_.passes;
-        return samplesResult();
+        return gl::queryResult(samples_);
     }
 
     void composite(const FrameContext& frame) {

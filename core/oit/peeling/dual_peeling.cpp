@@ -118,8 +118,7 @@ private:
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        GLuint64 total = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &total);
+        const std::uint64_t total = gl::queryResult(samples_);
         return total;
     }
 

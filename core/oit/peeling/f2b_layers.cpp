@@ -218,8 +218,7 @@ private:
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
         ++stats.passes;
-        GLuint64 anchors = 0;
-        glGetQueryObjectui64v(anchors_.id(), GL_QUERY_RESULT, &anchors);
+        const std::uint64_t anchors = gl::queryResult(anchors_);
         return anchors;
     }
 

@@ -168,8 +168,7 @@ private:
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        GLuint64 captured = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &captured);
+        const std::uint64_t captured = gl::queryResult(samples_);
         return captured;
     }
 
@@ -188,8 +187,7 @@ private:
         glDisable(GL_BLEND);
         glDisable(GL_STENCIL_TEST);
         ++stats_.passes;
-        GLuint64 captured = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &captured);
+        const std::uint64_t captured = gl::queryResult(samples_);
         return captured;
     }
 

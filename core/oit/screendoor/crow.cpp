@@ -57,8 +57,7 @@ public:
         stats_.objectDraws = drawTransparent(frame, program_, sortedBackToFront(frame));
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
-        GLuint64 blended = 0;
-        glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &blended);
+        const std::uint64_t blended = gl::queryResult(samples_);
         stats_.fragmentsCaptured = blended;
     }
 

@@ -46,8 +46,7 @@ TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const PassParam
             glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
             stats.objectDraws += draw(tileFrame, tile.origin * n);
             glEndQuery(GL_SAMPLES_PASSED);
-            GLuint64 tileKept = 0;
-            glGetQueryObjectui64v(samples_.id(), GL_QUERY_RESULT, &tileKept);
+            const std::uint64_t tileKept = gl::queryResult(samples_);
             kept += tileKept;
         }
         gl::ScopedPass pass(frame.timer, std::string(parameters.name) + " box filter");
