@@ -40,6 +40,7 @@ const char* to_string(LodReason reason) {
     case LodReason::GeometryCheaper: return "geometry cheaper";
     case LodReason::ImpostorCheaper: return "impostor cheaper";
     case LodReason::TransparentAuto: return "transparent (auto)";
+    case LodReason::MaterialAuto: return "material not baked (auto)";
     }
     return "?";
 }
@@ -89,6 +90,7 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
         return d;
     }
     if (object.transparent) return geometry(LodReason::TransparentAuto);
+    if (object.materialNotBaked) return geometry(LodReason::MaterialAuto);
     if (d.errorPx > options.maxErrorPx) return geometry(LodReason::ErrorAboveBound);
     if (d.impostorMs >= d.geometryMs) return geometry(LodReason::GeometryCheaper);
     d.impostor = true;
@@ -132,6 +134,9 @@ std::string explain(const LodDecision& d, const LodObjectInput& object, const Lo
         return line;
     case LodReason::GeometryForced: return "geometry: forced (--lod geometry)";
     case LodReason::TransparentAuto: return "geometry: transparent, impostors only with --lod impostors";
+    case LodReason::MaterialAuto:
+        return "geometry: texture, vertex colours or MASK (the impostor bakes normals only), impostors only with "
+               "--lod impostors";
     case LodReason::NoImpostor: return "geometry: no impostor baked";
     case LodReason::ImpostorsForced:
         std::snprintf(line, sizeof line, "impostor: forced (--lod impostors), error %.2f px", d.errorPx);

@@ -64,6 +64,9 @@ struct LodObjectInput {
     // surface to its slice plane (within half a slice): orders within a slice, and so the
     // blend, can change where the techniques' exact answers would not.
     bool transparent = false;
+    // The impostor bake stores normals only: a textured, vertex-coloured or MASK material would
+    // lose its texture, colours or cut-out. Auto leaves such objects geometry too.
+    bool materialNotBaked = false;
     ImpostorSummary impostor;
 };
 
@@ -90,6 +93,7 @@ enum class LodReason {
     GeometryCheaper,  // geometry: predicted no slower than the impostor
     ImpostorCheaper,  // impostor: predicted faster, error within the bound
     TransparentAuto,  // geometry: transparent, and the mode is auto (LodObjectInput::transparent)
+    MaterialAuto,     // geometry: textured, vertex colours or MASK, and the mode is auto
 };
 const char* to_string(LodReason reason);
 

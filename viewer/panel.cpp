@@ -144,6 +144,9 @@ void drawScene(const PanelState& state) {
     ImGui::Text("objects %zu (opaque %zu, transparent %zu)", scene.objects().size(), scene.opaqueObjects().size(),
                 scene.transparentObjects().size());
     ImGui::Text("triangles %zu", scene.triangleCount());
+    if (scene.textureBytes() > 0)
+        ImGui::Text("textures %zu (%.1f MiB on the GPU)", scene.scene().images.size(),
+                    double(scene.textureBytes()) / (1024.0 * 1024.0));
     if (!b.empty()) {
         glm::vec3 e = b.max - b.min;
         ImGui::Text("bounds %.3g x %.3g x %.3g", e.x, e.y, e.z);

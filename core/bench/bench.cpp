@@ -90,6 +90,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     report.frames = options.frames;
     report.device = gl::currentDeviceInfo();
     report.triangles = scene.triangleCount();
+    report.textureBytes = scene.textureBytes();
     report.objects = scene.objects().size();
     report.zoom = options.budget ? 0 : options.zoom;
     report.zoomFilter = std::string(deflectFilterName(options.zoomFilter));

@@ -127,6 +127,7 @@ struct BenchReport {
     double coplanarityProbability = 0.0;
     double coplanarityOnePerLayerRobustness = 1.0;  // layers / fragments: R_h of plain f2b, dual, bun
     std::size_t triangles = 0;
+    std::size_t textureBytes = 0;  // decoded textures on the GPU, mip levels included
     std::size_t objects = 0;
     int zoom = 1;
     std::string zoomFilter = "nearest";

@@ -97,6 +97,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"coplanarity_probability", finite(r.coplanarityProbability)},
         {"coplanarity_one_per_layer_robustness", finite(r.coplanarityOnePerLayerRobustness)},
         {"triangles", r.triangles},
+        {"texture_bytes", r.textureBytes},
         {"objects", r.objects},
         {"zoom", r.zoom},
         {"zoom_filter", r.zoomFilter},

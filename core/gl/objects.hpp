@@ -56,6 +56,10 @@ struct TextureTraits {
 struct QueryTraits {
     static void destroy(GLuint n) { glDeleteQueries(1, &n); }
 };
+struct SamplerTraits {
+    static GLuint create() { GLuint n = 0; glCreateSamplers(1, &n); return n; }
+    static void destroy(GLuint n) { glDeleteSamplers(1, &n); }
+};
 
 using Buffer = Handle<BufferTraits>;
 using VertexArray = Handle<VertexArrayTraits>;
@@ -64,6 +68,7 @@ using Program = Handle<ProgramTraits>;
 using Shader = Handle<ShaderTraits>;
 using Texture = Handle<TextureTraits>;
 using Query = Handle<QueryTraits>;
+using Sampler = Handle<SamplerTraits>;
 
 inline Texture createTexture(GLenum target) { GLuint n = 0; glCreateTextures(target, 1, &n); return Texture(n); }
 inline Query createQuery(GLenum target) { GLuint n = 0; glCreateQueries(target, 1, &n); return Query(n); }

@@ -4,6 +4,7 @@
 #include "render/shading.hpp"
 #include "render/volume_composite.hpp"
 #include "scene/mesh_volume.hpp"
+#include "scene/texture_sampling.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -250,7 +251,20 @@ bool frontFacing(const PreparedObject& o, std::uint32_t tri, const glm::dvec3& d
     return glm::dot(front, dir) < 0.0;
 }
 
-glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h) {
+// The material's base colour and alpha at the hit: factor x texture x COLOR_0, sampled by the
+// GPU's rules (scene/texture_sampling.hpp).
+glm::vec4 baseColorAtHit(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h) {
+    return baseColorAt(scene, *o.material, *o.mesh, tri, glm::dvec3(h.b0, h.b1, h.b2));
+}
+
+// A MASK material's hit exists only where its alpha reaches the cutoff (the GPU's wrapped
+// builds discard the rest in every pass).
+bool maskRejects(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h) {
+    return o.material->alphaTested() && !alphaMaskKeeps(baseColorAtHit(scene, o, tri, h).a, o.material->alphaCutoff);
+}
+
+glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h,
+                   const glm::vec3& baseColor) {
     const auto& idx = o.mesh->indices;
     glm::dvec3 normal;
     if (o.mesh->normals.size() == o.mesh->positions.size()) {
@@ -264,7 +278,7 @@ glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tr
     }
     double len = glm::length(normal);
     glm::vec3 n = len > 0.0 ? glm::vec3(normal / len) : glm::vec3(0.0f);
-    return shadeSurface(o.material->baseColor, n, scene.lightDirection);
+    return shadeSurface(baseColor, n, scene.lightDirection);
 }
 
 }  // namespace
@@ -334,8 +348,11 @@ RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>
             throw std::runtime_error("raycast: object " + std::to_string(obj.id) + " has a bad mesh or material index");
         const Mesh& mesh = scene.meshes[obj.mesh];
         const Material& material = scene.materials[obj.material];
-        // MASK with alpha below the cutoff discards every fragment: nothing to intersect.
-        if (material.alphaMode == AlphaMode::Mask && material.alpha < material.alphaCutoff) continue;
+        // MASK whose alpha is its factor alone, below the cutoff, discards every fragment: nothing
+        // to intersect. Other MASK objects are tested per hit (maskRejects).
+        if (material.alphaTested() && !usesBaseColorTexture(scene, material, mesh) && !mesh.hasColors() &&
+            !alphaMaskKeeps(material.alpha, material.alphaCutoff))
+            continue;
         for (std::uint32_t i : mesh.indices)
             if (i >= mesh.positions.size())
                 throw std::runtime_error("raycast: mesh '" + mesh.name + "' has index " + std::to_string(i) +
@@ -399,6 +416,7 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
             o, ray,
             [&](std::uint32_t tri, const TriangleHit& h) {
                 if (culled(o, tri)) return;
+                if (maskRejects(scene, o, tri, h)) return;
                 if (h.tie) ++out.edgeTieHits;
                 bool better = !best || h.t < bestHit.t ||
                               (h.t == bestHit.t && (o.id < best->id || (o.id == best->id && tri < bestTri)));
@@ -411,7 +429,7 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
         out.opaqueDepth = float(bestHit.t);
         out.opaqueObject = best->id;
         out.opaquePrimitive = int(bestTri);
-        out.opaqueColor = shadeHit(scene, *best, bestTri, bestHit);
+        out.opaqueColor = shadeHit(scene, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)));
     }
 
     // Every transparent hit strictly nearer than the opaque one (the GPU tests GL_GREATER
@@ -428,8 +446,9 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
                 f.depth = float(h.t);
                 f.object = o.id;
                 f.primitive = int(tri);
-                f.color = shadeHit(scene, o, tri, h);
-                f.alpha = o.material->alpha;
+                const glm::vec4 base = baseColorAtHit(scene, o, tri, h);
+                f.color = shadeHit(scene, o, tri, h, glm::vec3(base));
+                f.alpha = base.a;
                 f.frontFacing = frontFacing(o, tri, direction);
                 out.fragments.push_back(f);
             },

@@ -15,13 +15,18 @@ namespace strata {
 
 struct GpuMesh {
     gl::VertexArray vertexArray;
-    gl::Buffer vertices;   // interleaved position, normal (6 floats)
-    gl::Buffer indices;    // uint32
+    gl::Buffer vertices;    // interleaved position, normal (6 floats)
+    gl::Buffer indices;     // uint32
+    gl::Buffer attributes;  // what the mesh has of TEXCOORD_0, TEXCOORD_1, COLOR_0, one array each
     GLsizei indexCount = 0;
+    bool texCoords[2] = {false, false};
+    bool colors = false;
 };
 
-// Uploads one mesh in the layout every scene program reads (attributes 0 position, 1 normal).
-// Throws when the normals do not match the positions.
+// Uploads one mesh in the layout every scene program reads (attributes 0 position, 1 normal;
+// ATTRIB_TEXCOORD0/1 and ATTRIB_COLOR of common/bindings.h where the mesh has them, in a buffer
+// of their own so a mesh without them keeps its 24-byte vertices). Throws when an attribute
+// does not match the positions.
 GpuMesh uploadMesh(const Mesh& mesh);
 
 class GpuScene {
@@ -49,8 +54,15 @@ public:
     // Uniforms every scene program shares for a frame.
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
 
+    // The SceneFeature bits object `objectIndex` draws with (texture, vertex colours, MASK).
+    unsigned materialFeatures(int objectIndex) const { return features_[std::size_t(objectIndex)]; }
+    // Decoded texture images on the GPU, mip levels included (the panel's and bench's figure).
+    std::size_t textureBytes() const { return textureBytes_; }
+
 private:
+    void uploadTextures();
     void setObjectUniforms(const SceneProgram& program, int objectIndex) const;
+    void bindMaterialTextures(int objectIndex) const;
     void drawStandIn(const SceneProgram& program, int objectIndex, const StandInDraw& standIn) const;
 
     Scene scene_;
@@ -60,6 +72,12 @@ private:
     std::vector<int> transparent_;
     std::vector<ObjectVolume> volumes_;
     std::vector<int> volumeEntry_;  // uVolumeEntry per object: 0 surface, +1/-1 entering faces
+    std::vector<unsigned> features_;  // SceneFeature bits per object
+    std::vector<gl::Texture> textures_;  // per Scene::images entry (sRGB, mipmapped)
+    // One GL sampler per distinct glTF sampler; materialSampler_ indexes it per material (-1 none).
+    std::vector<std::pair<Sampler, gl::Sampler>> samplers_;
+    std::vector<int> materialSampler_;
+    std::size_t textureBytes_ = 0;
     Bounds bounds_;
     std::size_t triangles_ = 0;
 };

@@ -26,6 +26,8 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
     p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
     p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
+    p.baseColorTransform = glGetUniformLocation(id, "uBaseColorTransform");
+    p.baseColorTexCoord = glGetUniformLocation(id, "uBaseColorTexCoord");
     return p;
 }
 
@@ -79,16 +81,26 @@ SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, cons
     return buildFromStages(std::move(stages), defines);
 }
 
-const SceneProgram& SceneProgram::standInVariant() const {
-    if (!variant_) {
+const SceneProgram& SceneProgram::variant(unsigned features) const {
+    if (features == 0) return *this;
+    constexpr unsigned kCombinations = 16;  // every SceneFeature bit set
+    if (features >= kCombinations) throw std::logic_error("scene program: unknown feature bits");
+    if (!variants_) variants_ = std::make_shared<std::vector<std::shared_ptr<Variant>>>(kCombinations);
+    std::shared_ptr<Variant>& slot = (*variants_)[features];
+    if (!slot) {
         auto v = std::make_shared<Variant>();
         gl::Defines defines = this->defines;
-        defines["STRATA_IMPOSTOR"] = "";
+        if (features & kSceneStandIn) defines["STRATA_IMPOSTOR"] = "";
+        if (features & kSceneBaseColorTexture) defines["STRATA_BASE_COLOR_TEXTURE"] = "";
+        if (features & kSceneVertexColor) defines["STRATA_VERTEX_COLOR"] = "";
+        if (features & kSceneAlphaMask) defines["STRATA_ALPHA_MASK"] = "";
         v->program = buildFromStages(stages, defines);
         // Every plain uniform of this program except the per-object ones GpuScene::draw sets on
         // whichever program draws (samplers, images and blocks bind by layout, not by value).
-        const std::set<std::string> perObject = {"uModel", "uNormalMatrix", "uBaseColor", "uAlpha", "uObjectId",
-                                                 "uAlphaCutoff", "uTau", "uAlbedo", "uVolumeEntry"};
+        const std::set<std::string> perObject = {"uModel",         "uNormalMatrix",       "uBaseColor",
+                                                 "uAlpha",         "uObjectId",           "uAlphaCutoff",
+                                                 "uTau",           "uAlbedo",             "uVolumeEntry",
+                                                 "uBaseColorTransform", "uBaseColorTexCoord"};
         GLint count = 0;
         glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
         for (GLint i = 0; i < count; ++i) {
@@ -109,10 +121,11 @@ const SceneProgram& SceneProgram::standInVariant() const {
                 if (c.from >= 0 && c.to >= 0) v->copies.push_back(c);
             }
         }
-        variant_ = std::move(v);
+        slot = std::move(v);
     }
-    const GLuint from = id(), to = variant_->program.id();
-    for (const UniformCopy& c : variant_->copies) {
+    const Variant& built = *slot;
+    const GLuint from = id(), to = built.program.id();
+    for (const UniformCopy& c : built.copies) {
         GLfloat f[16];
         GLint i[4];
         GLuint u[4];
@@ -134,7 +147,7 @@ const SceneProgram& SceneProgram::standInVariant() const {
         default: break;  // samplers, images, atomic counters: bound by layout(binding) in both
         }
     }
-    return variant_->program;
+    return built.program;
 }
 
 }  // namespace strata

@@ -3,11 +3,14 @@
 // with the locations of the per-frame and per-object uniforms looked up once. A stage that
 // does not use a uniform has location -1, which GL ignores, so one draw path serves all.
 //
-// Its stand-in variant (render/stand_in.hpp: layered impostors) is the same stages built with
-// STRATA_IMPOSTOR, which wraps the fragment stage in the impostor alpha test
-// (shaders/common/scene_prelude.glsl, scene_main.glsl). It is built on the first stand-in draw;
-// before each, the uniforms the technique set on the program are copied onto it, so the
-// technique never knows which of the two drew.
+// Its variants are the same stages built with more defines, one per combination of what an
+// object's draw needs beyond a factor-only material (SceneFeature): a stand-in (layered
+// impostors, render/stand_in.hpp) wraps the fragment stage in the impostor alpha test; a base
+// colour texture or vertex colours add their inputs and fetch (common/material.glsl); MASK
+// wraps it in the alpha-cutoff test (common/scene_prelude.glsl, scene_main.glsl). A variant is
+// built on its first draw; before each, the uniforms the technique set on the program are copied
+// onto it, so the technique never knows which drew. A factor-only material draws with the
+// program itself: no texture fetch, no branch.
 #include "gl/shader_program.hpp"
 
 #include <memory>
@@ -16,17 +19,28 @@
 
 namespace strata {
 
+// What a draw needs beyond the plain build; a bit set, the variant's key.
+enum SceneFeature : unsigned {
+    kSceneStandIn = 1u,           // STRATA_IMPOSTOR
+    kSceneBaseColorTexture = 2u,  // STRATA_BASE_COLOR_TEXTURE
+    kSceneVertexColor = 4u,       // STRATA_VERTEX_COLOR
+    kSceneAlphaMask = 8u,         // STRATA_ALPHA_MASK
+};
+
 struct SceneProgram {
     gl::Program program;
     GLint viewProj = -1, model = -1, normalMatrix = -1, baseColor = -1, alpha = -1, objectId = -1,
           lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
           volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
-          impostorSlices = -1, impostorOverlap = -1;  // common/scene_main.glsl (the variant's)
+          impostorSlices = -1, impostorOverlap = -1,  // common/scene_main.glsl (the variant's)
+          baseColorTransform = -1, baseColorTexCoord = -1;  // common/material.glsl (the variant's)
 
     GLuint id() const { return program.id(); }
 
-    // The stand-in variant with this program's current uniform values (built on first use).
-    const SceneProgram& standInVariant() const;
+    // The variant for `features` (SceneFeature bits) with this program's current uniform values
+    // (built on first use); `*this` for none.
+    const SceneProgram& variant(unsigned features) const;
+    const SceneProgram& standInVariant() const { return variant(kSceneStandIn); }
 
     // What building the variant needs: the stages and defines this program was built from.
     std::vector<std::string> stages;
@@ -39,7 +53,8 @@ private:
         GLenum type = 0;
     };
     struct Variant;
-    mutable std::shared_ptr<Variant> variant_;
+    // Indexed by the feature bits; shared so that a copied SceneProgram keeps its variants.
+    mutable std::shared_ptr<std::vector<std::shared_ptr<Variant>>> variants_;
 };
 
 // Every scene program's fragment stage is wrapped by common/scene_prelude.glsl and

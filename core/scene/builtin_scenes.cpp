@@ -70,6 +70,71 @@ constexpr float kFirstLayer = 1.0f;
 constexpr float kLayerSpacing = 0.25f;
 constexpr float kSlabThickness = 0.1f;
 
+// A quad (makeQuad) with TEXCOORD_0 spanning the whole texture, v = 0 at the top edge.
+Mesh texturedQuad(float width, float height) {
+    Mesh m = makeQuad(width, height);
+    for (const auto& p : m.positions) m.texCoords[0].push_back({p.x / width + 0.5f, 0.5f - p.y / height});
+    return m;
+}
+
+// Procedural textures for the demo room, small and drawn with NEAREST filtering: the GPU then
+// reads level 0 as the CPU reference does, so the room stays an exact test case whatever its
+// size on screen (texture_sampling.hpp: the reference has no mip levels).
+Sampler blockySampler() {
+    Sampler s;
+    s.magFilter = s.minFilter = TextureFilter::Nearest;
+    s.wrapS = s.wrapT = TextureWrap::ClampToEdge;
+    return s;
+}
+
+TextureImage proceduralTexture(const std::string& name, int size, glm::u8vec4 (*texel)(float u, float v)) {
+    TextureImage image;
+    image.name = name;
+    image.width = image.height = size;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const glm::u8vec4 c = texel((float(x) + 0.5f) / float(size), (float(y) + 0.5f) / float(size));
+            image.rgba.insert(image.rgba.end(), {c.r, c.g, c.b, c.a});
+        }
+    return image;
+}
+
+// Foliage for a MASK card: five leaves (ellipses) on a stem; alpha 255 on a leaf, 0 around it.
+glm::u8vec4 leafTexel(float u, float v) {
+    const glm::vec2 p(u, v);
+    const glm::vec2 centres[5] = {{0.5f, 0.22f}, {0.3f, 0.42f}, {0.7f, 0.48f}, {0.34f, 0.7f}, {0.66f, 0.76f}};
+    for (int i = 0; i < 5; ++i) {
+        const glm::vec2 d = (p - centres[i]) / glm::vec2(0.16f, 0.11f);
+        if (glm::dot(d, d) <= 1.0f) return {std::uint8_t(40 + 25 * i), std::uint8_t(150 + 15 * (i % 3)), 50, 255};
+    }
+    if (std::abs(u - 0.5f) < 0.03f && v > 0.2f) return {90, 70, 40, 255};  // the stem
+    return {30, 90, 30, 0};
+}
+
+// Stained glass for a BLEND pane: coloured cells (alpha 0.55) between opaque dark leading.
+glm::u8vec4 stainedGlassTexel(float u, float v) {
+    const int cx = int(u * 4.0f), cy = int(v * 4.0f);
+    const float fu = u * 4.0f - float(cx), fv = v * 4.0f - float(cy);
+    if (fu < 0.12f || fv < 0.12f || u > 0.97f || v > 0.97f) return {25, 25, 30, 255};
+    const glm::u8vec4 colours[4] = {{220, 40, 40, 140}, {40, 90, 220, 140}, {240, 200, 40, 140}, {40, 180, 90, 140}};
+    return colours[(cx + 2 * cy) % 4];
+}
+
+// An emblem decal: a white ring with a red centre, transparent outside it.
+glm::u8vec4 emblemTexel(float u, float v) {
+    const float r = glm::length(glm::vec2(u, v) - glm::vec2(0.5f));
+    if (r < 0.22f) return {230, 30, 30, 230};
+    if (r < 0.42f) return {250, 250, 245, 200};
+    return {0, 0, 0, 0};
+}
+
+int texturedMaterial(Scene& s, Material m, TextureImage image) {
+    s.images.push_back(std::move(image));
+    m.baseColorTexture.image = int(s.images.size()) - 1;
+    m.baseColorTexture.sampler = blockySampler();
+    return s.addMaterial(std::move(m));
+}
+
 }  // namespace
 
 glm::vec3 paletteColor(int i) {
@@ -82,7 +147,8 @@ glm::vec3 paletteColor(int i) {
 
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
     static const std::vector<BuiltinSceneInfo> list = {
-        {"layers", "N (1..4096, default 8)", "N full-view parallel quads, depth complexity exactly N"},
+        {"layers", "N[:textured] (1..4096, default 8)",
+         "N full-view parallel quads, depth complexity exactly N; textured: through a white texture"},
         {"coplanar", "K (1..1024, default 4)", "K coincident full-view quads: one depth, K fragments"},
         {"shells", "K[:roundoff] (1..1024, default 2)",
          "K coincident transparent spheres; roundoff: the copies differ by float round-off only"},
@@ -98,12 +164,21 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
     return list;
 }
 
-Scene makeLayersScene(int layers, float alpha) {
-    Scene s = emptyScene("layers:" + std::to_string(layers));
+Scene makeLayersScene(int layers, float alpha, bool textured) {
+    Scene s = emptyScene("layers:" + std::to_string(layers) + (textured ? ":textured" : ""));
+    if (textured) {
+        TextureImage white;
+        white.name = "white";
+        white.width = white.height = 64;
+        white.rgba.assign(64 * 64 * 4, 255);
+        s.images.push_back(std::move(white));
+    }
     for (int i = 0; i < layers; ++i) {
         float d = kFirstLayer + kLayerSpacing * float(i);
-        int mesh = s.addMesh(makeQuad(4.0f * d, 4.0f * d));
-        int material = s.addMaterial(transparent("layer" + std::to_string(i), paletteColor(i), alpha));
+        int mesh = s.addMesh(textured ? texturedQuad(4.0f * d, 4.0f * d) : makeQuad(4.0f * d, 4.0f * d));
+        Material m = transparent("layer" + std::to_string(i), paletteColor(i), alpha);
+        if (textured) m.baseColorTexture.image = 0;  // the default sampler: trilinear, repeat
+        int material = s.addMaterial(m);
         placeMesh(s, mesh, material, glm::translate(glm::mat4(1.0f), {0, 0, -d}), "layer" + std::to_string(i));
     }
     s.camera = CameraPose{};
@@ -226,6 +301,12 @@ Scene makeDefaultScene() {
                                              glm::vec3(0, 1, 0));
     placeMesh(s, s.addMesh(makeQuad(0.9f, 0.5f)), s.addMaterial(transparent("decal", {0.95f, 0.8f, 0.15f}, 0.75f)),
               glm::translate(panelPlane, {0.35f, -0.15f, 0.0f}), "decal");
+    // A textured emblem decal on a stained-glass pane (both BLEND textures, in one plane).
+    const glm::mat4 glassPlane = glm::rotate(glm::translate(identity, {3.3f, 2.1f, 0.2f}), glm::radians(-35.0f),
+                                             glm::vec3(0, 1, 0));
+    placeMesh(s, s.addMesh(texturedQuad(0.6f, 0.6f)),
+              texturedMaterial(s, transparent("emblem", glm::vec3(1.0f), 1.0f), proceduralTexture("emblem", 32, emblemTexel)),
+              glm::translate(glassPlane, {0.1f, 0.15f, 0.0f}), "emblem decal");
     // A translucent globe with its wireframe: edge strips in the globe's own triangle planes.
     const Mesh globe = makeSphere(0.65f, 14, 7);
     const glm::mat4 globeAt = glm::translate(identity, {0.2f, 0.75f, 0.4f});
@@ -236,6 +317,17 @@ Scene makeDefaultScene() {
     placeMesh(s, s.addMesh(makeQuad(2.2f, 1.5f)), s.addMaterial(transparent("panel", {0.55f, 0.75f, 0.95f}, 0.3f)),
               panelPlane, "panel");
     placeMesh(s, s.addMesh(globe), s.addMaterial(transparent("globe", {0.3f, 0.8f, 0.45f}, 0.25f)), globeAt, "globe");
+    placeMesh(s, s.addMesh(texturedQuad(1.4f, 1.6f)),
+              texturedMaterial(s, transparent("stained glass", glm::vec3(1.0f), 1.0f),
+                               proceduralTexture("stained glass", 32, stainedGlassTexel)),
+              glassPlane, "stained glass");
+    // A foliage card: MASK, cut out by its texture's alpha in every pass.
+    Material foliage = opaque("foliage", glm::vec3(1.0f));
+    foliage.alphaMode = AlphaMode::Mask;
+    foliage.alphaCutoff = 0.5f;
+    placeMesh(s, s.addMesh(texturedQuad(1.3f, 1.7f)), texturedMaterial(s, foliage, proceduralTexture("leaves", 32, leafTexel)),
+              glm::rotate(glm::translate(identity, {-3.4f, 0.85f, 0.6f}), glm::radians(30.0f), glm::vec3(0, 1, 0)),
+              "foliage card");
 
     // Interpenetrating glass: a box turned on the left pedestal with a sphere through its corner.
     int glass = s.addMaterial(transparent("glass", {0.6f, 0.85f, 0.95f}, 0.3f));
@@ -356,7 +448,13 @@ Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
     auto colon = spec.find(':');
     std::string name = spec.substr(0, colon);
     std::string arg = colon == std::string::npos ? "" : spec.substr(colon + 1);
-    if (name == "layers") return makeLayersScene(parseCount(spec, arg, 8, 1, 4096));
+    if (name == "layers") {
+        auto second = arg.find(':');
+        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
+        if (second != std::string::npos && option != "textured")
+            throw std::invalid_argument("builtin:" + spec + ": the only option of layers is 'textured'");
+        return makeLayersScene(parseCount(spec, arg.substr(0, second), 8, 1, 4096), 0.5f, option == "textured");
+    }
     if (name == "coplanar") return makeCoplanarScene(parseCount(spec, arg, 4, 1, 1024));
     if (name == "shells") {
         auto second = arg.find(':');

@@ -40,7 +40,10 @@ const std::vector<BuiltinSceneInfo>& builtinScenes();
 // unknown name or a bad argument.
 Scene makeBuiltinScene(const std::string& spec);
 
-Scene makeLayersScene(int layers, float alpha = 0.5f);
+// With `textured`, every layer's colour is its factor times a 64 x 64 white base colour texture
+// (trilinear, mipmapped, UVs over the quad): the image is the untextured one's, and the bench's
+// difference between the two is what the texture fetch costs each technique.
+Scene makeLayersScene(int layers, float alpha = 0.5f, bool textured = false);
 Scene makeCoplanarScene(int copies, float alpha = 0.5f);
 Scene makeShellsScene(int copies, bool roundoff);
 Scene makeCubesScene(bool separated);

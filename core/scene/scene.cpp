@@ -1,5 +1,7 @@
 #include "scene/scene.hpp"
 
+#include <cmath>
+
 #include <stdexcept>
 
 namespace strata {
@@ -93,28 +95,43 @@ bool hasTransparency(const Scene& scene, const std::vector<Object>& objects) {
 }
 
 void makeFlatNormals(Mesh& mesh) {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;
-    std::vector<std::uint32_t> indices;
-    positions.reserve(mesh.indices.size());
-    normals.reserve(mesh.indices.size());
-    indices.reserve(mesh.indices.size());
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    Mesh out;
+    const std::size_t n = mesh.indices.size() / 3 * 3;
+    out.positions.reserve(n);
+    out.normals.reserve(n);
+    out.indices.reserve(n);
+    for (std::size_t t = 0; t < n; t += 3) {
         glm::vec3 a = mesh.positions[mesh.indices[t]];
         glm::vec3 b = mesh.positions[mesh.indices[t + 1]];
         glm::vec3 c = mesh.positions[mesh.indices[t + 2]];
-        glm::vec3 n = glm::cross(b - a, c - a);
-        float len = glm::length(n);
-        n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
-        for (glm::vec3 p : {a, b, c}) {
-            indices.push_back(std::uint32_t(positions.size()));
-            positions.push_back(p);
-            normals.push_back(n);
+        glm::vec3 normal = glm::cross(b - a, c - a);
+        float len = glm::length(normal);
+        normal = len > 0.0f ? normal / len : glm::vec3(0.0f, 0.0f, 1.0f);
+        for (std::size_t k = t; k < t + 3; ++k) {
+            const std::uint32_t source = mesh.indices[k];
+            out.indices.push_back(std::uint32_t(out.positions.size()));
+            out.positions.push_back(mesh.positions[source]);
+            out.normals.push_back(normal);
+            for (int set = 0; set < 2; ++set)
+                if (mesh.hasTexCoords(set)) out.texCoords[set].push_back(mesh.texCoords[set][source]);
+            if (mesh.hasColors()) out.colors.push_back(mesh.colors[source]);
         }
     }
-    mesh.positions = std::move(positions);
-    mesh.normals = std::move(normals);
-    mesh.indices = std::move(indices);
+    mesh.positions = std::move(out.positions);
+    mesh.normals = std::move(out.normals);
+    mesh.indices = std::move(out.indices);
+    for (int set = 0; set < 2; ++set) mesh.texCoords[set] = std::move(out.texCoords[set]);
+    mesh.colors = std::move(out.colors);
+}
+
+glm::mat3 TextureTransform::matrix() const {
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    // Column by column, as the ratified extension writes its GLSL: T * R * S, with R taking
+    // (1, 0) to (c, s).
+    const glm::mat3 t(1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, offset.x, offset.y, 1.0f);
+    const glm::mat3 r(c, s, 0.0f, -s, c, 0.0f, 0.0f, 0.0f, 1.0f);
+    const glm::mat3 sc(scale.x, 0.0f, 0.0f, 0.0f, scale.y, 0.0f, 0.0f, 0.0f, 1.0f);
+    return t * r * sc;
 }
 
 }  // namespace strata

@@ -4,6 +4,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "scene/texture.hpp"
+
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -23,8 +25,11 @@ const char* to_string(AlphaMode mode);
 
 struct Material {
     std::string name = "default";
+    // glTF baseColorFactor (linear RGB and alpha). The fragment's base colour is this times the
+    // base colour texture (sRGB decoded to linear) times the mesh's COLOR_0, alpha likewise.
     glm::vec3 baseColor{0.8f};
     float alpha = 1.0f;              // coverage/opacity used by the blending techniques
+    TextureRef baseColorTexture;     // image -1: none
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;        // MASK: fragments with alpha < cutoff are discarded
     // Volumetric model (Barta & Kovacs): attenuation per metre for each colour channel and the
@@ -43,6 +48,8 @@ struct Material {
     // Transparent materials go through the transparency technique, everything else through
     // the opaque pass (MASK is an alpha test, hence opaque).
     bool isTransparent() const { return alphaMode == AlphaMode::Blend; }
+    // The fragment's alpha is tested against alphaCutoff in every pass that draws the object.
+    bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
 };
 
 struct Bounds {
@@ -64,7 +71,14 @@ struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> indices;
+    // glTF TEXCOORD_0 and TEXCOORD_1 and COLOR_0 (RGBA, linear; a VEC3 source gets alpha 1):
+    // each empty or one per position.
+    std::vector<glm::vec2> texCoords[2];
+    std::vector<glm::vec4> colors;
     int material = 0;
+
+    bool hasTexCoords(int set) const { return !texCoords[set].empty(); }
+    bool hasColors() const { return !colors.empty(); }
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;
@@ -89,6 +103,7 @@ struct Scene {
     std::string name;
     std::vector<Material> materials;  // index 0 always exists (the default material)
     std::vector<Mesh> meshes;
+    std::vector<TextureImage> images;  // decoded texture images (materials' TextureRef::image)
     std::vector<Node> nodes;
     std::vector<int> roots;
     std::optional<CameraPose> camera;
@@ -122,7 +137,8 @@ Bounds worldBounds(const Scene& scene, const std::vector<Object>& objects);
 // Counts transparent objects; a scene with none needs no transparency pass.
 bool hasTransparency(const Scene& scene, const std::vector<Object>& objects);
 
-// Computes flat normals by unwelding (every triangle gets its own three vertices).
+// Computes flat normals by unwelding (every triangle gets its own three vertices, with their
+// texture coordinates and colours).
 void makeFlatNormals(Mesh& mesh);
 
 }  // namespace strata

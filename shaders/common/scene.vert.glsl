@@ -8,6 +8,20 @@ layout(location = 1) in vec3 inNormal;
 #ifdef STRATA_IMPOSTOR
 layout(location = 2) in vec4 inImpostor;
 #endif
+// A material's texture coordinates and vertex colour (common/material.glsl), in the builds
+// whose material uses them; a mesh without TEXCOORD_1 leaves that attribute disabled (0, 0).
+#include "bindings.h"
+#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
+#define STRATA_MATERIAL_VARYING
+layout(location = ATTRIB_TEXCOORD0) in vec2 inTexCoord0;
+layout(location = ATTRIB_TEXCOORD1) in vec2 inTexCoord1;
+layout(location = ATTRIB_COLOR) in vec4 inColor;
+out MaterialVarying {
+    vec2 texCoord0;
+    vec2 texCoord1;
+    vec4 color;
+} vMaterial;
+#endif
 
 uniform mat4 uViewProj;
 uniform mat4 uModel;
@@ -33,6 +47,11 @@ void main() {
 #ifdef STRATA_IMPOSTOR
     vImpostor.uv = inImpostor.xy;
     vImpostor.layer = ivec2(inImpostor.zw);
+#endif
+#ifdef STRATA_MATERIAL_VARYING
+    vMaterial.texCoord0 = inTexCoord0;
+    vMaterial.texCoord1 = inTexCoord1;
+    vMaterial.color = inColor;
 #endif
     gl_Position = uViewProj * world;
 }

@@ -1,13 +1,16 @@
-// The real main() of the stand-in variant of every scene program's fragment stage (see
-// common/scene_prelude.glsl); nothing in the geometry build.
+// The real main() of the wrapped variants of every scene program's fragment stage (see
+// common/scene_prelude.glsl): the stand-in's and the MASK material's; nothing in the plain build.
 // For a stand-in it is the layered impostor's alpha test (Schauffler, section 3.2): the slice
 // quad keeps only the atlas texels whose stored depth falls in its interval, widened by
 // uImpostorOverlap slice widths on each side (section 3.3, Fig. 4; 0 keeps the intervals
 // disjoint so no surface is emitted twice, which transparency needs). The test runs before the
 // technique's body, so a rejected texel never reaches a counter, an image store or a colour.
-#ifdef STRATA_IMPOSTOR
+#ifdef STRATA_WRAPPED_MAIN
 #undef main
 #include "bindings.h"
+#include "material.glsl"
+
+#ifdef STRATA_IMPOSTOR
 #include "impostor_accept.glsl"
 
 uniform int uImpostorSlices;
@@ -21,13 +24,20 @@ in ImpostorVarying {
     vec2 uv;
     flat ivec2 layer;  // atlas layer, slice
 } vImpostor;
+#endif
 
 void main() {
+#ifdef STRATA_IMPOSTOR
     ivec2 size = textureSize(uImpostorAtlas, 0).xy;
     ivec2 texel = clamp(ivec2(vImpostor.uv * vec2(size)), ivec2(0), size - 1);
     vec4 stored = texelFetch(uImpostorAtlas, ivec3(texel, vImpostor.layer.x), 0);
     if (!impostorAccepts(stored.a, vImpostor.layer.y, uImpostorSlices, uImpostorOverlap)) discard;
     strataImpostorNormal = normalize(uNormalMatrix * (stored.rgb * 2.0 - 1.0));
+#endif
+#ifdef STRATA_ALPHA_MASK
+    // glTF MASK: the fragment exists where factor x texture x COLOR_0 alpha reaches the cutoff.
+    if (!alphaMaskKeeps(materialBaseColor().a, uAlphaCutoff)) discard;
+#endif
     strataSceneFragmentMain();
 }
 #endif

@@ -1,12 +1,10 @@
 // Per-object material uniforms and the shaded colour of the current fragment.
 #include "bindings.h"
 #include "shading.glsl"
+#include "material.glsl"
 
-uniform vec3 uBaseColor;
-uniform float uAlpha;
 uniform uint uObjectId;
 uniform vec3 uLightDir;
-uniform float uAlphaCutoff;
 // The volumetric model (Barta & Kovacs; Material::tau and albedo): attenuation per metre for
 // each channel and the single-scattering albedo, both zero for a thin surface.
 uniform vec3 uTau;
@@ -19,8 +17,10 @@ vec3 surfaceNormal() {
     return kStandIn ? strataImpostorNormal : vWorldNormal;
 }
 
+// The shaded colour and the alpha of the fragment (common/material.glsl).
 vec4 surfaceColor() {
-    return vec4(shadeSurface(uBaseColor, surfaceNormal(), uLightDir), uAlpha);
+    vec4 base = materialBaseColor();
+    return vec4(shadeSurface(base.rgb, surfaceNormal(), uLightDir), base.a);
 }
 
 // What `distance` metres of this object's medium let through, per channel: exp(-tau d). Finite,

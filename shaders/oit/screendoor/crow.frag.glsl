@@ -6,6 +6,8 @@
 //   alpha = amax - (amax - amin)(1 - (1 - |N_z|)^p).
 // N_z is taken against the direction to the eye at this fragment, not the view axis, so a sphere
 // seen off-centre still reaches amax exactly at its silhouette under perspective.
+// A textured or vertex-coloured material scales the result by its texel and vertex alpha (the
+// fragment's alpha over the factor's), so a cut-out stays cut out.
 // Blended "over" (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), objects sorted back to front.
 #include "surface.glsl"
 
@@ -29,5 +31,7 @@ void main() {
     vec3 n = normalize(surfaceNormal());
     vec3 toEye = normalize(uEyePosition - vWorldPosition);
     float nz = clamp(abs(dot(n, toEye)), 0.0, 1.0);
-    outColor = vec4(surfaceColor().rgb, crowAlpha(nz));
+    vec4 c = surfaceColor();
+    float texelAlpha = uAlpha > 0.0 ? c.a / uAlpha : 0.0;
+    outColor = vec4(c.rgb, crowAlpha(nz) * texelAlpha);
 }

@@ -35,6 +35,20 @@ out ImpostorVarying {
 } impostorOut;
 #endif
 
+#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
+// Passed on to common/material.glsl under the same block name.
+in MaterialVarying {
+    vec2 texCoord0;
+    vec2 texCoord1;
+    vec4 color;
+} materialIn[];
+out MaterialVarying {
+    vec2 texCoord0;
+    vec2 texCoord1;
+    vec4 color;
+} materialOut;
+#endif
+
 out vec3 gWorldNormal;
 out vec2 gMaskCoord;  // mask texels
 
@@ -54,6 +68,11 @@ void main() {
 #ifdef STRATA_IMPOSTOR
         impostorOut.uv = impostorIn[i].uv;
         impostorOut.layer = impostorIn[i].layer;
+#endif
+#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
+        materialOut.texCoord0 = materialIn[i].texCoord0;
+        materialOut.texCoord1 = materialIn[i].texCoord1;
+        materialOut.color = materialIn[i].color;
 #endif
         gMaskCoord = offset + coords[i];
         EmitVertex();

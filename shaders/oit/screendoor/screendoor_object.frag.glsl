@@ -2,7 +2,8 @@
 // Object-space screen-door transparency, hardware version (Sen et al. 4.2): the mask of the
 // triangle's alpha level, mapped on the triangle by object_mask.geom.glsl, keeps or rejects the
 // fragment; a kept fragment is written opaque. The geometry stage renames the normal
-// (gWorldNormal), so the material uniforms are declared here, not via surface.glsl.
+// (gWorldNormal), so the material comes from material.glsl, not via surface.glsl; the mask
+// level is the fragment's alpha (texture and vertex colour included).
 //
 // Silhouettes: read nearest, a sample sees one texel however many the surface puts under it
 // where it turns away, so the hardware version shows no silhouette opacity (the paper's section
@@ -16,9 +17,8 @@
 #include "shading.glsl"
 // alpha_mask.glsl brings random_hash.glsl (hashUint, hashUnit) too.
 #include "alpha_mask.glsl"
+#include "material.glsl"
 
-uniform vec3 uBaseColor;
-uniform float uAlpha;
 uniform vec3 uLightDir;
 
 in vec3 gWorldNormal;
@@ -58,6 +58,7 @@ void main() {
     // Derivatives first, in uniform control flow.
     vec2 dx = dFdx(gMaskCoord), dy = dFdy(gMaskCoord);
 #endif
-    if (!footprintKeeps(gMaskCoord, dx, dy, uAlpha)) discard;
-    outColor = vec4(shadeSurface(uBaseColor, kStandIn ? strataImpostorNormal : gWorldNormal, uLightDir), 1.0);
+    vec4 base = materialBaseColor();  // before the discard: a texture fetch takes derivatives too
+    if (!footprintKeeps(gMaskCoord, dx, dy, base.a)) discard;
+    outColor = vec4(shadeSurface(base.rgb, kStandIn ? strataImpostorNormal : gWorldNormal, uLightDir), 1.0);
 }

@@ -1,0 +1,300 @@
+// glTF material features against the same colours stated with factors alone: a textured BLEND
+// quad whose halves have alphas a1 and a2 against two factor quads, MASK against the cut
+// geometry, a constant COLOR_0 against the factor, a texture transform offset against the
+// swapped texture. Each pair through every exact technique and the CPU ray-cast reference,
+// within 2/255.
+//
+// The view is set up so that filtering cannot matter: the quad fills a 16 x 16 view exactly, a
+// 2 x 1 texture with NEAREST filtering puts its texel boundary at x = 0, and pixel centres lie
+// 1/16 of the quad's width from it. The GPU samples level 0 there (the texels are magnified), as
+// the CPU reference does.
+#include "gl_test_support.hpp"
+
+#include "reference/raycast.hpp"
+#include "render/shading.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/mesh_builders.hpp"
+#include "scene/texture_sampling.hpp"
+
+#include <doctest/doctest.h>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace strata;
+
+namespace {
+
+constexpr float kTolerance = 2.0f / 255.0f;
+const glm::ivec2 kSize(16, 16);
+
+// Two texels, left and right, sRGB-encoded colour and linear alpha.
+TextureImage twoTexels(glm::u8vec4 left, glm::u8vec4 right) {
+    TextureImage image;
+    image.name = "two texels";
+    image.width = 2;
+    image.height = 1;
+    image.rgba = {left.r, left.g, left.b, left.a, right.r, right.g, right.b, right.a};
+    return image;
+}
+
+// What the sampler returns for an 8-bit texel: colour decoded from sRGB, alpha as is.
+glm::vec4 linearTexel(glm::u8vec4 t) {
+    return {srgbToLinear(t.r / 255.0f), srgbToLinear(t.g / 255.0f), srgbToLinear(t.b / 255.0f), t.a / 255.0f};
+}
+
+Sampler nearestSampler(TextureWrap wrap = TextureWrap::ClampToEdge) {
+    Sampler s;
+    s.magFilter = TextureFilter::Nearest;
+    s.minFilter = TextureFilter::Nearest;
+    s.wrapS = s.wrapT = wrap;
+    return s;
+}
+
+// A quad in the plane z = `z` spanning x in [x0, x1], y in [-1, 1], with TEXCOORD_0 mapping
+// x = -1 to u = 0 and x = 1 to u = 1 (v = 0 at the top, as glTF's image origin).
+Mesh quad(float x0, float x1, float z) {
+    Mesh m;
+    m.name = "quad";
+    m.positions = {{x0, -1, z}, {x1, -1, z}, {x1, 1, z}, {x0, 1, z}};
+    m.normals.assign(4, {0, 0, 1});
+    m.indices = {0, 1, 2, 0, 2, 3};
+    for (const auto& p : m.positions) m.texCoords[0].push_back({(p.x + 1.0f) * 0.5f, (1.0f - p.y) * 0.5f});
+    return m;
+}
+
+// An empty scene whose camera sees exactly [-1, 1]^2 at z = 0, over an opaque grey backdrop.
+Scene framedScene() {
+    Scene s;
+    s.name = "material pair";
+    s.materials.push_back(Material{});
+    CameraPose pose;
+    pose.position = {0.0f, 0.0f, 3.0f};
+    pose.fovYDegrees = float(2.0 * std::atan(1.0 / 3.0) * 180.0 / 3.14159265358979323846);
+    s.camera = pose;
+    Material backdrop;
+    backdrop.name = "backdrop";
+    backdrop.baseColor = {0.2f, 0.3f, 0.4f};
+    int m = s.addMaterial(backdrop);
+    Mesh back = makeQuad(4.0f, 4.0f);
+    for (auto& p : back.positions) p.z = -1.0f;
+    back.material = m;
+    Node n;
+    n.meshes = {s.addMesh(back)};
+    s.addNode(n);  // a root: addNode lists it
+    return s;
+}
+
+void addObject(Scene& s, Mesh mesh, const Material& material) {
+    mesh.material = s.addMaterial(material);
+    Node n;
+    n.meshes = {s.addMesh(std::move(mesh))};
+    s.addNode(n);  // a root: addNode lists it
+}
+
+Material blend(glm::vec4 factor) {
+    Material m;
+    m.baseColor = glm::vec3(factor);
+    m.alpha = factor.a;
+    m.alphaMode = AlphaMode::Blend;
+    return m;
+}
+
+// The techniques that are exact given enough memory (as exact_techniques_gl_test.cpp): the
+// robust ones, and the bounded ones given a capacity that holds every fragment.
+std::vector<std::string> exactIds() {
+    std::vector<std::string> ids;
+    for (const auto& e : techniqueRegistry())
+        if (e.info.robust || test::hasSetting(e.info.id, "capacity")) ids.push_back(e.info.id);
+    return ids;
+}
+
+std::unique_ptr<Technique> exactTechnique(const std::string& id) {
+    auto t = createTechnique(id);
+    if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=4");
+    return t;
+}
+
+// `textured` and `factors` render alike on the CPU reference and on every exact technique, and
+// each GPU image matches the CPU reference of its own scene.
+void checkPair(Scene textured, Scene factors) {
+    test::glContext();
+    const std::vector<Object> texturedObjects = flatten(textured), factorObjects = flatten(factors);
+    const Camera camera = defaultCamera(textured, texturedObjects);
+    const Image cpuTextured = raycastReference(textured, texturedObjects, camera, kSize.x, kSize.y);
+    const Image cpuFactors = raycastReference(factors, factorObjects, camera, kSize.x, kSize.y);
+    CHECK(compareImages(cpuTextured, cpuFactors).maxAbsError <= kTolerance);
+
+    GpuScene gpuTextured(std::move(textured)), gpuFactors(std::move(factors));
+    for (const std::string& id : exactIds()) {
+        CAPTURE(id);
+        auto a = exactTechnique(id);
+        auto b = exactTechnique(id);
+        test::Rendered t = test::renderWith(gpuTextured, camera, kSize, *a);
+        test::Rendered f = test::renderWith(gpuFactors, camera, kSize, *b);
+        CHECK(compareImages(t.image, cpuTextured).maxAbsError <= kTolerance);
+        CHECK(compareImages(f.image, cpuFactors).maxAbsError <= kTolerance);
+        CHECK_FALSE(t.result.stats.overflowed);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("a BLEND quad textured with alphas a1 and a2 equals two factor quads") {
+    const glm::u8vec4 left(230, 40, 40, 64), right(40, 200, 90, 191);  // a1 = 0.25, a2 = 0.75
+    Scene textured = framedScene();
+    textured.images.push_back(twoTexels(left, right));
+    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
+    m.baseColorTexture.image = 0;
+    m.baseColorTexture.sampler = nearestSampler();
+    addObject(textured, quad(-1, 1, 0), m);
+
+    Scene factors = framedScene();
+    addObject(factors, quad(-1, 0, 0), blend(linearTexel(left)));
+    addObject(factors, quad(0, 1, 0), blend(linearTexel(right)));
+
+    // The expected colour, stated: texel over the lit backdrop, both facing the light alike.
+    const std::vector<Object> objects = flatten(factors);
+    const Camera camera = defaultCamera(factors, objects);
+    const glm::vec3 light = factors.lightDirection;
+    const float lit = kAmbient + (1.0f - kAmbient) * std::abs(light.z);
+    const glm::vec4 l = linearTexel(left);
+    const glm::vec3 want = glm::vec3(l) * lit * l.a + glm::vec3(0.2f, 0.3f, 0.4f) * lit * (1.0f - l.a);
+    const glm::vec4 got = raycastReference(textured, flatten(textured), camera, kSize.x, kSize.y).at(3, 8);
+    CHECK(std::abs(got.r - want.r) <= 1e-4f);
+    CHECK(std::abs(got.g - want.g) <= 1e-4f);
+    CHECK(std::abs(got.b - want.b) <= 1e-4f);
+
+    checkPair(std::move(textured), std::move(factors));
+}
+
+TEST_CASE("a MASK texture cuts like the cut geometry, in the opaque pass and the reference") {
+    const glm::u8vec4 kept(200, 180, 60, 255), cut(20, 20, 200, 51);  // alpha 1 and 0.2
+    Scene textured = framedScene();
+    textured.images.push_back(twoTexels(kept, cut));
+    Material m;
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = 0.5f;
+    m.baseColor = glm::vec3(1.0f);
+    m.baseColorTexture.image = 0;
+    m.baseColorTexture.sampler = nearestSampler();
+    addObject(textured, quad(-1, 1, 0), m);
+    // A transparent quad in front, so the transparency techniques run over the cut-out.
+    addObject(textured, quad(-1, 1, 0.5f), blend({0.9f, 0.9f, 0.9f, 0.3f}));
+
+    Scene factors = framedScene();
+    Material opaque;
+    opaque.baseColor = glm::vec3(linearTexel(kept));
+    addObject(factors, quad(-1, 0, 0), opaque);
+    addObject(factors, quad(-1, 1, 0.5f), blend({0.9f, 0.9f, 0.9f, 0.3f}));
+    checkPair(std::move(textured), std::move(factors));
+}
+
+TEST_CASE("a constant COLOR_0 equals the same colour as the factor") {
+    const glm::vec4 color(0.7f, 0.25f, 0.5f, 0.6f);
+    Scene colored = framedScene();
+    Mesh mesh = quad(-1, 1, 0);
+    mesh.colors.assign(mesh.positions.size(), color);
+    addObject(colored, mesh, blend({1.0f, 1.0f, 1.0f, 1.0f}));
+    Scene factors = framedScene();
+    addObject(factors, quad(-1, 1, 0), blend(color));
+    checkPair(std::move(colored), std::move(factors));
+}
+
+TEST_CASE("a texture transform offset of half the texture equals the swapped texture") {
+    const glm::u8vec4 a(250, 120, 30, 128), b(30, 90, 250, 220);
+    Scene shifted = framedScene();
+    shifted.images.push_back(twoTexels(a, b));
+    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
+    m.baseColorTexture.image = 0;
+    m.baseColorTexture.sampler = nearestSampler(TextureWrap::Repeat);
+    m.baseColorTexture.transform.offset = {0.5f, 0.0f};
+    addObject(shifted, quad(-1, 1, 0), m);
+
+    Scene swapped = framedScene();
+    swapped.images.push_back(twoTexels(b, a));
+    Material plain = blend({1.0f, 1.0f, 1.0f, 1.0f});
+    plain.baseColorTexture.image = 0;
+    plain.baseColorTexture.sampler = nearestSampler();
+    addObject(swapped, quad(-1, 1, 0), plain);
+    checkPair(std::move(shifted), std::move(swapped));
+}
+
+TEST_CASE("TEXCOORD_1 is used when the texture names it") {
+    const glm::u8vec4 a(250, 250, 30, 100), b(30, 200, 250, 240);
+    Scene second = framedScene();
+    second.images.push_back(twoTexels(a, b));
+    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
+    m.baseColorTexture.image = 0;
+    m.baseColorTexture.sampler = nearestSampler();
+    m.baseColorTexture.texCoord = 1;
+    Mesh mesh = quad(-1, 1, 0);
+    mesh.texCoords[1] = mesh.texCoords[0];
+    for (auto& uv : mesh.texCoords[0]) uv = {0.9f, 0.5f};  // set 0 would give texel b everywhere
+    addObject(second, mesh, m);
+    Scene factors = framedScene();
+    addObject(factors, quad(-1, 0, 0), blend(linearTexel(a)));
+    addObject(factors, quad(0, 1, 0), blend(linearTexel(b)));
+    checkPair(std::move(second), std::move(factors));
+}
+
+TEST_CASE("a factor-only scene draws with the plain programs: no material variant is built") {
+    test::glContext();
+    Scene s = framedScene();
+    addObject(s, quad(-1, 1, 0), blend({0.5f, 0.5f, 0.5f, 0.5f}));
+    GpuScene scene(std::move(s));
+    for (std::size_t i = 0; i < scene.objects().size(); ++i) CHECK(scene.materialFeatures(int(i)) == 0u);
+    CHECK(scene.textureBytes() == 0);
+}
+
+TEST_CASE("texture sampling on the CPU follows the GL wrap modes and filters") {
+    TextureImage image = twoTexels({0, 0, 0, 0}, {255, 255, 255, 255});
+    Sampler s = nearestSampler(TextureWrap::Repeat);
+    CHECK(sampleTexture(image, s, {0.25f, 0.5f}).a == doctest::Approx(0.0f));
+    CHECK(sampleTexture(image, s, {0.75f, 0.5f}).a == doctest::Approx(1.0f));
+    CHECK(sampleTexture(image, s, {1.25f, 0.5f}).a == doctest::Approx(0.0f));   // repeat
+    CHECK(sampleTexture(image, s, {-0.25f, 0.5f}).a == doctest::Approx(1.0f));  // repeat below 0
+    s.wrapS = TextureWrap::MirroredRepeat;
+    CHECK(sampleTexture(image, s, {1.25f, 0.5f}).a == doctest::Approx(1.0f));   // mirrored: texel 1
+    CHECK(sampleTexture(image, s, {1.75f, 0.5f}).a == doctest::Approx(0.0f));
+    s.wrapS = TextureWrap::ClampToEdge;
+    CHECK(sampleTexture(image, s, {7.0f, 0.5f}).a == doctest::Approx(1.0f));
+    CHECK(sampleTexture(image, s, {-7.0f, 0.5f}).a == doctest::Approx(0.0f));
+    s.magFilter = TextureFilter::Linear;
+    CHECK(sampleTexture(image, s, {0.5f, 0.5f}).a == doctest::Approx(0.5f));   // halfway between centres
+    CHECK(sampleTexture(image, s, {0.25f, 0.5f}).a == doctest::Approx(0.0f));  // a texel centre
+    // sRGB: 255 decodes to 1, 0 to 0, and the midpoint of a linear blend is in linear space.
+    CHECK(sampleTexture(image, s, {0.5f, 0.5f}).r == doctest::Approx(0.5f));
+    // Non-finite coordinates give transparent black rather than undefined behaviour.
+    CHECK(sampleTexture(image, s, {NAN, 0.5f}).a == 0.0f);
+}
+
+TEST_CASE("KHR_texture_transform: offset, rotation and scale compose as T * R * S") {
+    TextureTransform t;
+    t.offset = {0.5f, 0.25f};
+    t.scale = {2.0f, 3.0f};
+    t.rotation = float(3.14159265358979323846 / 2.0);
+    // S takes (1, 0) to (2, 0); R (a quarter turn) to (0, 2); T to (0.5, 2.25).
+    const glm::vec2 uv = transformTexCoord(t.matrix(), {1.0f, 0.0f});
+    CHECK(uv.x == doctest::Approx(0.5f).epsilon(1e-5));
+    CHECK(uv.y == doctest::Approx(2.25f).epsilon(1e-5));
+    CHECK(TextureTransform{}.identity());
+}
+
+TEST_CASE("builtin:layers:N:textured draws through a white texture and equals builtin:layers:N") {
+    test::glContext();
+    GpuScene textured(makeBuiltinScene("layers:5:textured")), plain(makeBuiltinScene("layers:5"));
+    REQUIRE(textured.objects().size() == 5);
+    CHECK((textured.materialFeatures(0) & kSceneBaseColorTexture) != 0u);
+    CHECK(textured.textureBytes() == 64 * 64 * 4 * 4 / 3);
+    const Camera camera = defaultCamera(plain.scene(), plain.objects());
+    for (const char* id : {"abuffer", "f2b", "wboit", "blend-sorted"}) {
+        CAPTURE(id);
+        const Image a = test::renderWith(textured, camera, {12, 10}, id).image;
+        const Image b = test::renderWith(plain, camera, {12, 10}, id).image;
+        CHECK(compareImages(a, b).maxAbsError <= 1.0f / 255.0f);
+    }
+    CHECK_THROWS_AS(makeBuiltinScene("layers:5:shiny"), std::invalid_argument);
+}
