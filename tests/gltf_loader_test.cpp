@@ -8,7 +8,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <OpenImageIO/imageio.h>
+
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <tuple>
 #include <functional>
 #include <limits>
 #include <map>
@@ -221,7 +226,7 @@ TEST_CASE("gltf: missing normals become flat normals; GLB container") {
     CHECK(m.normals[3] == glm::vec3(0, 1, 0));  // triangle (0, 3, 1) lies in y = 0
 }
 
-TEST_CASE("gltf: textures are never loaded, so a missing or broken image is not fatal") {
+TEST_CASE("gltf: a missing or broken image is a warning naming it and its material, which keeps its factor") {
     GltfBuilder b;
     int pos = b.positions(kTrianglePositions);
     b.doc["images"] = {{{"uri", "does-not-exist.png"}}, {{"uri", "data:image/png;base64,AAAA"}}};
@@ -232,7 +237,13 @@ TEST_CASE("gltf: textures are never loaded, so a missing or broken image is not 
     Scene s = loadGltf(b.writeGltf("textures"), report);
     CHECK(s.meshes.size() == 1);
     CHECK(s.materials[1].baseColor == glm::vec3(1.0f));  // glTF's default factor
-    CHECK_FALSE(report.warnings.empty());                // tinygltf noted the missing file
+    CHECK_FALSE(s.materials[1].baseColorTexture.present());
+    CHECK(s.images.empty());
+    bool named = false;
+    for (const std::string& line : report.warnings)
+        named = named || (line.find("image 0 cannot be read ('does-not-exist.png')") != std::string::npos &&
+                          line.find("material 0 (and any other material using it) renders with its base colour factor") != std::string::npos);
+    CHECK(named);
 }
 
 // What a file holds that Strata does not draw as given is said: one line per kind, naming the file
@@ -256,7 +267,6 @@ TEST_CASE("gltf: attribute sets that are not contiguous load, and say so once pe
     CHECK(report.warnings == std::vector<std::string>{
         f + "TEXCOORD_2 without TEXCOORD_1: attribute set is not contiguous, ignored (mesh 0 primitive 0, and 2 more)",
         f + "COLOR_1 without COLOR_0: attribute set is not contiguous, ignored (mesh 0 primitive 1)",
-        f + "vertex colours (COLOR_n) ignored: shaded with the material's base colour (mesh 0 primitive 1)",
     });
 
     // The same geometry with contiguous sets and no vertex colours says nothing.
@@ -294,7 +304,6 @@ TEST_CASE("gltf: features that are not drawn are named, each once") {
     json animation = {{"samplers", json::array({sampler})}, {"channels", json::array({channel})}};
     b.doc["animations"] = json::array({animation});
     b.doc["extensionsUsed"] = {"KHR_materials_volume", "KHR_lights_punctual", "KHR_materials_clearcoat"};
-    b.doc["extensionsRequired"] = {"KHR_lights_punctual"};
     GltfLoadReport report;
     auto file = b.writeGltf("ignored");
     Scene s = loadGltf(file, report);
@@ -313,12 +322,14 @@ TEST_CASE("gltf: features that are not drawn are named, each once") {
         f + "extensions ignored: KHR_lights_punctual, KHR_materials_clearcoat",
         f + "skins ignored: skinned meshes are drawn in their bind pose",
         f + "animations ignored: the scene is drawn at rest",
-        f + "base colour textures ignored: colour and alpha come from baseColorFactor (material 0)",
     };
-    // tinygltf's own note on the missing image comes first; then what Strata ignored.
-    REQUIRE(report.warnings.size() == expected.size() + 1);
+    // tinygltf's own note on the missing image comes first, then the material that keeps its
+    // factor; then what Strata ignored.
+    REQUIRE(report.warnings.size() == expected.size() + 2);
     CHECK(report.warnings[0].rfind(f, 0) == 0);
-    CHECK(std::vector<std::string>(report.warnings.begin() + 1, report.warnings.end()) == expected);
+    CHECK(report.warnings[1] == f + "image 0 cannot be read ('does-not-exist.png'); material 0 (and any other "
+                                    "material using it) renders with its base colour factor");
+    CHECK(std::vector<std::string>(report.warnings.begin() + 2, report.warnings.end()) == expected);
     for (const auto& line : report.warnings) CHECK(line.find('\n') == std::string::npos);
 }
 
@@ -534,7 +545,7 @@ Expect loads(std::size_t triangles, std::size_t objects, std::vector<std::string
 }
 Expect fails(std::string error) { return {0, 0, std::move(error), {}}; }
 
-const std::string kTexturesIgnored = "base colour textures ignored: colour and alpha come from baseColorFactor";
+const std::string kMetallicRoughnessIgnored = "metallic-roughness textures ignored: not drawn yet";
 
 const std::map<std::string, Expect>& corpusTable() {
     static const std::map<std::string, Expect> table = {
@@ -542,16 +553,19 @@ const std::map<std::string, Expect>& corpusTable() {
         // Its normals are zero-length; the loader replaces them by flat normals.
         {"BoxBadNormals-glTF-Binary/BoxBadNormals.glb",
          loads(12, 1, {"zero-length NORMAL: flat normals used instead (mesh 0 primitive 0)"})},
-        {"BoxTexcoords-glTF/boxTexcoords.gltf", loads(12, 1, {kTexturesIgnored + " (material 0)"})},
-        {"BoxTextured-glTF-Binary/BoxTextured.glb", loads(12, 1, {kTexturesIgnored + " (material 0)"})},
-        {"BoxTextured-glTF-Embedded/BoxTextured.gltf", loads(12, 1, {kTexturesIgnored + " (material 0)"})},
+        {"BoxTexcoords-glTF/boxTexcoords.gltf", loads(12, 1, {kMetallicRoughnessIgnored + " (material 0)"})},
+        {"BoxTextured-glTF-Binary/BoxTextured.glb", loads(12, 1)},
+        {"BoxTextured-glTF-Embedded/BoxTextured.gltf", loads(12, 1)},
         {"BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf",
-         loads(12, 1, {"extensions ignored: KHR_materials_pbrSpecularGlossiness", kTexturesIgnored + " (material 0)"})},
+         loads(12, 1, {"extensions ignored: KHR_materials_pbrSpecularGlossiness"})},
         {"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf", fails("required extension KHR_technique_webgl is not supported")},
-        {"BoxTextured-glTF/BoxTextured.gltf", loads(12, 1, {kTexturesIgnored + " (material 0)"})},
+        {"BoxTextured-glTF/BoxTextured.gltf", loads(12, 1)},
         {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", fails("mesh 0 primitive 0: non-finite POSITION value")},
         {"ClearCoat-glTF/ClearCoatTest.gltf",
-         loads(37116, 27, {"extensions ignored: KHR_materials_clearcoat", kTexturesIgnored + " (material 5)"})},
+         loads(37116, 27, {"extensions ignored: KHR_materials_clearcoat",
+                           kMetallicRoughnessIgnored + " (material 8)",
+                           "normal textures ignored: not drawn yet (material 9, and 5 more)",
+                           "emissive textures ignored: not drawn yet (material 18)"})},
         {"IncorrectVertexArrays/Cube.gltf", fails("mesh 1 primitive 0: TRIANGLES with 35 vertices (not a multiple of 3)")},
         {"IndexOutOfRange/AllIndicesOutOfRange.gltf", fails("mesh 0 primitive 0: index 65535 out of range (24 vertices)")},
         {"IndexOutOfRange/IndexOutOfRange.gltf", fails("mesh 0 primitive 0: index 255 out of range (24 vertices)")},
@@ -568,13 +582,12 @@ const std::map<std::string, Expect>& corpusTable() {
                        "animations ignored: the scene is drawn at rest"})},
         // Rejected by the Khronos validator (TEXCOORD_1 without TEXCOORD_0), drawable by Strata.
         {"issue_3269/texcoord_crash.gltf",
-         loads(10, 5, {"TEXCOORD_1 without TEXCOORD_0: attribute set is not contiguous, ignored (mesh 0 primitive 0)",
-                       kTexturesIgnored + " (material 1, and 3 more)"})},
+         loads(10, 5, {"TEXCOORD_1 without TEXCOORD_0: attribute set is not contiguous, ignored (mesh 0 primitive 0)"})},
         {"simple_skin/simple_skin.gltf",
          loads(8, 1, {"skins ignored: skinned meshes are drawn in their bind pose",
                       "animations ignored: the scene is drawn at rest"})},
         {"textureTransform/TextureTransformTest.gltf",
-         loads(18, 12, {"extensions ignored: KHR_texture_transform", kTexturesIgnored + " (material 0, and 8 more)"})},
+         loads(18, 12)},
         // tinygltf accepts these silently with default values; the schema pre-check refuses them.
         {"wrongTypes/badArray.gltf", fails("meshes[0].primitives: expected an array")},
         {"wrongTypes/badExtension.gltf", fails("baseColorTexture.extensions.KHR_texture_transform: expected an object")},
@@ -676,5 +689,168 @@ TEST_CASE("gltf: shared test models load with their triangle counts") {
         CHECK(s.meshes[0].normals.size() == s.meshes[0].positions.size());
         CHECK(flatten(s).size() == 1);
         CHECK_FALSE(hasTransparency(s, flatten(s)));
+    }
+}
+
+namespace {
+
+// A 2 x 1 RGBA PNG with known texels, encoded by OpenImageIO.
+std::vector<unsigned char> twoTexelPng() {
+    const std::filesystem::path path = test::tempDir() / "two-texels.png";
+    const unsigned char pixels[8] = {10, 20, 30, 40, 200, 150, 100, 255};
+    OIIO::ImageSpec spec(2, 1, 4, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // the texels are straight alpha, as glTF's
+    auto out = OIIO::ImageOutput::create(path.string());
+    REQUIRE(out);
+    REQUIRE(out->open(path.string(), spec));
+    REQUIRE(out->write_image(OIIO::TypeDesc::UINT8, pixels));
+    out->close();
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void checkTwoTexels(const Scene& s) {
+    REQUIRE(s.images.size() == 1);
+    CHECK(s.images[0].width == 2);
+    CHECK(s.images[0].height == 1);
+    CHECK(s.images[0].rgba == std::vector<std::uint8_t>{10, 20, 30, 40, 200, 150, 100, 255});
+    REQUIRE(s.materials.size() == 2);
+    CHECK(s.materials[1].baseColorTexture.image == 0);
+}
+
+// A triangle with TEXCOORD_0, textured by image 0 through texture 0.
+GltfBuilder texturedTriangle() {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    int uv = b.accessor(b.view(std::vector<float>{0, 0, 1, 0, 0, 1}), kFloat, 3, "VEC2");
+    b.doc["textures"] = {{{"source", 0}}};
+    b.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}, {"alphaMode", "BLEND"}});
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}, {"TEXCOORD_0", uv}}}, {"material", 0}}}));
+    return b;
+}
+
+}  // namespace
+
+TEST_CASE("gltf: a PNG decodes to its texels from a file, a data URI and a GLB bufferView") {
+    const std::vector<unsigned char> png = twoTexelPng();
+    {
+        GltfBuilder b = texturedTriangle();
+        test::writeFile(test::tempDir() / "texels.png", std::string(png.begin(), png.end()));
+        b.doc["images"] = {{{"uri", "texels.png"}}};
+        GltfLoadReport report;
+        checkTwoTexels(loadGltf(b.writeGltf("image-file"), report));
+        CHECK(report.warnings.empty());
+    }
+    {
+        GltfBuilder b = texturedTriangle();
+        b.doc["images"] = {{{"uri", "data:image/png;base64," + test::base64(png)}}};
+        GltfLoadReport report;
+        checkTwoTexels(loadGltf(b.writeGltf("image-data-uri"), report));
+        CHECK(report.warnings.empty());
+    }
+    {
+        GltfBuilder b = texturedTriangle();
+        b.doc["images"] = {{{"bufferView", b.view(png)}, {"mimeType", "image/png"}}};
+        GltfLoadReport report;
+        checkTwoTexels(loadGltf(b.writeGlb("image-glb"), report));
+        CHECK(report.warnings.empty());
+    }
+}
+
+TEST_CASE("gltf: samplers, texCoord and KHR_texture_transform are read into the texture reference") {
+    const std::vector<unsigned char> png = twoTexelPng();
+    GltfBuilder b = texturedTriangle();
+    b.doc["images"] = {{{"uri", "data:image/png;base64," + test::base64(png)}}};
+    b.doc["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9986}, {"wrapS", 33071}, {"wrapT", 33648}}};
+    b.doc["textures"][0]["sampler"] = 0;
+    b.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    b.doc["extensionsRequired"] = {"KHR_texture_transform"};
+    b.doc["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"] = {
+        {"KHR_texture_transform", {{"offset", {0.5, -0.25}}, {"rotation", 0.75}, {"scale", {2.0, 3.0}}, {"texCoord", 1}}}};
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("transform"), report);
+    CHECK(report.warnings.empty());
+    const TextureRef& t = s.materials[1].baseColorTexture;
+    CHECK(t.sampler.magFilter == TextureFilter::Nearest);
+    CHECK(t.sampler.minFilter == TextureFilter::NearestMipmapLinear);
+    CHECK(t.sampler.wrapS == TextureWrap::ClampToEdge);
+    CHECK(t.sampler.wrapT == TextureWrap::MirroredRepeat);
+    CHECK(t.texCoord == 1);
+    CHECK(t.transform.offset == glm::vec2(0.5f, -0.25f));
+    CHECK(t.transform.rotation == 0.75f);
+    CHECK(t.transform.scale == glm::vec2(2.0f, 3.0f));
+
+    b.doc["samplers"][0]["wrapS"] = 12345;
+    CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("bad-wrap")), doctest::Contains("wrap mode 12345"), LoadError);
+}
+
+TEST_CASE("gltf: COLOR_0 and TEXCOORD_1 are read, normalized integers decoded") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    int rgb = b.accessor(b.view(std::vector<std::uint8_t>{255, 0, 51, 0, 0, 255, 102, 0, 0, 0, 255, 0}, 4), kUByte, 3,
+                         "VEC3", 0, true);
+    int uv1 = b.accessor(b.view(std::vector<std::uint16_t>{0, 65535, 65535, 0, 32768, 32768}), kUShort, 3, "VEC2", 0,
+                         true);
+    int uv0 = b.accessor(b.view(std::vector<float>(6, 0.25f)), kFloat, 3, "VEC2");
+    b.meshNode(json::array(
+        {{{"attributes", {{"POSITION", pos}, {"COLOR_0", rgb}, {"TEXCOORD_0", uv0}, {"TEXCOORD_1", uv1}}}}}));
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("colors"), report);
+    CHECK(report.warnings.empty());
+    REQUIRE(s.meshes.size() == 1);
+    const Mesh& m = s.meshes[0];
+    REQUIRE(m.colors.size() == 3);
+    CHECK(m.colors[0] == glm::vec4(1.0f, 0.0f, 0.2f, 1.0f));  // VEC3: alpha 1
+    CHECK(m.colors[1].b == doctest::Approx(102.0f / 255.0f));
+    REQUIRE(m.texCoords[1].size() == 3);
+    CHECK(m.texCoords[1][0] == glm::vec2(0.0f, 1.0f));
+    CHECK(m.texCoords[1][2].x == doctest::Approx(32768.0f / 65535.0f));
+    CHECK(m.texCoords[0][1] == glm::vec2(0.25f));
+}
+
+TEST_CASE("gltf: extensionsRequired naming an extension Strata does not implement refuses the file") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}}}));
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensionsRequired"] = {"KHR_lights_punctual"};
+    auto file = b.writeGltf("required");
+    CHECK_THROWS_WITH_AS(loadGltf(file), (file.string() + ": requires extension KHR_lights_punctual, which Strata "
+                                                          "does not implement").c_str(),
+                         LoadError);
+}
+
+TEST_CASE("gltf: an image too large or not an image is refused before decoding, with a warning") {
+    // A PNG signature and an IHDR claiming 20000 x 4 texels, and no pixel data (a decompression
+    // bomb's header).
+    std::vector<unsigned char> header = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+                                         0, 0, 0x4e, 0x20, 0, 0, 0, 4, 8, 6, 0, 0, 0};
+    // The IHDR's CRC, so the reader gets as far as the size.
+    std::uint32_t crc = 0xffffffffu;
+    for (std::size_t i = 12; i < header.size(); ++i) {
+        crc ^= header[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    crc ^= 0xffffffffu;
+    for (int k = 3; k >= 0; --k) header.push_back(std::uint8_t(crc >> (8 * k)));
+    // An empty IDAT chunk (its CRC is that of the bytes "IDAT"): the reader stops its header pass
+    // there, and the size is refused before any pixel is read.
+    header.insert(header.end(), {0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xaf, 0x06, 0x1e});
+    for (const auto& [name, bytes, why] :
+         std::vector<std::tuple<std::string, std::vector<unsigned char>, std::string>>{
+             {"huge", header, "20000x4 is outside 1..16384 a side"},
+             {"text", {'h', 'e', 'l', 'l', 'o'}, "not a PNG, JPEG or WebP image"},
+             {"ktx2", {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n', 0, 0}, "KTX2"}}) {
+        CAPTURE(name);
+        GltfBuilder b = texturedTriangle();
+        b.doc["images"] = {{{"uri", "data:application/octet-stream;base64," + test::base64(bytes)}}};
+        GltfLoadReport report;
+        Scene s = loadGltf(b.writeGltf("image-" + name), report);
+        CHECK(s.images.empty());
+        CHECK_FALSE(s.materials[1].baseColorTexture.present());
+        REQUIRE(report.warnings.size() == 1);
+        CAPTURE(report.warnings[0]);
+        CHECK(report.warnings[0].find("image 0 " + why) != std::string::npos);
+        CHECK(report.warnings[0].find("renders with its base colour factor") != std::string::npos);
     }
 }

@@ -49,9 +49,11 @@ bool indexedSemantic(const std::string& name, std::string& set, int& index) {
 }
 
 // Extensions whose content the loader reads: KHR_materials_volume gives tau and albedo,
-// KHR_mesh_quantization's integer attributes are decoded like any accessor.
+// KHR_mesh_quantization's integer attributes are decoded like any accessor,
+// KHR_texture_transform places a texture.
 bool honoured(const std::string& extension) {
-    return extension == "KHR_materials_volume" || extension == "KHR_mesh_quantization";
+    return extension == "KHR_materials_volume" || extension == "KHR_mesh_quantization" ||
+           extension == "KHR_texture_transform";
 }
 
 }  // namespace
@@ -69,11 +71,13 @@ void noteIgnoredAttributes(const tinygltf::Primitive& p, const std::string& plac
             log.note("unknown attribute", "unknown attribute " + name + " ignored", place);
         }
     }
+    std::set<std::string> gapped;
     for (const auto& [set, indices] : sets) {
         // glTF requires SET_0 .. SET_n without gaps (validator: MESH_PRIMITIVE_INDEXED_SEMANTIC_CONTINUITY).
         int expected = 0;
         for (int index : indices) {
             if (index != expected) {
+                gapped.insert(set);
                 log.note("gap " + set, set + "_" + std::to_string(index) + " without " + set + "_" +
                                            std::to_string(expected) + ": attribute set is not contiguous, ignored",
                          place);
@@ -82,8 +86,10 @@ void noteIgnoredAttributes(const tinygltf::Primitive& p, const std::string& plac
             ++expected;
         }
     }
-    if (sets.count("COLOR"))
-        log.note("vertex colours", "vertex colours (COLOR_n) ignored: shaded with the material's base colour", place);
+    if (sets.count("COLOR") && !gapped.count("COLOR") && *sets["COLOR"].rbegin() > 0)
+        log.note("colour sets", "COLOR_1 and above ignored: only COLOR_0 is read", place);
+    if (sets.count("TEXCOORD") && !gapped.count("TEXCOORD") && *sets["TEXCOORD"].rbegin() > 1)
+        log.note("texcoord sets", "TEXCOORD_2 and above ignored: only TEXCOORD_0 and TEXCOORD_1 are read", place);
     if (!p.targets.empty())
         log.note("morph targets", "morph targets ignored: the base geometry is drawn", place);
 }
@@ -103,11 +109,23 @@ void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log) {
         log.note("skins", "skins ignored: skinned meshes are drawn in their bind pose");
     if (!model.animations.empty())
         log.note("animations", "animations ignored: the scene is drawn at rest");
-    for (std::size_t i = 0; i < model.materials.size(); ++i)
-        if (model.materials[i].pbrMetallicRoughness.baseColorTexture.index >= 0)
-            log.note("base colour textures",
-                     "base colour textures ignored: colour and alpha come from baseColorFactor",
-                     "material " + std::to_string(i));
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& m = model.materials[i];
+        const std::string place = "material " + std::to_string(i);
+        if (m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
+            log.note("metallic-roughness textures", "metallic-roughness textures ignored: not drawn yet", place);
+        if (m.normalTexture.index >= 0) log.note("normal textures", "normal textures ignored: not drawn yet", place);
+        if (m.occlusionTexture.index >= 0)
+            log.note("occlusion textures", "occlusion textures ignored: not drawn yet", place);
+        if (m.emissiveTexture.index >= 0)
+            log.note("emissive textures", "emissive textures ignored: not drawn yet", place);
+    }
+}
+
+std::string unimplementedRequiredExtension(const tinygltf::Model& model) {
+    for (const std::string& e : model.extensionsRequired)
+        if (!honoured(e)) return e;
+    return {};
 }
 
 }  // namespace strata::detail

@@ -2,7 +2,7 @@
 // What the glTF loader ignores, drops or repairs in a file it can still draw, said once per kind
 // of thing (DESIGN.md: never silently wrong). A file the Khronos validator rejects, such as one
 // with TEXCOORD_1 but no TEXCOORD_0, must not load in silence; neither may a valid file whose
-// skins, morph targets, vertex colours or base-colour textures Strata does not draw.
+// skins, morph targets or textures Strata does not draw.
 // Internal to the loader (gltf_loader.cpp); the lines reach callers through GltfLoadReport.
 #include <tiny_gltf.h>
 
@@ -29,12 +29,16 @@ private:
 };
 
 // The attributes of a triangle primitive Strata does not read, and the broken ones: an indexed
-// set (TEXCOORD_n, COLOR_n, JOINTS_n, WEIGHTS_n) with a gap, an unknown semantic, vertex
-// colours, morph targets.
+// set (TEXCOORD_n, COLOR_n, JOINTS_n, WEIGHTS_n) with a gap, an unknown semantic, colour and
+// texture coordinate sets past COLOR_0 and TEXCOORD_1, morph targets.
 void noteIgnoredAttributes(const tinygltf::Primitive& primitive, const std::string& place, IgnoredLog& log);
 
 // Whole-document features Strata does not draw: extensions it does not implement, skins,
-// animations, base-colour textures.
+// animations, the textures it does not read yet (metallic-roughness, normal, occlusion, emissive).
 void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log);
+
+// The first of `extensionsRequired` Strata does not implement, or empty: the glTF specification
+// requires a loader to refuse such a file.
+std::string unimplementedRequiredExtension(const tinygltf::Model& model);
 
 }  // namespace strata::detail

@@ -4,6 +4,7 @@
 #include "io/printable.hpp"
 #include "scene/gltf_ignored.hpp"
 #include "scene/gltf_schema.hpp"
+#include "scene/image_decode.hpp"
 
 // The Debian package ships libtinygltf.so with the implementation (and its own JSON parser),
 // so this file only includes the declarations; defining TINYGLTF_IMPLEMENTATION here would
@@ -21,6 +22,7 @@
 #include <limits>
 #include <new>
 #include <numeric>
+#include <set>
 
 namespace strata {
 namespace {
@@ -94,10 +96,42 @@ bool finiteMatrix(const glm::mat4& m) {
     return true;
 }
 
-// Textures are never used, so every image is accepted and dropped; this keeps missing or
-// undecodable images from failing the load and means no image decoder is linked.
-bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                 const unsigned char*, int, void*) {
+// Every image tinygltf finds (a file beside the glTF, a data URI, a GLB bufferView) is decoded
+// here, into a table by glTF image index. The callback always succeeds: a missing, broken,
+// oversized or unsupported image becomes a warning naming it and the materials using it, which
+// render with their factors; it never fails the whole file.
+struct ImageTable {
+    std::vector<TextureImage> images;  // by glTF image index; width 0: not decoded
+    std::vector<std::string> errors;   // why not, by glTF image index (empty: never reached)
+    std::size_t totalBytes = 0;
+
+    static constexpr std::size_t kMaxTotalBytes = std::size_t(1) << 30;  // decoded, per file
+
+    void ensure(std::size_t index) {
+        if (images.size() <= index) {
+            images.resize(index + 1);
+            errors.resize(index + 1);
+        }
+    }
+};
+
+bool decodeImageCallback(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                         const unsigned char* bytes, int size, void* user) {
+    auto& table = *static_cast<ImageTable*>(user);
+    if (index < 0 || size < 0) return true;
+    table.ensure(std::size_t(index));
+    TextureImage decoded;
+    std::string error;
+    if (!decodeImage(bytes, std::size_t(size), decoded, error)) {
+        table.errors[std::size_t(index)] = error;
+    } else if (table.totalBytes + decoded.bytes() > ImageTable::kMaxTotalBytes) {
+        table.errors[std::size_t(index)] = "the file's decoded textures would exceed " +
+                                           std::to_string(ImageTable::kMaxTotalBytes >> 20) + " MiB";
+    } else {
+        table.totalBytes += decoded.bytes();
+        decoded.name = image && !image->name.empty() ? image->name : (image ? image->uri.substr(0, 80) : "");
+        table.images[std::size_t(index)] = std::move(decoded);
+    }
     return true;
 }
 
@@ -365,8 +399,122 @@ struct Converter {
     const tinygltf::Model& model;
     GltfLoadReport& report;
     detail::IgnoredLog& ignored;  // what the file holds that is not drawn as given, said once per kind
+    ImageTable& decoded;
+    std::string file;  // for the image warnings
     Scene scene;
     std::vector<std::vector<int>> meshMap;  // glTF mesh -> strata meshes (one per triangle primitive)
+    std::vector<int> imageMap;              // glTF image -> Scene::images, -1 not decoded
+    std::set<int> warnedImages;             // glTF images whose failure was said
+
+    void convertImages() {
+        decoded.ensure(model.images.size());
+        for (std::size_t i = 0; i < model.images.size(); ++i) {
+            if (decoded.images[i].width > 0) {
+                imageMap.push_back(int(scene.images.size()));
+                scene.images.push_back(std::move(decoded.images[i]));
+            } else {
+                imageMap.push_back(-1);
+            }
+        }
+    }
+
+    // Why glTF image `i` has no decoded copy.
+    std::string imageProblem(std::size_t i) const {
+        if (!decoded.errors[i].empty()) return decoded.errors[i];
+        const tinygltf::Image& g = model.images[i];
+        if (!g.uri.empty() && g.uri.rfind("data:", 0) != 0) return "cannot be read ('" + printable(g.uri, 80) + "')";
+        return "has no image data";
+    }
+
+    static TextureWrap wrapOf(int value, const std::string& what) {
+        switch (value) {
+        case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+        default: fail(what + ": wrap mode " + str(value) + " is not a glTF wrap mode");
+        }
+    }
+
+    static TextureFilter filterOf(int value, bool minification, TextureFilter fallback, const std::string& what) {
+        if (value < 0) return fallback;  // absent: the implementation's choice (texture.hpp)
+        switch (value) {
+        case TINYGLTF_TEXTURE_FILTER_NEAREST: return TextureFilter::Nearest;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR: return TextureFilter::Linear;
+        default: break;
+        }
+        if (minification) switch (value) {
+            case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return TextureFilter::NearestMipmapNearest;
+            case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return TextureFilter::LinearMipmapNearest;
+            case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return TextureFilter::NearestMipmapLinear;
+            case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return TextureFilter::LinearMipmapLinear;
+            default: break;
+            }
+        fail(what + ": " + (minification ? "minFilter " : "magFilter ") + str(value) + " is not a glTF filter");
+    }
+
+    glm::vec2 vec2Of(const tinygltf::Value& ext, const char* key, glm::vec2 fallback, const std::string& what) {
+        if (!ext.Has(key)) return fallback;
+        const tinygltf::Value& v = ext.Get(key);
+        if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+            fail(what + ": " + key + " must be an array of 2 numbers");
+        return {toFloat(v.Get(0).GetNumberAsDouble(), what + ": " + key),
+                toFloat(v.Get(1).GetNumberAsDouble(), what + ": " + key)};
+    }
+
+    // A textureInfo (index, texCoord, KHR_texture_transform) to a TextureRef; image -1 where the
+    // texture cannot be drawn, with a warning that names the image and the material.
+    TextureRef textureOf(const tinygltf::TextureInfo& info, const std::string& material) {
+        TextureRef ref;
+        if (info.index < 0) return ref;
+        const std::string what = material + " baseColorTexture";
+        if (std::size_t(info.index) >= model.textures.size()) fail(what + ": texture " + str(info.index) + " does not exist");
+        const tinygltf::Texture& t = model.textures[std::size_t(info.index)];
+        if (t.sampler >= 0) {
+            if (std::size_t(t.sampler) >= model.samplers.size())
+                fail(what + ": sampler " + str(t.sampler) + " does not exist");
+            const tinygltf::Sampler& g = model.samplers[std::size_t(t.sampler)];
+            const std::string sw = "sampler " + str(t.sampler);
+            ref.sampler.magFilter = filterOf(g.magFilter, false, ref.sampler.magFilter, sw);
+            ref.sampler.minFilter = filterOf(g.minFilter, true, ref.sampler.minFilter, sw);
+            ref.sampler.wrapS = wrapOf(g.wrapS, sw);
+            ref.sampler.wrapT = wrapOf(g.wrapT, sw);
+        }
+        ref.texCoord = info.texCoord;
+        auto ext = info.extensions.find("KHR_texture_transform");
+        if (ext != info.extensions.end() && ext->second.IsObject()) {
+            const tinygltf::Value& v = ext->second;
+            const std::string tw = what + " KHR_texture_transform";
+            ref.transform.offset = vec2Of(v, "offset", ref.transform.offset, tw);
+            ref.transform.scale = vec2Of(v, "scale", ref.transform.scale, tw);
+            ref.transform.rotation = toFloat(number(v, "rotation", 0.0, tw), tw + ": rotation");
+            if (v.Has("texCoord")) {
+                const double set = number(v, "texCoord", 0.0, tw);
+                if (set != std::floor(set) || set < 0.0 || set > 1e6) fail(tw + ": texCoord must be a small integer");
+                ref.texCoord = int(set);
+            }
+        }
+        if (ref.texCoord != 0 && ref.texCoord != 1) {
+            ignored.note("texCoord set", "textures on TEXCOORD_2 or above ignored: only TEXCOORD_0 and TEXCOORD_1 are read",
+                         what);
+            return TextureRef{};
+        }
+        if (t.source < 0) {
+            ignored.note("texture without source", "texture without an image source ignored (" + material +
+                                                       " renders with its base colour factor)", what);
+            return TextureRef{};
+        }
+        if (std::size_t(t.source) >= model.images.size()) fail(what + ": image " + str(t.source) + " does not exist");
+        ref.image = imageMap[std::size_t(t.source)];
+        if (ref.image < 0 && !warnedImages.count(t.source)) {  // once per image, naming its first material
+            warnedImages.insert(t.source);
+            const tinygltf::Image& g = model.images[std::size_t(t.source)];
+            report.warnings.push_back(printable(file, 120) + ": image " + str(t.source) +
+                                      (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')") + " " +
+                                      printableMessage(imageProblem(std::size_t(t.source))) + "; " + material +
+                                      " (and any other material using it) renders with its base colour factor");
+        }
+        return ref;
+    }
 
     double number(const tinygltf::Value& obj, const char* key, double fallback, const std::string& what) {
         if (!obj.IsObject() || !obj.Has(key)) return fallback;
@@ -396,6 +544,8 @@ struct Converter {
             }
             m.baseColor = glm::vec3(factor);
             m.alpha = factor.a;
+            m.baseColorTexture = textureOf(g.pbrMetallicRoughness.baseColorTexture,
+                                           what + (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')"));
             if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
             else if (g.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
             else if (g.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
@@ -510,6 +660,8 @@ struct Converter {
             mesh.material = p.material + 1;  // materials[0] is the inserted default
         }
 
+        readMaterialAttributes(p, mesh, what);
+
         auto nrm = p.attributes.find("NORMAL");
         bool flat = true;
         if (nrm != p.attributes.end()) {
@@ -524,6 +676,41 @@ struct Converter {
             ++report.flatNormalMeshes;
         }
         return scene.addMesh(std::move(mesh));
+    }
+
+    // TEXCOORD_0, TEXCOORD_1 (VEC2) and COLOR_0 (VEC3 or VEC4), float or normalized integers,
+    // one per position, finite. Read before flat normals unweld the mesh, which carries them.
+    void readMaterialAttributes(const tinygltf::Primitive& p, Mesh& mesh, const std::string& what) {
+        const std::size_t vertexCount = mesh.positions.size();
+        auto checkCount = [&](std::size_t n, const char* semantic) {
+            if (n != vertexCount) fail(what + ": " + semantic + " has " + str(n) + " elements, POSITION " + str(vertexCount));
+        };
+        const char* sets[2] = {"TEXCOORD_0", "TEXCOORD_1"};
+        for (int set = 0; set < 2; ++set) {
+            auto a = p.attributes.find(sets[set]);
+            if (a == p.attributes.end()) continue;
+            AccessorView v = checkAccessor(model, a->second, 2, false, what + " " + sets[set]);
+            std::vector<glm::vec2> uv(v.count);
+            readAccessor(v, what + " " + sets[set], [&](std::size_t e, int c, double x) { uv[e][c] = float(x); });
+            for (const auto& t : uv)
+                if (!std::isfinite(t.x) || !std::isfinite(t.y)) fail(what + ": non-finite " + sets[set] + " value");
+            checkCount(uv.size(), sets[set]);
+            mesh.texCoords[set] = std::move(uv);
+        }
+        auto color = p.attributes.find("COLOR_0");
+        if (color != p.attributes.end()) {
+            if (color->second < 0 || std::size_t(color->second) >= model.accessors.size())
+                fail(what + " COLOR_0: accessor " + str(color->second) + " does not exist");
+            const int components = vectorComponents(model.accessors[std::size_t(color->second)].type) == 3 ? 3 : 4;
+            AccessorView v = checkAccessor(model, color->second, components, false, what + " COLOR_0");
+            std::vector<glm::vec4> colors(v.count, glm::vec4(1.0f));
+            readAccessor(v, what + " COLOR_0", [&](std::size_t e, int c, double x) { colors[e][c] = float(x); });
+            for (const auto& c : colors)
+                if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a))
+                    fail(what + ": non-finite COLOR_0 value");
+            checkCount(colors.size(), "COLOR_0");
+            mesh.colors = std::move(colors);
+        }
     }
 
     glm::mat4 localTransform(const tinygltf::Node& n, const std::string& what) {
@@ -678,7 +865,7 @@ struct Converter {
 };
 
 tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path& file, GltfLoadReport& report,
-                           detail::IgnoredLog& ignored) {
+                           detail::IgnoredLog& ignored, ImageTable& images) {
     if (bytes.empty()) fail("empty file");
     // tinygltf replaces mistyped properties by defaults; refuse them instead (see gltf_schema.hpp).
     if (std::string problem = detail::checkGltfSchema(bytes, &ignored); !problem.empty()) fail(problem);
@@ -686,7 +873,7 @@ tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path
     bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
 
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&ignoreImage, nullptr);
+    loader.SetImageLoader(&decodeImageCallback, &images);
     loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, nullptr});
     tinygltf::Model model;
     std::string err, warn;
@@ -723,9 +910,13 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& 
     const std::string name = printable(file.string(), 120);
     try {
         detail::IgnoredLog ignored;
-        tinygltf::Model model = parseBytes(bytes, file, report, ignored);
-        Converter conv{model, report, ignored, {}, {}};
+        ImageTable images;
+        tinygltf::Model model = parseBytes(bytes, file, report, ignored, images);
+        if (std::string name = detail::unimplementedRequiredExtension(model); !name.empty())
+            fail("requires extension " + printable(name, 60) + ", which Strata does not implement");
+        Converter conv{model, report, ignored, images, file.string(), {}, {}, {}};
         conv.scene.name = file.stem().string();
+        conv.convertImages();
         conv.convertMaterials();
         conv.convertMeshes();
         conv.convertNodes();
