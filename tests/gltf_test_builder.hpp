@@ -100,6 +100,25 @@ struct GltfBuilder {
         return int(doc["materials"].size()) - 1;
     }
 
+    // An image from encoded bytes (PNG, JPEG, ...), each of the three ways glTF holds one;
+    // each returns the image index. A data URI inside the JSON:
+    int imageDataUri(const std::vector<unsigned char>& encoded, const std::string& mime = "image/png") {
+        return image({{"uri", "data:" + mime + ";base64," + base64(encoded)}});
+    }
+    // A file `name` beside the glTF (in tempDir(), where writeGltf puts it):
+    int imageFile(const std::string& name, const std::vector<unsigned char>& encoded) {
+        writeFile(tempDir() / name, std::string(encoded.begin(), encoded.end()));
+        return image({{"uri", name}});
+    }
+    // A bufferView of the binary buffer (the GLB way; a .gltf may do it too):
+    int imageBufferView(const std::vector<unsigned char>& encoded, const std::string& mime = "image/png") {
+        return image({{"bufferView", view(encoded)}, {"mimeType", mime}});
+    }
+    int image(const json& description) {
+        doc["images"].push_back(description);
+        return int(doc["images"].size()) - 1;
+    }
+
     // Where writeGltf's buffer points instead of its own .bin, when set (bad-input tests).
     std::string bufferUri;
 

@@ -1,5 +1,7 @@
 #include "scene/gltf_ignored.hpp"
 
+#include "io/printable.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -48,15 +50,14 @@ bool indexedSemantic(const std::string& name, std::string& set, int& index) {
     return false;
 }
 
-// Extensions whose content the loader reads: KHR_materials_volume gives tau and albedo,
-// KHR_mesh_quantization's integer attributes are decoded like any accessor,
-// KHR_texture_transform places a texture.
-bool honoured(const std::string& extension) {
+}  // namespace
+
+// KHR_materials_volume gives tau and albedo, KHR_mesh_quantization's integer attributes are
+// decoded like any accessor, KHR_texture_transform places a texture.
+bool implementedExtension(const std::string& extension) {
     return extension == "KHR_materials_volume" || extension == "KHR_mesh_quantization" ||
            extension == "KHR_texture_transform";
 }
-
-}  // namespace
 
 void noteIgnoredAttributes(const tinygltf::Primitive& p, const std::string& place, IgnoredLog& log) {
     std::map<std::string, std::set<int>> sets;
@@ -99,7 +100,7 @@ void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log) {
     std::vector<std::string> ignored;
     for (const auto* list : {&model.extensionsUsed, &model.extensionsRequired})
         for (const std::string& e : *list)
-            if (!honoured(e) && std::find(ignored.begin(), ignored.end(), e) == ignored.end()) ignored.push_back(e);
+            if (!implementedExtension(e) && std::find(ignored.begin(), ignored.end(), e) == ignored.end()) ignored.push_back(e);
     if (!ignored.empty()) {
         std::string names;
         for (const std::string& e : ignored) names += (names.empty() ? "" : ", ") + e;
@@ -124,8 +125,12 @@ void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log) {
 
 std::string unimplementedRequiredExtension(const tinygltf::Model& model) {
     for (const std::string& e : model.extensionsRequired)
-        if (!honoured(e)) return e;
+        if (!implementedExtension(e)) return e;
     return {};
+}
+
+std::string requiredExtensionProblem(const std::string& name) {
+    return "requires extension " + printable(name, 60) + ", which Strata does not implement";
 }
 
 }  // namespace strata::detail

@@ -37,8 +37,15 @@ void noteIgnoredAttributes(const tinygltf::Primitive& primitive, const std::stri
 // animations, the textures it does not read yet (metallic-roughness, normal, occlusion, emissive).
 void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log);
 
+// Extensions whose content the loader reads (KHR_materials_volume, KHR_mesh_quantization,
+// KHR_texture_transform); a file may require only these.
+bool implementedExtension(const std::string& name);
+
 // The first of `extensionsRequired` Strata does not implement, or empty: the glTF specification
 // requires a loader to refuse such a file.
 std::string unimplementedRequiredExtension(const tinygltf::Model& model);
+
+// The refusal's text (without the file): "requires extension X, which Strata does not implement".
+std::string requiredExtensionProblem(const std::string& name);
 
 }  // namespace strata::detail

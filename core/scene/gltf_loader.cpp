@@ -20,9 +20,9 @@
 #include <cstring>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <new>
 #include <numeric>
-#include <set>
 
 namespace strata {
 namespace {
@@ -101,6 +101,7 @@ bool finiteMatrix(const glm::mat4& m) {
 // oversized or unsupported image becomes a warning naming it and the materials using it, which
 // render with their factors; it never fails the whole file.
 struct ImageTable {
+    const tinygltf::Model* model = nullptr;  // being filled by tinygltf: its buffers are loaded before images
     std::vector<TextureImage> images;  // by glTF image index; width 0: not decoded
     std::vector<std::string> errors;   // why not, by glTF image index (empty: never reached)
     std::size_t totalBytes = 0;
@@ -113,23 +114,43 @@ struct ImageTable {
             errors.resize(index + 1);
         }
     }
+
+    // tinygltf hands an image's bufferView to the callback without checking it against its
+    // buffer; a view past the buffer's end must not be read.
+    std::string viewProblem(const tinygltf::Image& image) const {
+        if (image.bufferView < 0 || !model) return {};
+        const std::size_t index = std::size_t(image.bufferView);
+        if (index >= model->bufferViews.size()) return "bufferView " + std::to_string(index) + " does not exist";
+        const tinygltf::BufferView& view = model->bufferViews[index];
+        if (view.buffer < 0 || std::size_t(view.buffer) >= model->buffers.size())
+            return "bufferView " + std::to_string(index) + " refers to a buffer that does not exist";
+        const std::size_t size = model->buffers[std::size_t(view.buffer)].data.size();
+        if (view.byteOffset > size || view.byteLength > size - view.byteOffset)
+            return "bufferView " + std::to_string(index) + " exceeds its buffer";
+        return {};
+    }
 };
 
 bool decodeImageCallback(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
                          const unsigned char* bytes, int size, void* user) {
     auto& table = *static_cast<ImageTable*>(user);
-    if (index < 0 || size < 0) return true;
+    if (!image || index < 0 || size < 0) return true;
     table.ensure(std::size_t(index));
+    std::string& error = table.errors[std::size_t(index)];
     TextureImage decoded;
-    std::string error;
-    if (!decodeImage(bytes, std::size_t(size), decoded, error)) {
-        table.errors[std::size_t(index)] = error;
+    if (std::string problem = table.viewProblem(*image); !problem.empty()) {
+        error = problem;
+    } else if (!decodeImage(bytes, std::size_t(size), decoded, error)) {
+        // error says why
     } else if (table.totalBytes + decoded.bytes() > ImageTable::kMaxTotalBytes) {
-        table.errors[std::size_t(index)] = "the file's decoded textures would exceed " +
-                                           std::to_string(ImageTable::kMaxTotalBytes >> 20) + " MiB";
+        error = "the file's decoded textures would exceed " + std::to_string(ImageTable::kMaxTotalBytes >> 20) + " MiB";
     } else {
         table.totalBytes += decoded.bytes();
-        decoded.name = image && !image->name.empty() ? image->name : (image ? image->uri.substr(0, 80) : "");
+        // The name the panel and messages show: the glTF name, else the file it came from; data
+        // URIs and bufferViews have neither.
+        decoded.name = !image->name.empty() ? image->name
+                       : !image->uri.empty() ? image->uri
+                                             : "image " + std::to_string(index);
         table.images[std::size_t(index)] = std::move(decoded);
     }
     return true;
@@ -404,12 +425,22 @@ struct Converter {
     Scene scene;
     std::vector<std::vector<int>> meshMap;  // glTF mesh -> strata meshes (one per triangle primitive)
     std::vector<int> imageMap;              // glTF image -> Scene::images, -1 not decoded
-    std::set<int> warnedImages;             // glTF images whose failure was said
+    // glTF images that could not be decoded -> the materials that use them, in material order.
+    std::map<int, std::vector<std::string>> failedImageUsers;
 
+    // The decoded images a material's base colour texture uses move to Scene::images (every
+    // renderer uploads all of them, so a normal map Strata does not draw yet stays out).
     void convertImages() {
         decoded.ensure(model.images.size());
+        std::vector<char> used(model.images.size(), 0);
+        for (const tinygltf::Material& m : model.materials) {
+            const int texture = m.pbrMetallicRoughness.baseColorTexture.index;
+            if (texture < 0 || std::size_t(texture) >= model.textures.size()) continue;  // textureOf says so
+            const int source = model.textures[std::size_t(texture)].source;
+            if (source >= 0 && std::size_t(source) < used.size()) used[std::size_t(source)] = 1;
+        }
         for (std::size_t i = 0; i < model.images.size(); ++i) {
-            if (decoded.images[i].width > 0) {
+            if (used[i] && decoded.images[i].width > 0) {
                 imageMap.push_back(int(scene.images.size()));
                 scene.images.push_back(std::move(decoded.images[i]));
             } else {
@@ -422,7 +453,7 @@ struct Converter {
     std::string imageProblem(std::size_t i) const {
         if (!decoded.errors[i].empty()) return decoded.errors[i];
         const tinygltf::Image& g = model.images[i];
-        if (!g.uri.empty() && g.uri.rfind("data:", 0) != 0) return "cannot be read ('" + printable(g.uri, 80) + "')";
+        if (!g.uri.empty() && g.uri.rfind("data:", 0) != 0) return "cannot read '" + printable(g.uri, 80) + "'";
         return "has no image data";
     }
 
@@ -489,12 +520,13 @@ struct Converter {
             ref.transform.rotation = toFloat(number(v, "rotation", 0.0, tw), tw + ": rotation");
             if (v.Has("texCoord")) {
                 const double set = number(v, "texCoord", 0.0, tw);
-                if (set != std::floor(set) || set < 0.0 || set > 1e6) fail(tw + ": texCoord must be a small integer");
-                ref.texCoord = int(set);
+                if (set != std::floor(set)) fail(tw + ": texCoord must be an integer");
+                ref.texCoord = set >= 0.0 && set <= 1e6 ? int(set) : -1;  // -1: dropped below
             }
         }
         if (ref.texCoord != 0 && ref.texCoord != 1) {
-            ignored.note("texCoord set", "textures on TEXCOORD_2 or above ignored: only TEXCOORD_0 and TEXCOORD_1 are read",
+            ignored.note("texCoord set",
+                         "textures on a TEXCOORD set other than 0 and 1 ignored: only TEXCOORD_0 and TEXCOORD_1 are read",
                          what);
             return TextureRef{};
         }
@@ -505,15 +537,26 @@ struct Converter {
         }
         if (std::size_t(t.source) >= model.images.size()) fail(what + ": image " + str(t.source) + " does not exist");
         ref.image = imageMap[std::size_t(t.source)];
-        if (ref.image < 0 && !warnedImages.count(t.source)) {  // once per image, naming its first material
-            warnedImages.insert(t.source);
-            const tinygltf::Image& g = model.images[std::size_t(t.source)];
-            report.warnings.push_back(printable(file, 120) + ": image " + str(t.source) +
-                                      (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')") + " " +
-                                      printableMessage(imageProblem(std::size_t(t.source))) + "; " + material +
-                                      " (and any other material using it) renders with its base colour factor");
+        if (ref.image < 0) {
+            auto& users = failedImageUsers[t.source];
+            if (users.empty() || users.back() != material) users.push_back(material);
         }
         return ref;
+    }
+
+    // One line per image that could not be decoded but is used, naming why and the materials
+    // that render with their factors instead:
+    // "<file>: image 3 ('logo'): <why>; material 1 ('box') renders with its base colour factor".
+    void warnFailedImages() {
+        for (const auto& [index, users] : failedImageUsers) {
+            const tinygltf::Image& g = model.images[std::size_t(index)];
+            std::string line = printable(file, 120) + ": image " + str(index) +
+                               (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')") + ": " +
+                               printableMessage(imageProblem(std::size_t(index))) + "; " + users.front();
+            if (users.size() == 1) line += " renders with its base colour factor";
+            else line += " and " + str(users.size() - 1) + " more render with their base colour factors";
+            report.warnings.push_back(line);
+        }
     }
 
     double number(const tinygltf::Value& obj, const char* key, double fallback, const std::string& what) {
@@ -598,6 +641,7 @@ struct Converter {
             }
             scene.materials.push_back(std::move(m));
         }
+        warnFailedImages();
     }
 
     void convertMeshes() {
@@ -690,25 +734,39 @@ struct Converter {
             auto a = p.attributes.find(sets[set]);
             if (a == p.attributes.end()) continue;
             AccessorView v = checkAccessor(model, a->second, 2, false, what + " " + sets[set]);
+            // KHR_mesh_quantization adds (normalized or not) bytes and shorts; 32-bit integers never.
+            if (v.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+                fail(what + " " + sets[set] + " (accessor " + str(a->second) + "): component type UNSIGNED_INT is not allowed");
+            checkCount(v.count, sets[set]);
             std::vector<glm::vec2> uv(v.count);
             readAccessor(v, what + " " + sets[set], [&](std::size_t e, int c, double x) { uv[e][c] = float(x); });
             for (const auto& t : uv)
                 if (!std::isfinite(t.x) || !std::isfinite(t.y)) fail(what + ": non-finite " + sets[set] + " value");
-            checkCount(uv.size(), sets[set]);
             mesh.texCoords[set] = std::move(uv);
         }
         auto color = p.attributes.find("COLOR_0");
         if (color != p.attributes.end()) {
+            const std::string cw = what + " COLOR_0 (accessor " + str(color->second) + ")";
             if (color->second < 0 || std::size_t(color->second) >= model.accessors.size())
                 fail(what + " COLOR_0: accessor " + str(color->second) + " does not exist");
-            const int components = vectorComponents(model.accessors[std::size_t(color->second)].type) == 3 ? 3 : 4;
+            const tinygltf::Accessor& acc = model.accessors[std::size_t(color->second)];
+            const int components = vectorComponents(acc.type);
+            if (components != 3 && components != 4)
+                fail(cw + ": type " + typeName(acc.type) + ", expected VEC3 or VEC4");
+            // The specification allows float and normalized unsigned bytes and shorts only: an
+            // integer colour read as is would be 255 times too bright.
+            const bool unorm = acc.normalized && (acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                  acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+            if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !unorm)
+                fail(cw + ": component type " + str(acc.componentType) + (acc.normalized ? "" : " not normalized") +
+                     "; colours are FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT");
             AccessorView v = checkAccessor(model, color->second, components, false, what + " COLOR_0");
+            checkCount(v.count, "COLOR_0");
             std::vector<glm::vec4> colors(v.count, glm::vec4(1.0f));
             readAccessor(v, what + " COLOR_0", [&](std::size_t e, int c, double x) { colors[e][c] = float(x); });
             for (const auto& c : colors)
                 if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a))
                     fail(what + ": non-finite COLOR_0 value");
-            checkCount(colors.size(), "COLOR_0");
             mesh.colors = std::move(colors);
         }
     }
@@ -876,6 +934,7 @@ tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path
     loader.SetImageLoader(&decodeImageCallback, &images);
     loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, nullptr});
     tinygltf::Model model;
+    images.model = &model;  // for the callback's bufferView checks, during the load only
     std::string err, warn;
     // Buffers and images are found beside the file, as tinygltf's own file loaders do.
     const std::string baseDir = file.parent_path().string();
@@ -884,6 +943,7 @@ tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path
     bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
                                                    reinterpret_cast<const unsigned char*>(bytes.data()), size, baseDir)
                      : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, baseDir);
+    images.model = nullptr;
     if (!ok) fail(err.empty() ? std::string("not a valid glTF file") : oneLine(err));
     if (!warn.empty()) report.warnings.push_back(printable(file.string(), 120) + ": " + printableMessage(oneLine(warn)));
     return model;
@@ -912,9 +972,10 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& 
         detail::IgnoredLog ignored;
         ImageTable images;
         tinygltf::Model model = parseBytes(bytes, file, report, ignored, images);
+        // The schema check refused these already; tinygltf's model is checked too, as it is what is drawn.
         if (std::string name = detail::unimplementedRequiredExtension(model); !name.empty())
-            fail("requires extension " + printable(name, 60) + ", which Strata does not implement");
-        Converter conv{model, report, ignored, images, file.string(), {}, {}, {}};
+            fail(detail::requiredExtensionProblem(name));
+        Converter conv{model, report, ignored, images, file.string(), {}, {}, {}, {}};
         conv.scene.name = file.stem().string();
         conv.convertImages();
         conv.convertMaterials();

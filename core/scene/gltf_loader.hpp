@@ -1,6 +1,10 @@
 #pragma once
-// glTF 2.0 (.gltf and .glb) to strata::Scene. CPU only; textures are not loaded (the
-// techniques shade with material factors), so a missing or broken image is never fatal.
+// glTF 2.0 (.gltf and .glb) to strata::Scene. CPU only. Materials bring their base colour factor
+// and texture (decoded to Scene::images through image_decode.hpp: PNG, JPEG, WebP; from files,
+// data URIs and GLB bufferViews), sampler, TEXCOORD set and KHR_texture_transform; primitives
+// bring TEXCOORD_0, TEXCOORD_1 and COLOR_0. A missing, broken, oversized or unsupported image is
+// never fatal: it is a warning naming the image and its materials, which render with their factors.
+// The other textures (metallic-roughness, normal, occlusion, emissive) are named as not drawn.
 #include "scene/load_error.hpp"
 #include "scene/scene.hpp"
 
@@ -11,8 +15,8 @@
 namespace strata {
 
 // What the loader dropped, ignored or repaired in a file it could still draw. The commands print
-// `warnings` on stderr: a file the Khronos validator rejects, or one whose skins, vertex colours
-// or textures are not drawn, never loads in silence.
+// `warnings` on stderr: a file the Khronos validator rejects, or one whose skins, images or
+// textures are not drawn, never loads in silence.
 struct GltfLoadReport {
     int skippedPrimitives = 0;           // POINTS and LINES* primitives (not drawable as surfaces)
     int flatNormalMeshes = 0;            // meshes without (usable) NORMAL that got flat normals
@@ -26,7 +30,9 @@ struct GltfLoadReport {
 // `meshes` lists those of its glTF mesh. Throws LoadError("<file>: <what is wrong>").
 // The file and every buffer it names are read through readBoundedFile (io/bounded_read.hpp):
 // regular files of at most kGltfLimit bytes each. Every number that becomes a float (node
-// transforms, alphaCutoff) is checked as a float, and every node's world transform must be finite.
+// transforms, alphaCutoff, KHR_texture_transform) is checked as a float, and every node's world
+// transform must be finite. Images are bounded per image (image_decode.hpp) and to 1 GiB decoded
+// per file. A file whose extensionsRequired names an extension Strata does not implement is refused.
 Scene loadGltf(const std::filesystem::path& file);
 Scene loadGltf(const std::filesystem::path& file, GltfLoadReport& report);
 

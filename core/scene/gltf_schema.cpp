@@ -102,15 +102,6 @@ void textureInfo(const json& o, const char* key, const std::string& path) {
     });
 }
 
-// Extensions a file may require that the loader honours by implementing or by safely ignoring
-// them. Anything else (draco, meshopt, GPU instancing, ...) changes what the geometry is, and the
-// spec says a loader must then refuse the file.
-bool supportedRequiredExtension(const std::string& name) {
-    return name.rfind("KHR_materials_", 0) == 0 || name == "KHR_texture_transform" ||
-           name == "KHR_mesh_quantization" || name == "KHR_lights_punctual" ||
-           name == "KHR_texture_basisu" || name == "EXT_texture_webp";
-}
-
 void checkDocument(const json& doc, IgnoredLog* ignored) {
     object(doc, "document");
     uintKey(doc, "scene", "");
@@ -121,10 +112,11 @@ void checkDocument(const json& doc, IgnoredLog* ignored) {
                 if (!x.is_string()) bad(key, "an array of strings");
         }
     }
+    // Refused here, before tinygltf reads buffers and images for a file that cannot be drawn.
     if (const json* required = member(doc, "extensionsRequired"))
         for (const json& x : *required)
-            if (!supportedRequiredExtension(x.get<std::string>()))
-                throw Problem("required extension " + x.get<std::string>() + " is not supported");
+            if (!implementedExtension(x.get<std::string>()))
+                throw Problem(requiredExtensionProblem(x.get<std::string>()));
     eachObject(doc, "accessors", "", [](const json& a, const std::string& p) {
         for (const char* k : {"bufferView", "byteOffset", "componentType", "count"}) uintKey(a, k, p);
         boolKey(a, "normalized", p);

@@ -92,6 +92,24 @@ std::string triangleGltf() {
 "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
 }
 
+// A textured triangle: a PNG as a data URI and as a bufferView, a sampler, KHR_texture_transform,
+// TEXCOORD_0 and normalized COLOR_0, so mutations reach the image decoder and the texture paths.
+std::string texturedGltf() {
+    return R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_texture_transform"],
+"scene":0,
+"scenes":[{"nodes":[0]}],
+"nodes":[{"mesh":0}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1,"COLOR_0":2},"material":0}]}],
+"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0,"extensions":{"KHR_texture_transform":{"offset":[0.5,0],"rotation":0.3,"scale":[2,2],"texCoord":0}}}},"alphaMode":"MASK","alphaCutoff":0.5},{"pbrMetallicRoughness":{"baseColorTexture":{"index":1,"texCoord":1}},"alphaMode":"BLEND"}],
+"textures":[{"source":0,"sampler":0},{"source":1}],
+"samplers":[{"magFilter":9728,"minFilter":9987,"wrapS":33071,"wrapT":33648}],
+"images":[{"uri":"data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAYAAAD0In+KAAAAEUlEQVR4nGPgEpHTODEt5T8ACQoDJgqPAuUAAAAASUVORK5CYII="},{"bufferView":3,"mimeType":"image/png"}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5126,"count":3,"type":"VEC2"},{"bufferView":2,"componentType":5121,"normalized":true,"count":3,"type":"VEC4"}],
+"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":24},{"buffer":0,"byteOffset":60,"byteLength":12},{"buffer":0,"byteOffset":72,"byteLength":74}],
+"buffers":[{"byteLength":146,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAAAIA//wAA/wD/AIAAAP//iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAYAAAD0In+KAAAAEUlEQVR4nGPgEpHTODEt5T8ACQoDJgqPAuUAAAAASUVORK5CYII="}]})";
+}
+
 struct Target {
     bool text;                            // text seeds are cut, binary seeds over the limit skipped
     std::vector<std::string> extensions;  // corpus files this target reads
@@ -105,12 +123,15 @@ Target makeTarget(const std::string& name, const fs::path& scratch) {
     if (name == "gltf") {
         return {false,
                 {".gltf", ".glb"},
-                {triangleGltf()},
+                {triangleGltf(), texturedGltf()},
                 {"\"accessors\"", "\"bufferViews\"", "\"buffers\"", "\"byteOffset\"", "\"byteLength\"", "\"byteStride\"",
                  "\"count\"", "\"componentType\"", "\"sparse\"", "\"indices\"", "\"uri\"", "\"children\"", "\"matrix\"",
                  "\"translation\"", "\"rotation\"", "\"scale\"", "\"mesh\"", "\"nodes\"", "\"mode\"", "\"material\"",
                  "\"alphaCutoff\"", "\"KHR_materials_volume\"", "\"attenuationDistance\"", "\"extensionsRequired\"",
-                 "\".\"", "\"/dev/zero\"", "\"data:application/octet-stream;base64,AAAA\"", "5126", "5125", "5123", "5121"},
+                 "\".\"", "\"/dev/zero\"", "\"data:application/octet-stream;base64,AAAA\"", "5126", "5125", "5123", "5121",
+                 "\"images\"", "\"textures\"", "\"samplers\"", "\"source\"", "\"sampler\"", "\"texCoord\"",
+                 "\"TEXCOORD_1\"", "\"COLOR_0\"", "\"KHR_texture_transform\"", "\"mimeType\"", "\"image/png\"",
+                 "33071", "33648", "9728", "9987"},
                 [](const std::string& bytes, const fs::path& file) {
                     try {
                         GltfLoadReport report;
