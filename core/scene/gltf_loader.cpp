@@ -2,9 +2,11 @@
 
 #include "io/bounded_read.hpp"
 #include "io/printable.hpp"
+#include "scene/gltf_accessors.hpp"
 #include "scene/gltf_ignored.hpp"
+#include "scene/gltf_internal.hpp"
 #include "scene/gltf_schema.hpp"
-#include "scene/image_decode.hpp"
+#include "scene/gltf_textures.hpp"
 
 // The Debian package ships libtinygltf.so with the implementation (and its own JSON parser),
 // so this file only includes the declarations; defining TINYGLTF_IMPLEMENTATION here would
@@ -27,15 +29,7 @@
 namespace strata {
 namespace {
 
-// Internal error carrying only the "what is wrong" part; loadGltf prefixes the file name.
-struct Bad : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void fail(const std::string& what) { throw Bad(what); }
-
-std::string str(std::size_t v) { return std::to_string(v); }
-std::string str(int v) { return std::to_string(v); }
+using namespace detail;  // the loader's parts: gltf_internal.hpp, gltf_accessors.hpp, gltf_textures.hpp
 
 // tinygltf reports several problems as a multi-line string; the contract is one line.
 std::string oneLine(const std::string& text) {
@@ -78,17 +72,6 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
     return false;
 }
 
-// A float from a glTF number: finite as a double is not enough (1e308 becomes inf as a float).
-float toFloat(double v, const std::string& what) {
-    if (!std::isfinite(v)) fail(what + " is not finite");
-    if (!std::isfinite(float(v))) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%g", v);
-        fail(what + " " + text + " does not fit a float");
-    }
-    return float(v);
-}
-
 bool finiteMatrix(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -96,291 +79,9 @@ bool finiteMatrix(const glm::mat4& m) {
     return true;
 }
 
-// Every image tinygltf finds (a file beside the glTF, a data URI, a GLB bufferView) is decoded
-// here, into a table by glTF image index. The callback always succeeds: a missing, broken,
-// oversized or unsupported image becomes a warning naming it and the materials using it, which
-// render with their factors; it never fails the whole file.
-struct ImageTable {
-    const tinygltf::Model* model = nullptr;  // being filled by tinygltf: its buffers are loaded before images
-    std::vector<TextureImage> images;  // by glTF image index; width 0: not decoded
-    std::vector<std::string> errors;   // why not, by glTF image index (empty: never reached)
-    std::size_t totalBytes = 0;
-
-    static constexpr std::size_t kMaxTotalBytes = std::size_t(1) << 30;  // decoded, per file
-
-    void ensure(std::size_t index) {
-        if (images.size() <= index) {
-            images.resize(index + 1);
-            errors.resize(index + 1);
-        }
-    }
-
-    // tinygltf hands an image's bufferView to the callback without checking it against its
-    // buffer; a view past the buffer's end must not be read.
-    std::string viewProblem(const tinygltf::Image& image) const {
-        if (image.bufferView < 0 || !model) return {};
-        const std::size_t index = std::size_t(image.bufferView);
-        if (index >= model->bufferViews.size()) return "bufferView " + std::to_string(index) + " does not exist";
-        const tinygltf::BufferView& view = model->bufferViews[index];
-        if (view.buffer < 0 || std::size_t(view.buffer) >= model->buffers.size())
-            return "bufferView " + std::to_string(index) + " refers to a buffer that does not exist";
-        const std::size_t size = model->buffers[std::size_t(view.buffer)].data.size();
-        if (view.byteOffset > size || view.byteLength > size - view.byteOffset)
-            return "bufferView " + std::to_string(index) + " exceeds its buffer";
-        return {};
-    }
-};
-
-bool decodeImageCallback(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
-                         const unsigned char* bytes, int size, void* user) {
-    auto& table = *static_cast<ImageTable*>(user);
-    if (!image || index < 0 || size < 0) return true;
-    table.ensure(std::size_t(index));
-    std::string& error = table.errors[std::size_t(index)];
-    TextureImage decoded;
-    if (std::string problem = table.viewProblem(*image); !problem.empty()) {
-        error = problem;
-    } else if (!decodeImage(bytes, std::size_t(size), decoded, error)) {
-        // error says why
-    } else if (table.totalBytes + decoded.bytes() > ImageTable::kMaxTotalBytes) {
-        error = "the file's decoded textures would exceed " + std::to_string(ImageTable::kMaxTotalBytes >> 20) + " MiB";
-    } else {
-        table.totalBytes += decoded.bytes();
-        // The name the panel and messages show: the glTF name, else the file it came from; data
-        // URIs and bufferViews have neither.
-        decoded.name = !image->name.empty() ? image->name
-                       : !image->uri.empty() ? image->uri
-                                             : "image " + std::to_string(index);
-        table.images[std::size_t(index)] = std::move(decoded);
-    }
-    return true;
-}
-
-// An accessor without a bufferView is all zeros (plus sparse values); its count is not bounded
-// by any buffer, so cap it to keep a hostile file from asking for a huge allocation.
-constexpr std::size_t kMaxCountWithoutView = std::size_t(1) << 24;
-
 // Real scenes nest a few dozen levels; the scene graph's consumers (flatten) recurse per level,
 // so a hostile chain of a million nodes must stop here rather than overflow their stack.
 constexpr int kMaxNodeDepth = 1000;
-
-int componentSize(int componentType) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-        case TINYGLTF_COMPONENT_TYPE_SHORT:
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-        default: return 0;  // INT and DOUBLE are not glTF 2.0 accessor component types
-    }
-}
-
-const char* typeName(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-        case TINYGLTF_TYPE_VEC2: return "VEC2";
-        case TINYGLTF_TYPE_VEC3: return "VEC3";
-        case TINYGLTF_TYPE_VEC4: return "VEC4";
-        case TINYGLTF_TYPE_MAT2: return "MAT2";
-        case TINYGLTF_TYPE_MAT3: return "MAT3";
-        case TINYGLTF_TYPE_MAT4: return "MAT4";
-        default: return "unknown";
-    }
-}
-
-// Component count for the vector types the loader reads; matrices are never geometry (and
-// their column padding rules for small types are not worth supporting), so they count as 0.
-int vectorComponents(int type) {
-    switch (type) {
-        case TINYGLTF_TYPE_SCALAR: return 1;
-        case TINYGLTF_TYPE_VEC2: return 2;
-        case TINYGLTF_TYPE_VEC3: return 3;
-        case TINYGLTF_TYPE_VEC4: return 4;
-        default: return 0;
-    }
-}
-
-// Decodes one component; normalized integers follow the spec's max(c / MAX, -1) mapping.
-double decode(const unsigned char* p, int componentType, bool normalized) {
-    switch (componentType) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            std::int8_t v; std::memcpy(&v, p, 1);
-            return normalized ? std::max(v / 127.0, -1.0) : double(v);
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-            std::uint8_t v; std::memcpy(&v, p, 1);
-            return normalized ? v / 255.0 : double(v);
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            std::int16_t v; std::memcpy(&v, p, 2);
-            return normalized ? std::max(v / 32767.0, -1.0) : double(v);
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            std::uint16_t v; std::memcpy(&v, p, 2);
-            return normalized ? v / 65535.0 : double(v);
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            std::uint32_t v; std::memcpy(&v, p, 4);
-            return normalized ? v / 4294967295.0 : double(v);
-        }
-        default: {  // FLOAT (checked by the caller)
-            float v; std::memcpy(&v, p, 4);
-            return double(v);
-        }
-    }
-}
-
-bool isIndexType(int componentType) {
-    return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
-           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-           componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-}
-
-// A byte range inside a buffer, validated once: [data, data + size) is always readable.
-struct Span {
-    const unsigned char* data = nullptr;
-    std::size_t size = 0;
-};
-
-Span bufferViewSpan(const tinygltf::Model& model, int viewIndex, const std::string& what) {
-    if (viewIndex < 0 || std::size_t(viewIndex) >= model.bufferViews.size())
-        fail(what + ": bufferView " + str(viewIndex) + " does not exist");
-    const tinygltf::BufferView& view = model.bufferViews[std::size_t(viewIndex)];
-    if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
-        fail(what + ": bufferView " + str(viewIndex) + " refers to buffer " + str(view.buffer) +
-             ", which does not exist");
-    const auto& bytes = model.buffers[std::size_t(view.buffer)].data;
-    // Written as two comparisons so that offset + length cannot overflow.
-    if (view.byteOffset > bytes.size() || view.byteLength > bytes.size() - view.byteOffset)
-        fail(what + ": bufferView " + str(viewIndex) + " (offset " + str(view.byteOffset) +
-             ", length " + str(view.byteLength) + ") exceeds buffer " + str(view.buffer) + " (" +
-             str(bytes.size()) + " bytes)");
-    return {bytes.data() + view.byteOffset, view.byteLength};
-}
-
-// Everything needed to read an accessor, checked against the buffers so that reading any
-// element 0..count-1 stays in bounds.
-struct AccessorView {
-    std::size_t count = 0;
-    int components = 0;
-    int componentType = 0;
-    bool normalized = false;
-    Span dense;                 // empty data: all zeros (no bufferView)
-    std::size_t offset = 0;     // accessor.byteOffset inside `dense`
-    std::size_t stride = 0;
-    // Sparse substitution (count 0 when the accessor is not sparse).
-    std::size_t sparseCount = 0;
-    Span sparseIndices, sparseValues;
-    int sparseIndexType = 0;
-};
-
-AccessorView checkAccessor(const tinygltf::Model& model, int index, int wantComponents,
-                           bool indices, const std::string& what) {
-    if (index < 0 || std::size_t(index) >= model.accessors.size())
-        fail(what + ": accessor " + str(index) + " does not exist");
-    const tinygltf::Accessor& acc = model.accessors[std::size_t(index)];
-    std::string where = what + " (accessor " + str(index) + ")";
-    AccessorView v;
-    v.components = vectorComponents(acc.type);
-    if (v.components != wantComponents)
-        fail(where + ": type " + typeName(acc.type) + ", expected " +
-             (wantComponents == 1 ? "SCALAR" : "VEC" + str(wantComponents)));
-    v.componentType = acc.componentType;
-    int csize = componentSize(acc.componentType);
-    if (csize == 0) fail(where + ": component type " + str(acc.componentType) + " is not allowed");
-    if (indices && !isIndexType(acc.componentType))
-        fail(where + ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT, not component type " +
-             str(acc.componentType));
-    v.normalized = acc.normalized && !indices && acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT;
-    v.count = acc.count;
-    std::size_t elementSize = std::size_t(v.components) * std::size_t(csize);
-
-    if (acc.bufferView < 0) {
-        if (v.count > kMaxCountWithoutView)
-            fail(where + ": count " + str(v.count) + " without a bufferView is too large");
-    } else {
-        v.dense = bufferViewSpan(model, acc.bufferView, where);
-        const tinygltf::BufferView& view = model.bufferViews[std::size_t(acc.bufferView)];
-        v.stride = view.byteStride ? view.byteStride : elementSize;
-        if (v.stride < elementSize)
-            fail(where + ": byteStride " + str(v.stride) + " is smaller than the element (" +
-                 str(elementSize) + " bytes)");
-        v.offset = acc.byteOffset;
-        if (v.count > 0) {
-            // Last element must end inside the view: offset + stride*(count-1) + size <= length.
-            bool fits = v.offset <= v.dense.size && elementSize <= v.dense.size - v.offset &&
-                        (v.count - 1) <= (v.dense.size - v.offset - elementSize) / v.stride;
-            if (!fits)
-                fail(where + ": " + str(v.count) + " elements at offset " + str(v.offset) + " stride " +
-                     str(v.stride) + " exceed bufferView " + str(acc.bufferView) + " (" +
-                     str(v.dense.size) + " bytes)");
-        }
-    }
-
-    if (acc.sparse.isSparse) {
-        const auto& sp = acc.sparse;
-        if (sp.count < 1 || std::size_t(sp.count) > v.count)
-            fail(where + ": sparse count " + str(sp.count) + " outside 1.." + str(v.count));
-        if (!isIndexType(sp.indices.componentType))
-            fail(where + ": sparse indices component type " + str(sp.indices.componentType) + " is not allowed");
-        if (sp.indices.byteOffset < 0 || sp.values.byteOffset < 0)
-            fail(where + ": negative sparse byteOffset");
-        v.sparseCount = std::size_t(sp.count);
-        v.sparseIndexType = sp.indices.componentType;
-        auto sub = [&](int viewIndex, int byteOffset, std::size_t bytesEach, const char* part) {
-            Span s = bufferViewSpan(model, viewIndex, where + " sparse " + part);
-            std::size_t off = std::size_t(byteOffset);
-            if (off > s.size || (s.size - off) / bytesEach < v.sparseCount)
-                fail(where + ": sparse " + part + " exceed bufferView " + str(viewIndex));
-            return Span{s.data + off, s.size - off};
-        };
-        v.sparseIndices = sub(sp.indices.bufferView, sp.indices.byteOffset,
-                              std::size_t(componentSize(sp.indices.componentType)), "indices");
-        v.sparseValues = sub(sp.values.bufferView, sp.values.byteOffset, elementSize, "values");
-    }
-    return v;
-}
-
-// Calls out(element, component, value) for every component: dense values (or zeros), then
-// the sparse substitutions, so the last write for an element is the right one.
-template <class Out>
-void readAccessor(const AccessorView& v, const std::string& what, Out&& out) {
-    int csize = componentSize(v.componentType);
-    for (std::size_t e = 0; e < v.count; ++e) {
-        const unsigned char* p = v.dense.data ? v.dense.data + v.offset + e * v.stride : nullptr;
-        for (int c = 0; c < v.components; ++c)
-            out(e, c, p ? decode(p + std::size_t(c) * std::size_t(csize), v.componentType, v.normalized) : 0.0);
-    }
-    std::size_t isize = std::size_t(componentSize(v.sparseIndexType));
-    std::size_t elementSize = std::size_t(v.components) * std::size_t(csize);
-    for (std::size_t s = 0; s < v.sparseCount; ++s) {
-        auto target = std::size_t(decode(v.sparseIndices.data + s * isize, v.sparseIndexType, false));
-        if (target >= v.count)
-            fail(what + ": sparse index " + str(target) + " out of range (" + str(v.count) + " elements)");
-        const unsigned char* p = v.sparseValues.data + s * elementSize;
-        for (int c = 0; c < v.components; ++c)
-            out(target, c, decode(p + std::size_t(c) * std::size_t(csize), v.componentType, v.normalized));
-    }
-}
-
-std::vector<glm::vec3> readVec3(const tinygltf::Model& model, int accessor, const std::string& what,
-                                const char* semantic) {
-    AccessorView v = checkAccessor(model, accessor, 3, false, what + " " + semantic);
-    std::vector<glm::vec3> out(v.count);
-    readAccessor(v, what + " " + semantic, [&](std::size_t e, int c, double x) { out[e][c] = float(x); });
-    for (const auto& p : out)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            fail(what + ": non-finite " + semantic + " value");
-    return out;
-}
-
-std::vector<std::uint32_t> readIndices(const tinygltf::Model& model, int accessor, const std::string& what) {
-    AccessorView v = checkAccessor(model, accessor, 1, true, what + " indices");
-    std::vector<std::uint32_t> out(v.count);
-    readAccessor(v, what + " indices", [&](std::size_t e, int, double x) { out[e] = std::uint32_t(x); });
-    return out;
-}
 
 // glTF's primitive topologies to a triangle list (spec section 3.7.2.1 vertex orders).
 std::vector<std::uint32_t> toTriangleList(int mode, const std::vector<std::uint32_t>& idx, bool indexed,
@@ -420,151 +121,9 @@ struct Converter {
     const tinygltf::Model& model;
     GltfLoadReport& report;
     detail::IgnoredLog& ignored;  // what the file holds that is not drawn as given, said once per kind
-    ImageTable& decoded;
-    std::string file;  // for the image warnings
+    GltfTextures textures;
     Scene scene;
     std::vector<std::vector<int>> meshMap;  // glTF mesh -> strata meshes (one per triangle primitive)
-    std::vector<int> imageMap;              // glTF image -> Scene::images, -1 not decoded
-    // glTF images that could not be decoded -> the materials that use them, in material order.
-    std::map<int, std::vector<std::string>> failedImageUsers;
-
-    // The decoded images a material's base colour texture uses move to Scene::images (every
-    // renderer uploads all of them, so a normal map Strata does not draw yet stays out).
-    void convertImages() {
-        decoded.ensure(model.images.size());
-        std::vector<char> used(model.images.size(), 0);
-        for (const tinygltf::Material& m : model.materials) {
-            const int texture = m.pbrMetallicRoughness.baseColorTexture.index;
-            if (texture < 0 || std::size_t(texture) >= model.textures.size()) continue;  // textureOf says so
-            const int source = model.textures[std::size_t(texture)].source;
-            if (source >= 0 && std::size_t(source) < used.size()) used[std::size_t(source)] = 1;
-        }
-        for (std::size_t i = 0; i < model.images.size(); ++i) {
-            if (used[i] && decoded.images[i].width > 0) {
-                imageMap.push_back(int(scene.images.size()));
-                scene.images.push_back(std::move(decoded.images[i]));
-            } else {
-                imageMap.push_back(-1);
-            }
-        }
-    }
-
-    // Why glTF image `i` has no decoded copy.
-    std::string imageProblem(std::size_t i) const {
-        if (!decoded.errors[i].empty()) return decoded.errors[i];
-        const tinygltf::Image& g = model.images[i];
-        if (!g.uri.empty() && g.uri.rfind("data:", 0) != 0) return "cannot read '" + printable(g.uri, 80) + "'";
-        return "has no image data";
-    }
-
-    static TextureWrap wrapOf(int value, const std::string& what) {
-        switch (value) {
-        case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
-        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
-        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
-        default: fail(what + ": wrap mode " + str(value) + " is not a glTF wrap mode");
-        }
-    }
-
-    static TextureFilter filterOf(int value, bool minification, TextureFilter fallback, const std::string& what) {
-        if (value < 0) return fallback;  // absent: the implementation's choice (texture.hpp)
-        switch (value) {
-        case TINYGLTF_TEXTURE_FILTER_NEAREST: return TextureFilter::Nearest;
-        case TINYGLTF_TEXTURE_FILTER_LINEAR: return TextureFilter::Linear;
-        default: break;
-        }
-        if (minification) switch (value) {
-            case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: return TextureFilter::NearestMipmapNearest;
-            case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: return TextureFilter::LinearMipmapNearest;
-            case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: return TextureFilter::NearestMipmapLinear;
-            case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: return TextureFilter::LinearMipmapLinear;
-            default: break;
-            }
-        fail(what + ": " + (minification ? "minFilter " : "magFilter ") + str(value) + " is not a glTF filter");
-    }
-
-    glm::vec2 vec2Of(const tinygltf::Value& ext, const char* key, glm::vec2 fallback, const std::string& what) {
-        if (!ext.Has(key)) return fallback;
-        const tinygltf::Value& v = ext.Get(key);
-        if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
-            fail(what + ": " + key + " must be an array of 2 numbers");
-        return {toFloat(v.Get(0).GetNumberAsDouble(), what + ": " + key),
-                toFloat(v.Get(1).GetNumberAsDouble(), what + ": " + key)};
-    }
-
-    // A textureInfo (index, texCoord, KHR_texture_transform) to a TextureRef; image -1 where the
-    // texture cannot be drawn, with a warning that names the image and the material.
-    TextureRef textureOf(const tinygltf::TextureInfo& info, const std::string& material) {
-        TextureRef ref;
-        if (info.index < 0) return ref;
-        const std::string what = material + " baseColorTexture";
-        if (std::size_t(info.index) >= model.textures.size()) fail(what + ": texture " + str(info.index) + " does not exist");
-        const tinygltf::Texture& t = model.textures[std::size_t(info.index)];
-        if (t.sampler >= 0) {
-            if (std::size_t(t.sampler) >= model.samplers.size())
-                fail(what + ": sampler " + str(t.sampler) + " does not exist");
-            const tinygltf::Sampler& g = model.samplers[std::size_t(t.sampler)];
-            const std::string sw = "sampler " + str(t.sampler);
-            ref.sampler.magFilter = filterOf(g.magFilter, false, ref.sampler.magFilter, sw);
-            ref.sampler.minFilter = filterOf(g.minFilter, true, ref.sampler.minFilter, sw);
-            ref.sampler.wrapS = wrapOf(g.wrapS, sw);
-            ref.sampler.wrapT = wrapOf(g.wrapT, sw);
-        }
-        ref.texCoord = info.texCoord;
-        auto ext = info.extensions.find("KHR_texture_transform");
-        if (ext != info.extensions.end() && ext->second.IsObject()) {
-            const tinygltf::Value& v = ext->second;
-            const std::string tw = what + " KHR_texture_transform";
-            ref.transform.offset = vec2Of(v, "offset", ref.transform.offset, tw);
-            ref.transform.scale = vec2Of(v, "scale", ref.transform.scale, tw);
-            ref.transform.rotation = toFloat(number(v, "rotation", 0.0, tw), tw + ": rotation");
-            if (v.Has("texCoord")) {
-                const double set = number(v, "texCoord", 0.0, tw);
-                if (set != std::floor(set)) fail(tw + ": texCoord must be an integer");
-                ref.texCoord = set >= 0.0 && set <= 1e6 ? int(set) : -1;  // -1: dropped below
-            }
-        }
-        if (ref.texCoord != 0 && ref.texCoord != 1) {
-            ignored.note("texCoord set",
-                         "textures on a TEXCOORD set other than 0 and 1 ignored: only TEXCOORD_0 and TEXCOORD_1 are read",
-                         what);
-            return TextureRef{};
-        }
-        if (t.source < 0) {
-            ignored.note("texture without source", "texture without an image source ignored (" + material +
-                                                       " renders with its base colour factor)", what);
-            return TextureRef{};
-        }
-        if (std::size_t(t.source) >= model.images.size()) fail(what + ": image " + str(t.source) + " does not exist");
-        ref.image = imageMap[std::size_t(t.source)];
-        if (ref.image < 0) {
-            auto& users = failedImageUsers[t.source];
-            if (users.empty() || users.back() != material) users.push_back(material);
-        }
-        return ref;
-    }
-
-    // One line per image that could not be decoded but is used, naming why and the materials
-    // that render with their factors instead:
-    // "<file>: image 3 ('logo'): <why>; material 1 ('box') renders with its base colour factor".
-    void warnFailedImages() {
-        for (const auto& [index, users] : failedImageUsers) {
-            const tinygltf::Image& g = model.images[std::size_t(index)];
-            std::string line = printable(file, 120) + ": image " + str(index) +
-                               (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')") + ": " +
-                               printableMessage(imageProblem(std::size_t(index))) + "; " + users.front();
-            if (users.size() == 1) line += " renders with its base colour factor";
-            else line += " and " + str(users.size() - 1) + " more render with their base colour factors";
-            report.warnings.push_back(line);
-        }
-    }
-
-    double number(const tinygltf::Value& obj, const char* key, double fallback, const std::string& what) {
-        if (!obj.IsObject() || !obj.Has(key)) return fallback;
-        const tinygltf::Value& v = obj.Get(key);
-        if (!v.IsNumber()) fail(what + ": " + key + " is not a number");
-        return v.GetNumberAsDouble();
-    }
 
     void convertMaterials() {
         scene.materials.push_back(Material{});  // index 0: the default for primitives without one
@@ -587,7 +146,7 @@ struct Converter {
             }
             m.baseColor = glm::vec3(factor);
             m.alpha = factor.a;
-            m.baseColorTexture = textureOf(g.pbrMetallicRoughness.baseColorTexture,
+            m.baseColorTexture = textures.textureOf(g.pbrMetallicRoughness.baseColorTexture,
                                            what + (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')"));
             if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
             else if (g.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
@@ -641,7 +200,7 @@ struct Converter {
             }
             scene.materials.push_back(std::move(m));
         }
-        warnFailedImages();
+        textures.warnFailedImages(report.warnings);
     }
 
     void convertMeshes() {
@@ -923,7 +482,7 @@ struct Converter {
 };
 
 tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path& file, GltfLoadReport& report,
-                           detail::IgnoredLog& ignored, ImageTable& images) {
+                           detail::IgnoredLog& ignored, GltfImageTable& images) {
     if (bytes.empty()) fail("empty file");
     // tinygltf replaces mistyped properties by defaults; refuse them instead (see gltf_schema.hpp).
     if (std::string problem = detail::checkGltfSchema(bytes, &ignored); !problem.empty()) fail(problem);
@@ -931,7 +490,7 @@ tinygltf::Model parseBytes(const std::string& bytes, const std::filesystem::path
     bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
 
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&decodeImageCallback, &images);
+    loader.SetImageLoader(&decodeGltfImage, &images);
     loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &refuseWrite, nullptr});
     tinygltf::Model model;
     images.model = &model;  // for the callback's bufferView checks, during the load only
@@ -970,14 +529,14 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& 
     const std::string name = printable(file.string(), 120);
     try {
         detail::IgnoredLog ignored;
-        ImageTable images;
+        GltfImageTable images;
         tinygltf::Model model = parseBytes(bytes, file, report, ignored, images);
         // The schema check refused these already; tinygltf's model is checked too, as it is what is drawn.
         if (std::string name = detail::unimplementedRequiredExtension(model); !name.empty())
             fail(detail::requiredExtensionProblem(name));
-        Converter conv{model, report, ignored, images, file.string(), {}, {}, {}, {}};
+        Converter conv{model, report, ignored, GltfTextures(model, images, ignored, file.string()), {}, {}};
         conv.scene.name = file.stem().string();
-        conv.convertImages();
+        conv.textures.moveUsedImages(conv.scene);
         conv.convertMaterials();
         conv.convertMeshes();
         conv.convertNodes();
@@ -990,7 +549,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& 
         }
         for (std::string& line : ignored.lines(file.string())) report.warnings.push_back(printableMessage(line));
         return std::move(conv.scene);
-    } catch (const Bad& e) {
+    } catch (const GltfError& e) {
         throw LoadError(name + ": " + printableMessage(e.what(), 200));
     } catch (const std::bad_alloc&) {
         // Every file is within kGltfLimit, so this is a model whose content needs more memory
