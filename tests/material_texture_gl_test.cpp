@@ -102,6 +102,28 @@ Material blend(glm::vec4 factor) {
     return m;
 }
 
+// A framed scene holding the two-texel image, and a white BLEND material reading it with NEAREST.
+Scene sceneWithTexels(glm::u8vec4 left, glm::u8vec4 right) {
+    Scene s = framedScene();
+    s.images.push_back(twoTexels(left, right));
+    return s;
+}
+
+Material texturedBlend(TextureWrap wrap = TextureWrap::ClampToEdge) {
+    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
+    m.baseColorTexture.image = 0;
+    m.baseColorTexture.sampler = nearestSampler(wrap);
+    return m;
+}
+
+// What a quad over [-1, 1] textured with (left, right) should look like: two factor quads.
+Scene factorHalves(glm::u8vec4 left, glm::u8vec4 right) {
+    Scene s = framedScene();
+    addObject(s, quad(-1, 0, 0), blend(linearTexel(left)));
+    addObject(s, quad(0, 1, 0), blend(linearTexel(right)));
+    return s;
+}
+
 // The techniques that are exact given enough memory (as exact_techniques_gl_test.cpp): the
 // robust ones, and the bounded ones given a capacity that holds every fragment.
 std::vector<std::string> exactIds() {
@@ -144,16 +166,9 @@ void checkPair(Scene textured, Scene factors) {
 
 TEST_CASE("a BLEND quad textured with alphas a1 and a2 equals two factor quads") {
     const glm::u8vec4 left(230, 40, 40, 64), right(40, 200, 90, 191);  // a1 = 0.25, a2 = 0.75
-    Scene textured = framedScene();
-    textured.images.push_back(twoTexels(left, right));
-    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
-    m.baseColorTexture.image = 0;
-    m.baseColorTexture.sampler = nearestSampler();
-    addObject(textured, quad(-1, 1, 0), m);
-
-    Scene factors = framedScene();
-    addObject(factors, quad(-1, 0, 0), blend(linearTexel(left)));
-    addObject(factors, quad(0, 1, 0), blend(linearTexel(right)));
+    Scene textured = sceneWithTexels(left, right);
+    addObject(textured, quad(-1, 1, 0), texturedBlend());
+    Scene factors = factorHalves(left, right);
 
     // The expected colour, stated: texel over the lit backdrop, both facing the light alike.
     const std::vector<Object> objects = flatten(factors);
@@ -172,8 +187,7 @@ TEST_CASE("a BLEND quad textured with alphas a1 and a2 equals two factor quads")
 
 TEST_CASE("a MASK texture cuts like the cut geometry, in the opaque pass and the reference") {
     const glm::u8vec4 kept(200, 180, 60, 255), cut(20, 20, 200, 51);  // alpha 1 and 0.2
-    Scene textured = framedScene();
-    textured.images.push_back(twoTexels(kept, cut));
+    Scene textured = sceneWithTexels(kept, cut);
     Material m;
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.5f;
@@ -205,39 +219,26 @@ TEST_CASE("a constant COLOR_0 equals the same colour as the factor") {
 
 TEST_CASE("a texture transform offset of half the texture equals the swapped texture") {
     const glm::u8vec4 a(250, 120, 30, 128), b(30, 90, 250, 220);
-    Scene shifted = framedScene();
-    shifted.images.push_back(twoTexels(a, b));
-    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
-    m.baseColorTexture.image = 0;
-    m.baseColorTexture.sampler = nearestSampler(TextureWrap::Repeat);
+    Scene shifted = sceneWithTexels(a, b);
+    Material m = texturedBlend(TextureWrap::Repeat);
     m.baseColorTexture.transform.offset = {0.5f, 0.0f};
     addObject(shifted, quad(-1, 1, 0), m);
 
-    Scene swapped = framedScene();
-    swapped.images.push_back(twoTexels(b, a));
-    Material plain = blend({1.0f, 1.0f, 1.0f, 1.0f});
-    plain.baseColorTexture.image = 0;
-    plain.baseColorTexture.sampler = nearestSampler();
-    addObject(swapped, quad(-1, 1, 0), plain);
+    Scene swapped = sceneWithTexels(b, a);
+    addObject(swapped, quad(-1, 1, 0), texturedBlend());
     checkPair(std::move(shifted), std::move(swapped));
 }
 
 TEST_CASE("TEXCOORD_1 is used when the texture names it") {
     const glm::u8vec4 a(250, 250, 30, 100), b(30, 200, 250, 240);
-    Scene second = framedScene();
-    second.images.push_back(twoTexels(a, b));
-    Material m = blend({1.0f, 1.0f, 1.0f, 1.0f});
-    m.baseColorTexture.image = 0;
-    m.baseColorTexture.sampler = nearestSampler();
+    Scene second = sceneWithTexels(a, b);
+    Material m = texturedBlend();
     m.baseColorTexture.texCoord = 1;
     Mesh mesh = quad(-1, 1, 0);
     mesh.texCoords[1] = mesh.texCoords[0];
     for (auto& uv : mesh.texCoords[0]) uv = {0.9f, 0.5f};  // set 0 would give texel b everywhere
     addObject(second, mesh, m);
-    Scene factors = framedScene();
-    addObject(factors, quad(-1, 0, 0), blend(linearTexel(a)));
-    addObject(factors, quad(0, 1, 0), blend(linearTexel(b)));
-    checkPair(std::move(second), std::move(factors));
+    checkPair(std::move(second), factorHalves(a, b));
 }
 
 TEST_CASE("a factor-only scene draws with the plain programs: no material variant is built") {

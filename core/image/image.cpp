@@ -1,5 +1,6 @@
 #include "image/image.hpp"
 
+#include "common/shading_model.h"
 #include "io/atomic_file.hpp"
 
 #include <OpenImageIO/imagebuf.h>
@@ -18,9 +19,8 @@ float linearToSrgb(float v) {
     return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-float srgbToLinear(float v) {
-    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
+// The decode textures use too (common/shading_model.h), so a PNG read back and a texel agree.
+float srgbToLinear(float v) { return gpu::srgbToLinear(v); }
 
 namespace {
 
