@@ -277,10 +277,11 @@ TEST_CASE("KHR_texture_transform: offset, rotation and scale compose as T * R * 
     t.offset = {0.5f, 0.25f};
     t.scale = {2.0f, 3.0f};
     t.rotation = float(3.14159265358979323846 / 2.0);
-    // S takes (1, 0) to (2, 0); R (a quarter turn) to (0, 2); T to (0.5, 2.25).
+    // S takes (1, 0) to (2, 0); R (a quarter turn, counter-clockwise with v down) to (0, -2);
+    // T to (0.5, -1.75).
     const glm::vec2 uv = transformTexCoord(t.matrix(), {1.0f, 0.0f});
     CHECK(uv.x == doctest::Approx(0.5f).epsilon(1e-5));
-    CHECK(uv.y == doctest::Approx(2.25f).epsilon(1e-5));
+    CHECK(uv.y == doctest::Approx(-1.75f).epsilon(1e-5));
     CHECK(TextureTransform{}.identity());
 }
 

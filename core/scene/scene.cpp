@@ -126,10 +126,12 @@ void makeFlatNormals(Mesh& mesh) {
 
 glm::mat3 TextureTransform::matrix() const {
     const float c = std::cos(rotation), s = std::sin(rotation);
-    // Column by column, as the ratified extension writes its GLSL: T * R * S, with R taking
-    // (1, 0) to (c, s).
+    // T * R * S, column by column. R takes (1, 0) to (c, -s): "counter-clockwise in UV space"
+    // with v pointing down the image, what the Khronos TextureTransformTest asset checks (its
+    // rotation quad's arrow reaches the green marker; the opposite sign reaches the red one, which
+    // an early draft's matrix, (c, s) in the first column, gives).
     const glm::mat3 t(1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, offset.x, offset.y, 1.0f);
-    const glm::mat3 r(c, s, 0.0f, -s, c, 0.0f, 0.0f, 0.0f, 1.0f);
+    const glm::mat3 r(c, -s, 0.0f, s, c, 0.0f, 0.0f, 0.0f, 1.0f);
     const glm::mat3 sc(scale.x, 0.0f, 0.0f, 0.0f, scale.y, 0.0f, 0.0f, 0.0f, 1.0f);
     return t * r * sc;
 }

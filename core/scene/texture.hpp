@@ -47,7 +47,7 @@ struct TextureImage {
 };
 
 // KHR_texture_transform: uv' = T(offset) * R(rotation) * S(scale) * uv, rotation in radians,
-// R taking (1, 0) to (cos, sin) as the ratified extension's GLSL writes it.
+// counter-clockwise in UV space (v down the image): R takes (1, 0) to (cos, -sin).
 struct TextureTransform {
     glm::vec2 offset{0.0f};
     float rotation = 0.0f;
