@@ -49,7 +49,8 @@ TEST_CASE("K coincident quads: every variant captures all K fragments in object 
         const std::uint64_t pixels = 96;
         // The exact colour: copies composite in object order, copy 0 in front.
         glm::vec3 expected = f.gpu->scene().background;
-        for (int i = k - 1; i >= 0; --i) expected = 0.5f * paletteColor(i) + 0.5f * expected;
+        for (int i = k - 1; i >= 0; --i)
+            expected = 0.5f * test::litFacing(f.gpu->scene(), f.camera, size, 6, 4, paletteColor(i)) + 0.5f * expected;
         for (bool reversed : {false, true}) {
             CAPTURE(reversed);
             FrameOptions options;

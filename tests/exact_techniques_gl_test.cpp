@@ -142,9 +142,9 @@ TEST_CASE("surfaces farther apart than the tie tolerance composite by depth, on 
         auto cpu = raycastReference(scene.scene(), scene.objects(), camera, 8, 8).at(4, 4);
         // The nearer colour dominates with weight 0.5 against 0.25.
         glm::vec3 bg = scene.scene().background;
-        glm::vec3 c0 = paletteColor(0), c1 = paletteColor(1);
+        glm::vec3 c0 = test::litFacing(scene.scene(), camera, {8, 8}, 4, 4, paletteColor(0));
+        glm::vec3 c1 = test::litFacing(scene.scene(), camera, {8, 8}, 4, 4, paletteColor(1));
         glm::vec3 front = gap > 1e-5 ? c1 : c0, back = gap > 1e-5 ? c0 : c1;
-        // Both quads face the light ({0, 0, 1}): shaded colour = base colour.
         glm::vec3 expected = 0.5f * front + 0.25f * back + 0.25f * bg;
         for (int ch = 0; ch < 3; ++ch) {
             CHECK(std::abs(gpu[ch] - expected[ch]) <= kTolerance);
@@ -165,7 +165,8 @@ TEST_CASE("coplanar copies: abuffer captures all K and orders them by object id"
         CHECK(r.result.stats.fragmentsCaptured == std::uint64_t(k) * 64);
         // Ties go to the lower object id first: copy 0 is the front-most.
         glm::vec3 expected = scene.scene().background;
-        for (int i = k - 1; i >= 0; --i) expected = 0.5f * paletteColor(i) + 0.5f * expected;
+        for (int i = k - 1; i >= 0; --i)
+            expected = 0.5f * test::litFacing(scene.scene(), camera, {8, 8}, 4, 4, paletteColor(i)) + 0.5f * expected;
         glm::vec4 p = r.image.at(4, 4);
         CHECK(std::abs(p.r - expected.r) <= kTolerance);
         CHECK(std::abs(p.g - expected.g) <= kTolerance);

@@ -8,7 +8,9 @@
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
 #include "frame/frame_renderer.hpp"
+#include "reference/raycast.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/shading.hpp"
 
 #include <memory>
 #include <string>
@@ -77,5 +79,15 @@ struct Fixture {
         camera = defaultCamera(gpu->scene(), gpu->objects());
     }
 };
+
+// The colour a lit rough dielectric of base colour `base`, facing +z, shows at pixel (x, y) of
+// a `size` image: common/shading_model.h seen along that pixel's ray, under the scene's light.
+// What a closed-form composite of builtin scenes' facing quads (builtin:coplanar) takes per layer.
+inline glm::vec3 litFacing(const Scene& scene, const Camera& camera, glm::ivec2 size, int x, int y, glm::vec3 base) {
+    glm::dvec3 origin, direction;
+    pixelRay(camera, size.x, size.y, x, y, origin, direction);
+    return shadeSurface(base, 0.0f, 1.0f, 1.0f, glm::vec3(0.0f), {0.0f, 0.0f, 1.0f}, glm::vec3(-glm::normalize(direction)),
+                        scene.lightDirection, glm::vec3(kDefaultLightIrradiance));
+}
 
 }  // namespace strata::test

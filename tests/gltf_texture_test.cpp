@@ -181,7 +181,7 @@ TEST_CASE("gltf: an image bufferView past its buffer's end is a warning, never r
     CHECK(s.images.empty());
     CHECK(report.warnings == std::vector<std::string>{
         file.string() + ": image 0: bufferView " + std::to_string(view) +
-        " exceeds its buffer; material 0 renders with its base colour factor"});
+        " exceeds its buffer; material 0 renders without it"});
 }
 
 TEST_CASE("gltf: a texture on a TEXCOORD set other than 0 and 1 is dropped, and said") {
@@ -395,7 +395,7 @@ TEST_CASE("gltf: an image too large or not an image is refused before decoding, 
         REQUIRE(report.warnings.size() == 1);
         CAPTURE(report.warnings[0]);
         CHECK(report.warnings[0].find("image 0: " + why) != std::string::npos);
-        CHECK(report.warnings[0].find("renders with its base colour factor") != std::string::npos);
+        CHECK(report.warnings[0].find("renders without it") != std::string::npos);
     }
 }
 
@@ -482,12 +482,20 @@ TEST_CASE("gltf: textured sample models load their images, samplers and transfor
     }
 
     // ClearCoatTest: six images (PNGs and a JPEG), of which only PartialCoating_Alpha (256 x 256,
-    // RGBA) is a base colour texture, of Partial_Coating: the scene holds that one alone (the
-    // normal maps are not drawn yet, and every image in the scene is uploaded).
+    // RGBA) is a base colour texture, of Partial_Coating. Five are material textures (base
+    // colour, RoughnessStripes metallic-roughness, two normal maps, ClearCoatLabels emissive);
+    // PartialCoating serves KHR_materials_clearcoat alone, which Strata ignores, so the scene
+    // holds the five (every image in the scene is uploaded).
     const auto clearCoat = root / "ClearCoat-glTF/ClearCoatTest.gltf";
     if (std::filesystem::exists(clearCoat)) {
         Scene s = loadGltf(clearCoat);
-        REQUIRE(s.images.size() == 1);
+        REQUIRE(s.images.size() == 5);
+        int normalMapped = 0;
+        for (const Material& m : s.materials) normalMapped += m.normalTexture.present() ? 1 : 0;
+        CHECK(normalMapped == 6);  // six materials on the two normal maps
+        for (const Mesh& mesh : s.meshes)
+            if (s.materials[std::size_t(mesh.material)].normalTexture.present())
+                CHECK(mesh.tangents.size() == mesh.positions.size());  // given or derived
         int textured = 0;
         for (const Material& m : s.materials) {
             if (!m.baseColorTexture.present()) continue;
@@ -517,7 +525,7 @@ TEST_CASE("gltf: a missing or broken image is a warning naming it and its materi
     CHECK(s.materials[1].baseColorTexture.image == -1);
     CHECK(s.images.empty());
     const std::string line = file.string() + ": image 0 ('bricks'): cannot read 'does-not-exist.png'; material 0 "
-                                             "('wall') renders with its base colour factor";
+                                             "('wall') renders without it";
     CHECK(std::count(report.warnings.begin(), report.warnings.end(), line) == 1);
 
     // Two materials on the broken image: one line still, counting the second.
@@ -526,6 +534,70 @@ TEST_CASE("gltf: a missing or broken image is a warning naming it and its materi
     file = b.writeGltf("textures-twice");
     loadGltf(file, twice);
     const std::string both = file.string() + ": image 0 ('bricks'): cannot read 'does-not-exist.png'; material 0 "
-                                             "('wall') and 1 more render with their base colour factors";
+                                             "('wall') and 1 more render without it";
     CHECK(std::count(twice.warnings.begin(), twice.warnings.end(), both) == 1);
+}
+
+TEST_CASE("gltf: metallic-roughness, normal, occlusion and emissive read with their factors and extensions") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    int normal = b.accessor(b.view(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1}), kFloat, 3, "VEC3");
+    int uv = b.accessor(b.view(std::vector<float>{0, 0, 1, 0, 0, 1}), kFloat, 3, "VEC2");
+    b.imageDataUri(twoTexelPng());
+    b.doc["textures"] = {{{"source", 0}}};
+    b.doc["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_materials_unlit"};
+    b.material({{"pbrMetallicRoughness",
+                 {{"metallicFactor", 0.25}, {"roughnessFactor", 0.75}, {"metallicRoughnessTexture", {{"index", 0}}}}},
+                {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+                {"occlusionTexture", {{"index", 0}, {"strength", 0.3}}},
+                {"emissiveTexture", {{"index", 0}}},
+                {"emissiveFactor", {1.0, 0.5, 0.0}},
+                {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}});
+    b.material({{"extensions", {{"KHR_materials_unlit", json::object()}}}});
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}, {"NORMAL", normal}, {"TEXCOORD_0", uv}}}, {"material", 0}},
+                            {{"attributes", {{"POSITION", pos}}}, {"material", 1}}}));
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("pbr"), report);
+    CHECK(report.warnings.empty());
+    REQUIRE(s.materials.size() == 3);
+    const Material& m = s.materials[1];
+    CHECK(m.metallic == doctest::Approx(0.25f));
+    CHECK(m.roughness == doctest::Approx(0.75f));
+    CHECK(m.metallicRoughnessTexture.image == 0);
+    CHECK(m.normalTexture.image == 0);
+    CHECK(m.normalScale == doctest::Approx(0.5f));
+    CHECK(m.occlusionTexture.image == 0);
+    CHECK(m.occlusionStrength == doctest::Approx(0.3f));
+    CHECK(m.emissiveTexture.image == 0);
+    CHECK(m.emissive == glm::vec3(4.0f, 2.0f, 0.0f));
+    CHECK_FALSE(m.unlit);
+    CHECK(s.images.size() == 1);  // one image, however many slots use it
+    // glTF's defaults where the file says nothing: metallic 1, roughness 1, no emission.
+    const Material& plain = s.materials[2];
+    CHECK(plain.unlit);
+    CHECK(plain.metallic == 1.0f);
+    CHECK(plain.roughness == 1.0f);
+    CHECK(plain.emissive == glm::vec3(0.0f));
+    // The normal-mapped primitive got tangents (derived: the file has none), the other none.
+    REQUIRE(s.meshes.size() == 2);
+    CHECK(s.meshes[0].tangents.size() == 3);
+    CHECK(s.meshes[0].tangents[0] == glm::vec4(1.0f, 0.0f, 0.0f, -1.0f));  // u along +x, v along +y: mirrored
+    CHECK(s.meshes[1].tangents.empty());
+}
+
+TEST_CASE("gltf: out-of-range PBR factors are clamped and said; a bad emissive strength is refused") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    b.material({{"pbrMetallicRoughness", {{"metallicFactor", 2.0}}}, {"emissiveFactor", {0.0, -1.0, 0.5}}});
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}, {"material", 0}}}));
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("pbr-clamped"), report);
+    CHECK(s.materials[1].metallic == 1.0f);
+    CHECK(s.materials[1].emissive == glm::vec3(0.0f, 0.0f, 0.5f));
+    CHECK(report.warnings.size() == 2);
+
+    b.doc["materials"][0]["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", -1.0}}}};
+    CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("pbr-strength")),
+                         doctest::Contains("KHR_materials_emissive_strength: emissiveStrength must be a number in [0, 10000]"),
+                         LoadError);
 }

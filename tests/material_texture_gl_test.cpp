@@ -8,7 +8,7 @@
 // 2 x 1 texture with NEAREST filtering puts its texel boundary at x = 0, and pixel centres lie
 // 1/16 of the quad's width from it. The GPU samples level 0 there (the texels are magnified), as
 // the CPU reference does.
-#include "gl_test_support.hpp"
+#include "material_test_scenes.hpp"
 
 #include "reference/raycast.hpp"
 #include "render/shading.hpp"
@@ -24,83 +24,9 @@
 #include <cmath>
 
 using namespace strata;
+using namespace strata::test::material;
 
 namespace {
-
-constexpr float kTolerance = 2.0f / 255.0f;
-const glm::ivec2 kSize(16, 16);
-
-// Two texels, left and right, sRGB-encoded colour and linear alpha.
-TextureImage twoTexels(glm::u8vec4 left, glm::u8vec4 right) {
-    TextureImage image;
-    image.name = "two texels";
-    image.width = 2;
-    image.height = 1;
-    image.rgba = {left.r, left.g, left.b, left.a, right.r, right.g, right.b, right.a};
-    return image;
-}
-
-// What the sampler returns for an 8-bit texel: colour decoded from sRGB, alpha as is.
-glm::vec4 linearTexel(glm::u8vec4 t) {
-    return {srgbToLinear(t.r / 255.0f), srgbToLinear(t.g / 255.0f), srgbToLinear(t.b / 255.0f), t.a / 255.0f};
-}
-
-Sampler nearestSampler(TextureWrap wrap = TextureWrap::ClampToEdge) {
-    Sampler s;
-    s.magFilter = TextureFilter::Nearest;
-    s.minFilter = TextureFilter::Nearest;
-    s.wrapS = s.wrapT = wrap;
-    return s;
-}
-
-// A quad in the plane z = `z` spanning x in [x0, x1], y in [-1, 1], with TEXCOORD_0 mapping
-// x = -1 to u = 0 and x = 1 to u = 1 (v = 0 at the top, as glTF's image origin).
-Mesh quad(float x0, float x1, float z) {
-    Mesh m;
-    m.name = "quad";
-    m.positions = {{x0, -1, z}, {x1, -1, z}, {x1, 1, z}, {x0, 1, z}};
-    m.normals.assign(4, {0, 0, 1});
-    m.indices = {0, 1, 2, 0, 2, 3};
-    for (const auto& p : m.positions) m.texCoords[0].push_back({(p.x + 1.0f) * 0.5f, (1.0f - p.y) * 0.5f});
-    return m;
-}
-
-// An empty scene whose camera sees exactly [-1, 1]^2 at z = 0, over an opaque grey backdrop.
-Scene framedScene() {
-    Scene s;
-    s.name = "material pair";
-    s.materials.push_back(Material{});
-    CameraPose pose;
-    pose.position = {0.0f, 0.0f, 3.0f};
-    pose.fovYDegrees = float(2.0 * std::atan(1.0 / 3.0) * 180.0 / 3.14159265358979323846);
-    s.camera = pose;
-    Material backdrop;
-    backdrop.name = "backdrop";
-    backdrop.baseColor = {0.2f, 0.3f, 0.4f};
-    int m = s.addMaterial(backdrop);
-    Mesh back = makeQuad(4.0f, 4.0f);
-    for (auto& p : back.positions) p.z = -1.0f;
-    back.material = m;
-    Node n;
-    n.meshes = {s.addMesh(back)};
-    s.addNode(n);  // a root: addNode lists it
-    return s;
-}
-
-void addObject(Scene& s, Mesh mesh, const Material& material) {
-    mesh.material = s.addMaterial(material);
-    Node n;
-    n.meshes = {s.addMesh(std::move(mesh))};
-    s.addNode(n);  // a root: addNode lists it
-}
-
-Material blend(glm::vec4 factor) {
-    Material m;
-    m.baseColor = glm::vec3(factor);
-    m.alpha = factor.a;
-    m.alphaMode = AlphaMode::Blend;
-    return m;
-}
 
 // A framed scene holding the two-texel image, and a white BLEND material reading it with NEAREST.
 Scene sceneWithTexels(glm::u8vec4 left, glm::u8vec4 right) {
@@ -122,21 +48,6 @@ Scene factorHalves(glm::u8vec4 left, glm::u8vec4 right) {
     addObject(s, quad(-1, 0, 0), blend(linearTexel(left)));
     addObject(s, quad(0, 1, 0), blend(linearTexel(right)));
     return s;
-}
-
-// The techniques that are exact given enough memory (as exact_techniques_gl_test.cpp): the
-// robust ones, and the bounded ones given a capacity that holds every fragment.
-std::vector<std::string> exactIds() {
-    std::vector<std::string> ids;
-    for (const auto& e : techniqueRegistry())
-        if (e.info.robust || test::hasSetting(e.info.id, "capacity")) ids.push_back(e.info.id);
-    return ids;
-}
-
-std::unique_ptr<Technique> exactTechnique(const std::string& id) {
-    auto t = createTechnique(id);
-    if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=4");
-    return t;
 }
 
 // `textured` and `factors` render alike on the CPU reference and on every exact technique, and
@@ -173,10 +84,15 @@ TEST_CASE("a BLEND quad textured with alphas a1 and a2 equals two factor quads")
     // The expected colour, stated: texel over the lit backdrop, both facing the light alike.
     const std::vector<Object> objects = flatten(factors);
     const Camera camera = defaultCamera(factors, objects);
-    const glm::vec3 light = factors.lightDirection;
-    const float lit = kAmbient + (1.0f - kAmbient) * std::abs(light.z);
+    // Both lit by the shading model along the pixel's ray, facing +z.
+    glm::dvec3 origin, direction;
+    pixelRay(camera, kSize.x, kSize.y, 3, 8, origin, direction);
+    auto lit = [&](glm::vec3 base) {
+        return shadeSurface(base, 0.0f, 1.0f, 1.0f, glm::vec3(0.0f), {0, 0, 1}, glm::vec3(-glm::normalize(direction)),
+                            factors.lightDirection, glm::vec3(kDefaultLightIrradiance));
+    };
     const glm::vec4 l = linearTexel(left);
-    const glm::vec3 want = glm::vec3(l) * lit * l.a + glm::vec3(0.2f, 0.3f, 0.4f) * lit * (1.0f - l.a);
+    const glm::vec3 want = lit(glm::vec3(l)) * l.a + lit({0.2f, 0.3f, 0.4f}) * (1.0f - l.a);
     const glm::vec4 got = raycastReference(textured, flatten(textured), camera, kSize.x, kSize.y).at(3, 8);
     CHECK(std::abs(got.r - want.r) <= 1e-4f);
     CHECK(std::abs(got.g - want.g) <= 1e-4f);

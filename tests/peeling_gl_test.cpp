@@ -90,7 +90,8 @@ TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {
             CHECK_FALSE(r.result.stats.overflowed);
         }
         // The strict test keeps the first fragment submitted at a depth: copy 0 in id order.
-        glm::vec3 expected = 0.5f * paletteColor(0) + 0.5f * f.gpu->scene().background;
+        glm::vec3 expected = 0.5f * test::litFacing(f.gpu->scene(), f.camera, size, 4, 4, paletteColor(0)) +
+                             0.5f * f.gpu->scene().background;
         for (const char* id : {"f2b", "f2b2"}) {
             CAPTURE(id);
             glm::vec4 p = test::renderWith(*f.gpu, f.camera, size, id).image.at(4, 4);

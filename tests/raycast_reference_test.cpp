@@ -18,8 +18,8 @@ using namespace strata;
 
 namespace {
 
-// Light straight along the view axis, so a quad facing the camera shades to exactly its base
-// colour (kAmbient + (1 - kAmbient) * 1) and the closed forms need no shading model.
+// The closed forms need no shading model: the test materials are unlit (KHR_materials_unlit:
+// the base colour is the colour), except where a test is about the shading.
 Scene emptyScene() {
     Scene s;
     s.materials.push_back(Material{});
@@ -82,6 +82,7 @@ int addObject(Scene& s, Mesh mesh, const Material& material, const glm::mat4& lo
 
 Material blend(glm::vec3 color, float alpha) {
     Material m;
+    m.unlit = true;
     m.baseColor = color;
     m.alpha = alpha;
     m.alphaMode = AlphaMode::Blend;
@@ -90,6 +91,7 @@ Material blend(glm::vec3 color, float alpha) {
 
 Material opaque(glm::vec3 color) {
     Material m;
+    m.unlit = true;
     m.baseColor = color;
     return m;
 }
@@ -467,11 +469,21 @@ TEST_CASE("raycast: normals are interpolated and follow the inverse transpose") 
     // Object-space normal tilted in x; a non-uniform scale in x must tilt it the other way
     // (inverse transpose), not along with the geometry.
     m.normals.assign(4, glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f)));
-    addObject(s, m, opaque({1, 1, 1}), glm::scale(glm::mat4(1.0f), {4.0f, 1.0f, 1.0f}));
+    Material lit = opaque({1, 1, 1});
+    lit.unlit = false;
+    addObject(s, m, lit, glm::scale(glm::mat4(1.0f), {4.0f, 1.0f, 1.0f}));
     auto objects = flatten(s);
     glm::vec3 n = glm::normalize(glm::vec3(1.0f / 4.0f, 0.0f, 1.0f));
-    float want = kAmbient + (1.0f - kAmbient) * std::abs(glm::dot(n, s.lightDirection));
-    checkColor(raycastReference(s, objects, originCamera(), 4, 4).at(1, 3), glm::vec3(want));
+    glm::dvec3 origin, direction;
+    pixelRay(originCamera(), 4, 4, 1, 3, origin, direction);
+    const glm::vec3 toEye(-glm::normalize(direction));
+    const glm::vec3 want = shadeSurface(glm::vec3(1.0f), 0.0f, 1.0f, 1.0f, glm::vec3(0.0f), n, toEye, s.lightDirection,
+                                        glm::vec3(kDefaultLightIrradiance));
+    checkColor(raycastReference(s, objects, originCamera(), 4, 4).at(1, 3), want);
+    // The tilt is visible: the untransformed normal would shade otherwise.
+    const glm::vec3 untilted = shadeSurface(glm::vec3(1.0f), 0.0f, 1.0f, 1.0f, glm::vec3(0.0f), glm::normalize(glm::vec3(1, 0, 1)),
+                                            toEye, s.lightDirection, glm::vec3(kDefaultLightIrradiance));
+    CHECK(std::abs(untilted.r - want.r) > 0.01f);
 }
 
 TEST_CASE("raycast: a 70k-triangle closed sphere renders quickly and stays watertight") {

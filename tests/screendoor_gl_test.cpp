@@ -29,8 +29,10 @@ double sphereFacing(int x, int y, glm::ivec2 size, double fovYDegrees, glm::vec3
     return std::abs(glm::dot(glm::normalize(dir * (b - std::sqrt(disc)) - c), -dir));
 }
 
+// Unlit: the colour is the base colour, so coverage reads off the image as is.
 Material transparentMaterial(glm::vec3 color, float alpha) {
     Material m;
+    m.unlit = true;
     m.baseColor = color;
     m.alpha = alpha;
     m.alphaMode = AlphaMode::Blend;
@@ -43,7 +45,6 @@ Scene emptyTestScene() {
     s.materials.push_back(Material{});
     s.camera = CameraPose{};
     s.background = glm::vec3(1.0f);
-    s.lightDirection = {0, 0, 1};
     return s;
 }
 

@@ -38,6 +38,7 @@ struct PreparedObject {
     const Mesh* mesh = nullptr;
     const Material* material = nullptr;
     std::vector<glm::vec3> positions;  // world space, float, as the GPU's vertex stage has them
+    glm::dmat3 linear{1.0};            // the world's upper 3x3 (tangents transform by it)
     glm::dmat3 normalMatrix{1.0};      // inverse transpose of the world's upper 3x3
     double frontSign = 1.0;            // -1 when the world flips winding (negative determinant)
     std::vector<BvhNode> nodes;
@@ -263,22 +264,42 @@ bool maskRejects(const Scene& scene, const PreparedObject& o, std::uint32_t tri,
     return o.material->alphaTested() && !alphaMaskKeeps(baseColorAtHit(scene, o, tri, h).a, o.material->alphaCutoff);
 }
 
+// The interpolated value of a per-vertex attribute at the hit.
+template <class T>
+glm::dvec4 interpolate(const std::vector<T>& values, const std::uint32_t* idx, const TriangleHit& h) {
+    return h.b0 * glm::dvec4(values[idx[0]]) + h.b1 * glm::dvec4(values[idx[1]]) + h.b2 * glm::dvec4(values[idx[2]]);
+}
+
+// The shaded colour at a hit seen along `direction`: the material at the point (scene/
+// texture_sampling.hpp) through common/shading_model.h, as common/surface.glsl does per fragment.
 glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h,
-                   const glm::vec3& baseColor) {
-    const auto& idx = o.mesh->indices;
+                   const glm::vec3& baseColor, const glm::dvec3& direction) {
+    const Material& material = *o.material;
+    if (material.unlit) return baseColor;
+    const Mesh& mesh = *o.mesh;
+    const std::uint32_t* idx = mesh.indices.data() + 3 * tri;
     glm::dvec3 normal;
-    if (o.mesh->normals.size() == o.mesh->positions.size()) {
-        glm::dvec3 objectNormal = h.b0 * glm::dvec3(o.mesh->normals[idx[3 * tri]]) +
-                                  h.b1 * glm::dvec3(o.mesh->normals[idx[3 * tri + 1]]) +
-                                  h.b2 * glm::dvec3(o.mesh->normals[idx[3 * tri + 2]]);
-        normal = o.normalMatrix * objectNormal;
+    if (mesh.normals.size() == mesh.positions.size()) {
+        normal = o.normalMatrix * glm::dvec3(h.b0 * glm::dvec3(mesh.normals[idx[0]]) +
+                                             h.b1 * glm::dvec3(mesh.normals[idx[1]]) +
+                                             h.b2 * glm::dvec3(mesh.normals[idx[2]]));
     } else {
-        glm::dvec3 a(o.positions[idx[3 * tri]]), b(o.positions[idx[3 * tri + 1]]), c(o.positions[idx[3 * tri + 2]]);
+        glm::dvec3 a(o.positions[idx[0]]), b(o.positions[idx[1]]), c(o.positions[idx[2]]);
         normal = glm::cross(b - a, c - a);
     }
     double len = glm::length(normal);
     glm::vec3 n = len > 0.0 ? glm::vec3(normal / len) : glm::vec3(0.0f);
-    return shadeSurface(baseColor, n, scene.lightDirection);
+    const glm::dvec3 bary(h.b0, h.b1, h.b2);
+    if (usesNormalTexture(scene, material, mesh)) {
+        const glm::dvec4 t = interpolate(mesh.tangents, idx, h);
+        const glm::vec4 worldTangent(glm::vec3(o.linear * glm::dvec3(t)), float(t.w));
+        const glm::vec4 texel = textureAt(scene, material.normalTexture, TexelEncoding::Linear, mesh, tri, bary);
+        n = gpu::normalFromMap(n, worldTangent, glm::vec3(texel), material.normalScale);
+    }
+    const MaterialPoint m = materialAt(scene, material, mesh, tri, bary);
+    const glm::vec3 toEye = glm::vec3(-glm::normalize(direction));
+    return shadeSurface(baseColor, m.metallic, m.roughness, m.occlusion, m.emissive, n, toEye, scene.lightDirection,
+                        glm::vec3(kDefaultLightIrradiance));
 }
 
 }  // namespace
@@ -364,6 +385,7 @@ RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>
         p.positions.reserve(mesh.positions.size());
         for (const auto& v : mesh.positions) p.positions.emplace_back(obj.world * glm::vec4(v, 1.0f));
         glm::dmat3 linear(glm::dmat4(obj.world));
+        p.linear = linear;
         double det = glm::determinant(linear);
         p.frontSign = det < 0.0 ? -1.0 : 1.0;
         p.normalMatrix = det != 0.0 ? glm::transpose(glm::inverse(linear)) : glm::dmat3(1.0);
@@ -429,7 +451,8 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
         out.opaqueDepth = float(bestHit.t);
         out.opaqueObject = best->id;
         out.opaquePrimitive = int(bestTri);
-        out.opaqueColor = shadeHit(scene, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)));
+        out.opaqueColor =
+            shadeHit(scene, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)), direction);
     }
 
     // Every transparent hit strictly nearer than the opaque one (the GPU tests GL_GREATER
@@ -447,7 +470,7 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
                 f.object = o.id;
                 f.primitive = int(tri);
                 const glm::vec4 base = baseColorAtHit(scene, o, tri, h);
-                f.color = shadeHit(scene, o, tri, h, glm::vec3(base));
+                f.color = shadeHit(scene, o, tri, h, glm::vec3(base), direction);
                 f.alpha = base.a;
                 f.frontFacing = frontFacing(o, tri, direction);
                 out.fragments.push_back(f);

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -25,7 +26,58 @@ void addAttribute(std::vector<unsigned char>& bytes, const std::vector<T>& value
     bindings.push_back({location, offset});
 }
 
+// Which encoding, texture unit and build feature each MaterialSlot has.
+struct SlotInfo {
+    bool srgb;
+    GLuint unit;
+    unsigned feature;
+};
+constexpr SlotInfo kSlots[kMaterialSlots] = {
+    {true, gpu::BIND_BASE_COLOR_TEXTURE, kSceneBaseColorTexture},
+    {false, gpu::BIND_METALLIC_ROUGHNESS_TEXTURE, kSceneMetallicRoughnessTexture},
+    {false, gpu::BIND_NORMAL_TEXTURE, kSceneNormalTexture},
+    {false, gpu::BIND_OCCLUSION_TEXTURE, kSceneOcclusionTexture},
+    {true, gpu::BIND_EMISSIVE_TEXTURE, kSceneEmissiveTexture},
+};
+
+// An image as a mipmapped texture: sRGB storage decodes texels to linear before filtering
+// (glTF 3.9.2); linear storage leaves them as they are.
+gl::Texture uploadImage(const TextureImage& image, bool srgb) {
+    int levels = 1;
+    for (int side = std::max(image.width, image.height); side > 1; side /= 2) ++levels;
+    gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), levels, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, image.width, image.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateTextureMipmap(t.id());
+    return t;
+}
+
 }  // namespace
+
+glm::vec4 eyeUniform(const glm::mat4& viewProjection) {
+    // The preimage of (0, 0, 1, 0) under the view-projection: the point every clip-space ray
+    // leaves from. For a perspective camera its w is non-zero and the point finite; for an
+    // orthographic one it is the direction away from the scene, which the shader takes as
+    // constant.
+    const glm::dvec4 eye = glm::inverse(glm::dmat4(viewProjection)) * glm::dvec4(0.0, 0.0, 1.0, 0.0);
+    const glm::dvec3 xyz(eye);
+    if (std::abs(eye.w) > 1e-12 * glm::length(xyz)) return glm::vec4(glm::vec3(xyz / eye.w), 1.0f);
+    if (glm::length(xyz) > 0.0) return glm::vec4(glm::vec3(-glm::normalize(xyz)), 0.0f);
+    return glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
+}
+
+const TextureRef& materialTexture(const Material& m, int slot) {
+    switch (slot) {
+    case kSlotMetallicRoughness: return m.metallicRoughnessTexture;
+    case kSlotNormal: return m.normalTexture;
+    case kSlotOcclusion: return m.occlusionTexture;
+    case kSlotEmissive: return m.emissiveTexture;
+    case kSlotBaseColor:
+    default: return m.baseColorTexture;
+    }
+}
 
 GpuMesh uploadMesh(const Mesh& mesh) {
     if (mesh.normals.size() != mesh.positions.size())
@@ -77,11 +129,19 @@ GpuMesh uploadMesh(const Mesh& mesh) {
         addAttribute(bytes, mesh.colors, vao, gpu::ATTRIB_COLOR, 4, bindings);
         g.colors = true;
     }
+    if (mesh.hasTangents()) {
+        if (mesh.tangents.size() != mesh.positions.size())
+            throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.tangents.size()) +
+                                     " tangents for " + std::to_string(mesh.positions.size()) + " positions");
+        addAttribute(bytes, mesh.tangents, vao, gpu::ATTRIB_TANGENT, 4, bindings);
+        g.tangents = true;
+    }
     if (!bytes.empty()) {
         g.attributes = gl::Buffer::create();
         glNamedBufferStorage(g.attributes.id(), GLsizeiptr(bytes.size()), bytes.data(), 0);
         for (const auto& [location, offset] : bindings) {
-            const GLsizei stride = location == gpu::ATTRIB_COLOR ? 4 * sizeof(float) : 2 * sizeof(float);
+            const bool vec4 = location == gpu::ATTRIB_COLOR || location == gpu::ATTRIB_TANGENT;
+            const GLsizei stride = vec4 ? 4 * sizeof(float) : 2 * sizeof(float);
             glVertexArrayVertexBuffer(vao, location, g.attributes.id(), GLintptr(offset), stride);
         }
     }
@@ -112,58 +172,73 @@ GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(sce
         const Material& m = scene_.materials[std::size_t(o.material)];
         const Mesh& mesh = scene_.meshes[std::size_t(o.mesh)];
         unsigned f = 0;
-        if (usesBaseColorTexture(scene_, m, mesh)) f |= kSceneBaseColorTexture;
+        for (int slot = 0; slot < kMaterialSlots; ++slot)
+            if (slot == kSlotNormal ? usesNormalTexture(scene_, m, mesh) : usesTexture(scene_, materialTexture(m, slot), mesh))
+                f |= kSlots[slot].feature;
         if (mesh.hasColors()) f |= kSceneVertexColor;
         if (m.alphaTested()) f |= kSceneAlphaMask;
+        if (m.unlit) f = (f & (kSceneBaseColorTexture | kSceneVertexColor | kSceneAlphaMask)) | kSceneUnlit;
         features_.push_back(f);
     }
 }
 
 void GpuScene::uploadTextures() {
-    for (const TextureImage& image : scene_.images) {
+    // Which encodings each image is used in.
+    std::vector<std::array<bool, 2>> used(scene_.images.size(), {false, false});  // sRGB, linear
+    for (const Material& m : scene_.materials)
+        for (int slot = 0; slot < kMaterialSlots; ++slot) {
+            const TextureRef& t = materialTexture(m, slot);
+            if (t.present() && std::size_t(t.image) < used.size()) used[std::size_t(t.image)][kSlots[slot].srgb ? 0 : 1] = true;
+        }
+    srgbTextures_.resize(scene_.images.size());
+    linearTextures_.resize(scene_.images.size());
+    for (std::size_t i = 0; i < scene_.images.size(); ++i) {
+        const TextureImage& image = scene_.images[i];
         if (image.width <= 0 || image.height <= 0 ||
             image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
             throw std::runtime_error("texture image '" + image.name + "' has " + std::to_string(image.rgba.size()) +
                                      " bytes for " + std::to_string(image.width) + "x" +
                                      std::to_string(image.height) + " RGBA8");
-        int levels = 1;
-        for (int side = std::max(image.width, image.height); side > 1; side /= 2) ++levels;
-        gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
-        // sRGB storage: the sampler decodes texels to linear before filtering (glTF 3.9.2).
-        glTextureStorage2D(t.id(), levels, GL_SRGB8_ALPHA8, image.width, image.height);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTextureSubImage2D(t.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glGenerateTextureMipmap(t.id());
         // Each level a quarter of the one above: 4/3 of level 0 in all.
-        textureBytes_ += image.rgba.size() * 4 / 3;
-        textures_.push_back(std::move(t));
+        if (used[i][0]) {
+            srgbTextures_[i] = uploadImage(image, true);
+            textureBytes_ += image.rgba.size() * 4 / 3;
+        }
+        if (used[i][1]) {
+            linearTextures_[i] = uploadImage(image, false);
+            textureBytes_ += image.rgba.size() * 4 / 3;
+        }
     }
     for (const Material& m : scene_.materials) {
-        if (!m.baseColorTexture.present()) {
-            materialSampler_.push_back(-1);
-            continue;
+        std::array<int, kMaterialSlots> indices;
+        for (int slot = 0; slot < kMaterialSlots; ++slot) {
+            const TextureRef& t = materialTexture(m, slot);
+            indices[std::size_t(slot)] = -1;
+            if (!t.present()) continue;
+            const Sampler& key = t.sampler;
+            int index = -1;
+            for (std::size_t i = 0; i < samplers_.size(); ++i)
+                if (samplers_[i].first == key) index = int(i);
+            if (index < 0) {
+                gl::Sampler object = gl::Sampler::create();
+                glSamplerParameteri(object.id(), GL_TEXTURE_MAG_FILTER, GLint(key.magFilter));
+                glSamplerParameteri(object.id(), GL_TEXTURE_MIN_FILTER, GLint(key.minFilter));
+                glSamplerParameteri(object.id(), GL_TEXTURE_WRAP_S, GLint(key.wrapS));
+                glSamplerParameteri(object.id(), GL_TEXTURE_WRAP_T, GLint(key.wrapT));
+                samplers_.push_back({key, std::move(object)});
+                index = int(samplers_.size()) - 1;
+            }
+            indices[std::size_t(slot)] = index;
         }
-        const Sampler& key = m.baseColorTexture.sampler;
-        int index = -1;
-        for (std::size_t i = 0; i < samplers_.size(); ++i)
-            if (samplers_[i].first == key) index = int(i);
-        if (index < 0) {
-            gl::Sampler object = gl::Sampler::create();
-            glSamplerParameteri(object.id(), GL_TEXTURE_MAG_FILTER, GLint(key.magFilter));
-            glSamplerParameteri(object.id(), GL_TEXTURE_MIN_FILTER, GLint(key.minFilter));
-            glSamplerParameteri(object.id(), GL_TEXTURE_WRAP_S, GLint(key.wrapS));
-            glSamplerParameteri(object.id(), GL_TEXTURE_WRAP_T, GLint(key.wrapT));
-            samplers_.push_back({key, std::move(object)});
-            index = int(samplers_.size()) - 1;
-        }
-        materialSampler_.push_back(index);
+        materialSampler_.push_back(indices);
     }
 }
 
 void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProjection) const {
     glProgramUniformMatrix4fv(p.id(), p.viewProj, 1, GL_FALSE, glm::value_ptr(viewProjection));
     glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(scene_.lightDirection));
+    const glm::vec4 eye = eyeUniform(viewProjection);
+    glProgramUniform4fv(p.id(), p.eye, 1, glm::value_ptr(eye));
 }
 
 void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
@@ -180,19 +255,32 @@ void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
     glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
     glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
     glProgramUniform1i(program, p.volumeEntry, volumeEntry_[std::size_t(objectIndex)]);
-    if (p.baseColorTransform >= 0) {
-        const glm::mat3 transform = m.baseColorTexture.transform.matrix();
-        glProgramUniformMatrix3fv(program, p.baseColorTransform, 1, GL_FALSE, glm::value_ptr(transform));
-        glProgramUniform1i(program, p.baseColorTexCoord, m.baseColorTexture.texCoord);
+    glProgramUniform1f(program, p.metallic, m.metallic);
+    glProgramUniform1f(program, p.roughness, m.roughness);
+    glProgramUniform3fv(program, p.emissive, 1, glm::value_ptr(m.emissive));
+    const unsigned features = features_[std::size_t(objectIndex)];
+    if (features & kSceneNormalTexture) glProgramUniform1f(program, p.normalScale, m.normalScale);
+    if (features & kSceneOcclusionTexture) glProgramUniform1f(program, p.occlusionStrength, m.occlusionStrength);
+    for (int slot = 0; slot < kMaterialSlots; ++slot) {
+        if (!(features & kSlots[slot].feature)) continue;
+        const TextureRef& t = materialTexture(m, slot);
+        const glm::mat3 transform = t.transform.matrix();
+        glProgramUniformMatrix3fv(program, p.textures[slot].transform, 1, GL_FALSE, glm::value_ptr(transform));
+        glProgramUniform1i(program, p.textures[slot].texCoord, t.texCoord);
     }
 }
 
 void GpuScene::bindMaterialTextures(int objectIndex) const {
     const Object& o = objects_[std::size_t(objectIndex)];
     const Material& m = scene_.materials[std::size_t(o.material)];
-    glBindTextureUnit(gpu::BIND_BASE_COLOR_TEXTURE, textures_[std::size_t(m.baseColorTexture.image)].id());
-    glBindSampler(gpu::BIND_BASE_COLOR_TEXTURE,
-                  samplers_[std::size_t(materialSampler_[std::size_t(o.material)])].second.id());
+    const unsigned features = features_[std::size_t(objectIndex)];
+    for (int slot = 0; slot < kMaterialSlots; ++slot) {
+        if (!(features & kSlots[slot].feature)) continue;
+        const std::size_t image = std::size_t(materialTexture(m, slot).image);
+        glBindTextureUnit(kSlots[slot].unit, (kSlots[slot].srgb ? srgbTextures_ : linearTextures_)[image].id());
+        glBindSampler(kSlots[slot].unit,
+                      samplers_[std::size_t(materialSampler_[std::size_t(o.material)][std::size_t(slot)])].second.id());
+    }
 }
 
 void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
@@ -207,7 +295,7 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
     const unsigned features = features_[std::size_t(objectIndex)];
     const SceneProgram& drawing = p.variant(features);
     setObjectUniforms(drawing, objectIndex);
-    if (features & kSceneBaseColorTexture) bindMaterialTextures(objectIndex);
+    bindMaterialTextures(objectIndex);
     if (features) glUseProgram(drawing.id());
     glBindVertexArray(mesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
@@ -217,7 +305,7 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
 void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandInDraw& standIn) const {
     if (standIn.first.empty()) return;
     // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
-    const SceneProgram& variant = p.standInVariant();
+    const SceneProgram& variant = p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & kSceneUnlit));
     setObjectUniforms(variant, objectIndex);
     glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
     glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);

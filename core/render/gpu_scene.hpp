@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <vector>
 
 namespace strata {
@@ -17,14 +18,30 @@ struct GpuMesh {
     gl::VertexArray vertexArray;
     gl::Buffer vertices;    // interleaved position, normal (6 floats)
     gl::Buffer indices;     // uint32
-    gl::Buffer attributes;  // what the mesh has of TEXCOORD_0, TEXCOORD_1, COLOR_0, one array each
+    gl::Buffer attributes;  // what the mesh has of TEXCOORD_0, TEXCOORD_1, COLOR_0, TANGENT, one array each
     GLsizei indexCount = 0;
     bool texCoords[2] = {false, false};
     bool colors = false;
+    bool tangents = false;
 };
 
+// A material's textures, in the order of SceneProgram::textures and of their texture units.
+enum MaterialSlot : int {
+    kSlotBaseColor,
+    kSlotMetallicRoughness,
+    kSlotNormal,
+    kSlotOcclusion,
+    kSlotEmissive,
+    kMaterialSlots,
+};
+const TextureRef& materialTexture(const Material& material, int slot);
+
+// common/lighting.glsl's uEye for a view-projection: (eye, 1) for a perspective camera,
+// (direction towards the eye, 0) for an orthographic one.
+glm::vec4 eyeUniform(const glm::mat4& viewProjection);
+
 // Uploads one mesh in the layout every scene program reads (attributes 0 position, 1 normal;
-// ATTRIB_TEXCOORD0/1 and ATTRIB_COLOR of common/bindings.h where the mesh has them, in a buffer
+// ATTRIB_TEXCOORD0/1, ATTRIB_COLOR and ATTRIB_TANGENT of common/bindings.h where the mesh has them, in a buffer
 // of their own so a mesh without them keeps its 24-byte vertices). Throws when an attribute
 // does not match the positions.
 GpuMesh uploadMesh(const Mesh& mesh);
@@ -54,7 +71,7 @@ public:
     // Uniforms every scene program shares for a frame.
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
 
-    // The SceneFeature bits object `objectIndex` draws with (texture, vertex colours, MASK).
+    // The SceneFeature bits object `objectIndex` draws with (textures, vertex colours, MASK, unlit).
     unsigned materialFeatures(int objectIndex) const { return features_[std::size_t(objectIndex)]; }
     // Decoded texture images on the GPU, mip levels included (the panel's and bench's figure).
     std::size_t textureBytes() const { return textureBytes_; }
@@ -73,10 +90,13 @@ private:
     std::vector<ObjectVolume> volumes_;
     std::vector<int> volumeEntry_;  // uVolumeEntry per object: 0 surface, +1/-1 entering faces
     std::vector<unsigned> features_;  // SceneFeature bits per object
-    std::vector<gl::Texture> textures_;  // per Scene::images entry (sRGB, mipmapped)
-    // One GL sampler per distinct glTF sampler; materialSampler_ indexes it per material (-1 none).
+    // Per Scene::images entry, mipmapped, in the encodings materials use it with (colour
+    // textures sRGB, the others linear; an unused one has id 0).
+    std::vector<gl::Texture> srgbTextures_, linearTextures_;
+    // One GL sampler per distinct glTF sampler; materialSampler_ indexes it per material and
+    // slot (-1 none).
     std::vector<std::pair<Sampler, gl::Sampler>> samplers_;
-    std::vector<int> materialSampler_;
+    std::vector<std::array<int, kMaterialSlots>> materialSampler_;
     std::size_t textureBytes_ = 0;
     Bounds bounds_;
     std::size_t triangles_ = 0;

@@ -26,8 +26,17 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
     p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
     p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
-    p.baseColorTransform = glGetUniformLocation(id, "uBaseColorTransform");
-    p.baseColorTexCoord = glGetUniformLocation(id, "uBaseColorTexCoord");
+    p.metallic = glGetUniformLocation(id, "uMetallic");
+    p.roughness = glGetUniformLocation(id, "uRoughness");
+    p.emissive = glGetUniformLocation(id, "uEmissive");
+    p.eye = glGetUniformLocation(id, "uEye");
+    p.normalScale = glGetUniformLocation(id, "uNormalScale");
+    p.occlusionStrength = glGetUniformLocation(id, "uOcclusionStrength");
+    const char* slots[5] = {"BaseColor", "MetallicRoughness", "Normal", "Occlusion", "Emissive"};
+    for (int i = 0; i < 5; ++i) {
+        p.textures[i].transform = glGetUniformLocation(id, ("u" + std::string(slots[i]) + "Transform").c_str());
+        p.textures[i].texCoord = glGetUniformLocation(id, ("u" + std::string(slots[i]) + "TexCoord").c_str());
+    }
     return p;
 }
 
@@ -83,7 +92,7 @@ SceneProgram buildSceneProgram(const std::vector<std::string>& laterStages, cons
 
 const SceneProgram& SceneProgram::variant(unsigned features) const {
     if (features == 0) return *this;
-    constexpr unsigned kCombinations = 16;  // every SceneFeature bit set
+    constexpr unsigned kCombinations = kSceneFeatureCombinations;
     if (features >= kCombinations) throw std::logic_error("scene program: unknown feature bits");
     if (!variants_) variants_ = std::make_shared<std::vector<std::shared_ptr<Variant>>>(kCombinations);
     std::shared_ptr<Variant>& slot = (*variants_)[features];
@@ -94,13 +103,20 @@ const SceneProgram& SceneProgram::variant(unsigned features) const {
         if (features & kSceneBaseColorTexture) defines["STRATA_BASE_COLOR_TEXTURE"] = "";
         if (features & kSceneVertexColor) defines["STRATA_VERTEX_COLOR"] = "";
         if (features & kSceneAlphaMask) defines["STRATA_ALPHA_MASK"] = "";
+        if (features & kSceneMetallicRoughnessTexture) defines["STRATA_METALLIC_ROUGHNESS_TEXTURE"] = "";
+        if (features & kSceneNormalTexture) defines["STRATA_NORMAL_TEXTURE"] = "";
+        if (features & kSceneOcclusionTexture) defines["STRATA_OCCLUSION_TEXTURE"] = "";
+        if (features & kSceneEmissiveTexture) defines["STRATA_EMISSIVE_TEXTURE"] = "";
+        if (features & kSceneUnlit) defines["STRATA_UNLIT"] = "";
         v->program = buildFromStages(stages, defines);
         // Every plain uniform of this program except the per-object ones GpuScene::draw sets on
         // whichever program draws (samplers, images and blocks bind by layout, not by value).
-        const std::set<std::string> perObject = {"uModel",         "uNormalMatrix",       "uBaseColor",
-                                                 "uAlpha",         "uObjectId",           "uAlphaCutoff",
-                                                 "uTau",           "uAlbedo",             "uVolumeEntry",
-                                                 "uBaseColorTransform", "uBaseColorTexCoord"};
+        const std::set<std::string> perObject = {
+            "uModel", "uNormalMatrix", "uBaseColor", "uAlpha", "uObjectId", "uAlphaCutoff", "uTau", "uAlbedo",
+            "uVolumeEntry", "uMetallic", "uRoughness", "uEmissive", "uNormalScale", "uOcclusionStrength",
+            "uBaseColorTransform", "uBaseColorTexCoord", "uMetallicRoughnessTransform", "uMetallicRoughnessTexCoord",
+            "uNormalTransform", "uNormalTexCoord", "uOcclusionTransform", "uOcclusionTexCoord",
+            "uEmissiveTransform", "uEmissiveTexCoord"};
         GLint count = 0;
         glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
         for (GLint i = 0; i < count; ++i) {

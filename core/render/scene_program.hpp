@@ -21,10 +21,21 @@ namespace strata {
 
 // What a draw needs beyond the plain build; a bit set, the variant's key.
 enum SceneFeature : unsigned {
-    kSceneStandIn = 1u,           // STRATA_IMPOSTOR
-    kSceneBaseColorTexture = 2u,  // STRATA_BASE_COLOR_TEXTURE
-    kSceneVertexColor = 4u,       // STRATA_VERTEX_COLOR
-    kSceneAlphaMask = 8u,         // STRATA_ALPHA_MASK
+    kSceneStandIn = 1u,                    // STRATA_IMPOSTOR
+    kSceneBaseColorTexture = 2u,           // STRATA_BASE_COLOR_TEXTURE
+    kSceneVertexColor = 4u,                // STRATA_VERTEX_COLOR
+    kSceneAlphaMask = 8u,                  // STRATA_ALPHA_MASK
+    kSceneMetallicRoughnessTexture = 16u,  // STRATA_METALLIC_ROUGHNESS_TEXTURE
+    kSceneNormalTexture = 32u,             // STRATA_NORMAL_TEXTURE
+    kSceneOcclusionTexture = 64u,          // STRATA_OCCLUSION_TEXTURE
+    kSceneEmissiveTexture = 128u,          // STRATA_EMISSIVE_TEXTURE
+    kSceneUnlit = 256u,                    // STRATA_UNLIT
+    kSceneFeatureCombinations = 512u,      // one past every bit set
+};
+
+// The per-object locations of one material texture's uniforms (common/material.glsl).
+struct TextureUniforms {
+    GLint transform = -1, texCoord = -1;
 };
 
 struct SceneProgram {
@@ -33,7 +44,10 @@ struct SceneProgram {
           lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
           volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
           impostorSlices = -1, impostorOverlap = -1,  // common/scene_main.glsl (the variant's)
-          baseColorTransform = -1, baseColorTexCoord = -1;  // common/material.glsl (the variant's)
+          metallic = -1, roughness = -1, emissive = -1, eye = -1,
+          normalScale = -1, occlusionStrength = -1;  // common/material.glsl (the variant's)
+    // Base colour, metallic-roughness, normal, occlusion, emissive (GpuScene's MaterialSlot order).
+    TextureUniforms textures[5];
 
     GLuint id() const { return program.id(); }
 

@@ -8,6 +8,7 @@ namespace strata {
 using gpu::alphaMaskKeeps;
 using gpu::combineBaseColor;
 using gpu::kAmbient;
+using gpu::kDefaultLightIrradiance;
 using gpu::shadeSurface;
 using gpu::transformTexCoord;
 

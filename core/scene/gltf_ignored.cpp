@@ -53,10 +53,12 @@ bool indexedSemantic(const std::string& name, std::string& set, int& index) {
 }  // namespace
 
 // KHR_materials_volume gives tau and albedo, KHR_mesh_quantization's integer attributes are
-// decoded like any accessor, KHR_texture_transform places a texture.
+// decoded like any accessor, KHR_texture_transform places a texture, KHR_materials_emissive_strength
+// scales emission, KHR_materials_unlit drops the light.
 bool implementedExtension(const std::string& extension) {
     return extension == "KHR_materials_volume" || extension == "KHR_mesh_quantization" ||
-           extension == "KHR_texture_transform";
+           extension == "KHR_texture_transform" || extension == "KHR_materials_emissive_strength" ||
+           extension == "KHR_materials_unlit";
 }
 
 void noteIgnoredAttributes(const tinygltf::Primitive& p, const std::string& place, IgnoredLog& log) {
@@ -110,17 +112,6 @@ void noteIgnoredFeatures(const tinygltf::Model& model, IgnoredLog& log) {
         log.note("skins", "skins ignored: skinned meshes are drawn in their bind pose");
     if (!model.animations.empty())
         log.note("animations", "animations ignored: the scene is drawn at rest");
-    for (std::size_t i = 0; i < model.materials.size(); ++i) {
-        const tinygltf::Material& m = model.materials[i];
-        const std::string place = "material " + std::to_string(i);
-        if (m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-            log.note("metallic-roughness textures", "metallic-roughness textures ignored: not drawn yet", place);
-        if (m.normalTexture.index >= 0) log.note("normal textures", "normal textures ignored: not drawn yet", place);
-        if (m.occlusionTexture.index >= 0)
-            log.note("occlusion textures", "occlusion textures ignored: not drawn yet", place);
-        if (m.emissiveTexture.index >= 0)
-            log.note("emissive textures", "emissive textures ignored: not drawn yet", place);
-    }
 }
 
 std::string unimplementedRequiredExtension(const tinygltf::Model& model) {

@@ -7,6 +7,7 @@
 #include "scene/gltf_internal.hpp"
 #include "scene/gltf_schema.hpp"
 #include "scene/gltf_textures.hpp"
+#include "scene/tangents.hpp"
 
 // The Debian package ships libtinygltf.so with the implementation (and its own JSON parser),
 // so this file only includes the declarations; defining TINYGLTF_IMPLEMENTATION here would
@@ -146,8 +147,10 @@ struct Converter {
             }
             m.baseColor = glm::vec3(factor);
             m.alpha = factor.a;
-            m.baseColorTexture = textures.textureOf(g.pbrMetallicRoughness.baseColorTexture,
-                                           what + (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')"));
+            const std::string named = what + (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')");
+            const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+            m.baseColorTexture = textures.textureOf(pbr.baseColorTexture, "baseColorTexture", named);
+            convertSurface(g, what, named, m);
             if (g.alphaMode == "OPAQUE" || g.alphaMode.empty()) m.alphaMode = AlphaMode::Opaque;
             else if (g.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
             else if (g.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
@@ -201,6 +204,41 @@ struct Converter {
             scene.materials.push_back(std::move(m));
         }
         textures.warnFailedImages(report.warnings);
+    }
+
+    // Metallic-roughness, normal, occlusion and emission (glTF 3.9), KHR_materials_emissive_strength
+    // and KHR_materials_unlit.
+    void convertSurface(const tinygltf::Material& g, const std::string& what, const std::string& named, Material& m) {
+        const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+        m.metallic = unitFactor(pbr.metallicFactor, "metallicFactor", what);
+        m.roughness = unitFactor(pbr.roughnessFactor, "roughnessFactor", what);
+        m.metallicRoughnessTexture = textures.textureOf(pbr.metallicRoughnessTexture, "metallicRoughnessTexture", named);
+        m.normalTexture = textures.textureOf(g.normalTexture, "normalTexture", named);
+        m.normalScale = toFloat(g.normalTexture.scale, what + ": normalTexture scale");
+        m.occlusionTexture = textures.textureOf(g.occlusionTexture, "occlusionTexture", named);
+        m.occlusionStrength = unitFactor(g.occlusionTexture.strength, "occlusionTexture strength", what);
+        m.emissiveTexture = textures.textureOf(g.emissiveTexture, "emissiveTexture", named);
+        if (!g.emissiveFactor.empty()) {
+            if (g.emissiveFactor.size() != 3) fail(what + ": emissiveFactor must have 3 components");
+            for (int c = 0; c < 3; ++c) m.emissive[c] = unitFactor(g.emissiveFactor[std::size_t(c)], "emissiveFactor", what);
+        }
+        auto strength = g.extensions.find("KHR_materials_emissive_strength");
+        if (strength != g.extensions.end()) {
+            const std::string sw = what + " KHR_materials_emissive_strength";
+            const double k = number(strength->second, "emissiveStrength", 1.0, sw);
+            // Bounded so that emission stays finite in a half-float target (65504).
+            if (!(k >= 0.0) || !(k <= 1.0e4)) fail(sw + ": emissiveStrength must be a number in [0, 10000]");
+            m.emissive *= float(k);
+        }
+        m.unlit = g.extensions.count("KHR_materials_unlit") > 0;
+    }
+
+    // A factor the specification bounds to [0, 1]: refused if not a number, clamped (and said
+    // once) if outside.
+    float unitFactor(double value, const char* name, const std::string& what) {
+        if (!std::isfinite(value)) fail(what + ": non-finite " + name);
+        if (value < 0.0 || value > 1.0) ignored.note(std::string(name) + " range", std::string(name) + " outside [0, 1] clamped", what);
+        return float(std::clamp(value, 0.0, 1.0));
     }
 
     void convertMeshes() {
@@ -282,7 +320,8 @@ struct Converter {
     }
 
     // TEXCOORD_0, TEXCOORD_1 (VEC2) and COLOR_0 (VEC3 or VEC4), float or normalized integers,
-    // one per position, finite. Read before flat normals unweld the mesh, which carries them.
+    // and TANGENT (VEC4), one per position, finite. Read before flat normals unweld the mesh,
+    // which carries all but the tangents.
     void readMaterialAttributes(const tinygltf::Primitive& p, Mesh& mesh, const std::string& what) {
         const std::size_t vertexCount = mesh.positions.size();
         auto checkCount = [&](std::size_t n, const char* semantic) {
@@ -327,6 +366,22 @@ struct Converter {
                 if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a))
                     fail(what + ": non-finite COLOR_0 value");
             mesh.colors = std::move(colors);
+        }
+        auto tangent = p.attributes.find("TANGENT");
+        if (tangent != p.attributes.end()) {
+            const std::string tw = what + " TANGENT (accessor " + str(tangent->second) + ")";
+            if (tangent->second < 0 || std::size_t(tangent->second) >= model.accessors.size())
+                fail(what + " TANGENT: accessor " + str(tangent->second) + " does not exist");
+            const tinygltf::Accessor& acc = model.accessors[std::size_t(tangent->second)];
+            if (vectorComponents(acc.type) != 4) fail(tw + ": type " + typeName(acc.type) + ", expected VEC4");
+            AccessorView v = checkAccessor(model, tangent->second, 4, false, what + " TANGENT");
+            checkCount(v.count, "TANGENT");
+            std::vector<glm::vec4> tangents(v.count, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+            readAccessor(v, what + " TANGENT", [&](std::size_t e, int c, double x) { tangents[e][c] = float(x); });
+            for (const auto& t : tangents)
+                if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || !std::isfinite(t.w))
+                    fail(what + ": non-finite TANGENT value");
+            mesh.tangents = std::move(tangents);
         }
     }
 
@@ -539,6 +594,8 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& 
         conv.textures.moveUsedImages(conv.scene);
         conv.convertMaterials();
         conv.convertMeshes();
+        // Where a normal texture needs tangents the file did not give (or flat normals dropped).
+        deriveMissingTangents(conv.scene);
         conv.convertNodes();
         conv.checkWorldTransforms();
         detail::noteIgnoredFeatures(model, ignored);

@@ -37,10 +37,12 @@ void GltfTextures::moveUsedImages(Scene& scene) {
     decoded_.ensure(model_.images.size());
     std::vector<char> used(model_.images.size(), 0);
     for (const tinygltf::Material& m : model_.materials) {
-        const int texture = m.pbrMetallicRoughness.baseColorTexture.index;
-        if (texture < 0 || std::size_t(texture) >= model_.textures.size()) continue;  // textureOf says so
-        const int source = model_.textures[std::size_t(texture)].source;
-        if (source >= 0 && std::size_t(source) < used.size()) used[std::size_t(source)] = 1;
+        for (int texture : {m.pbrMetallicRoughness.baseColorTexture.index, m.pbrMetallicRoughness.metallicRoughnessTexture.index,
+                            m.normalTexture.index, m.occlusionTexture.index, m.emissiveTexture.index}) {
+            if (texture < 0 || std::size_t(texture) >= model_.textures.size()) continue;  // textureOf says so
+            const int source = model_.textures[std::size_t(texture)].source;
+            if (source >= 0 && std::size_t(source) < used.size()) used[std::size_t(source)] = 1;
+        }
     }
     for (std::size_t i = 0; i < model_.images.size(); ++i) {
         if (used[i] && decoded_.images[i].width > 0) {
@@ -99,12 +101,13 @@ glm::vec2 vec2Of(const tinygltf::Value& ext, const char* key, glm::vec2 fallback
 
 }  // namespace
 
-TextureRef GltfTextures::textureOf(const tinygltf::TextureInfo& info, const std::string& material) {
+TextureRef GltfTextures::textureOf(int index, int texCoord, const tinygltf::ExtensionMap& extensions, const char* slot,
+                                   const std::string& material) {
     TextureRef ref;
-    if (info.index < 0) return ref;
-    const std::string what = material + " baseColorTexture";
-    if (std::size_t(info.index) >= model_.textures.size()) fail(what + ": texture " + str(info.index) + " does not exist");
-    const tinygltf::Texture& t = model_.textures[std::size_t(info.index)];
+    if (index < 0) return ref;
+    const std::string what = material + " " + slot;
+    if (std::size_t(index) >= model_.textures.size()) fail(what + ": texture " + str(index) + " does not exist");
+    const tinygltf::Texture& t = model_.textures[std::size_t(index)];
     if (t.sampler >= 0) {
         if (std::size_t(t.sampler) >= model_.samplers.size())
             fail(what + ": sampler " + str(t.sampler) + " does not exist");
@@ -115,9 +118,9 @@ TextureRef GltfTextures::textureOf(const tinygltf::TextureInfo& info, const std:
         ref.sampler.wrapS = wrapOf(g.wrapS, sw);
         ref.sampler.wrapT = wrapOf(g.wrapT, sw);
     }
-    ref.texCoord = info.texCoord;
-    auto ext = info.extensions.find("KHR_texture_transform");
-    if (ext != info.extensions.end() && ext->second.IsObject()) {
+    ref.texCoord = texCoord;
+    auto ext = extensions.find("KHR_texture_transform");
+    if (ext != extensions.end() && ext->second.IsObject()) {
         const tinygltf::Value& v = ext->second;
         const std::string tw = what + " KHR_texture_transform";
         ref.transform.offset = vec2Of(v, "offset", ref.transform.offset, tw);
@@ -137,7 +140,7 @@ TextureRef GltfTextures::textureOf(const tinygltf::TextureInfo& info, const std:
     }
     if (t.source < 0) {
         ignored_.note("texture without source", "texture without an image source ignored (" + material +
-                                                   " renders with its base colour factor)", what);
+                                                   " renders without it)", what);
         return TextureRef{};
     }
     if (std::size_t(t.source) >= model_.images.size()) fail(what + ": image " + str(t.source) + " does not exist");
@@ -150,16 +153,16 @@ TextureRef GltfTextures::textureOf(const tinygltf::TextureInfo& info, const std:
 }
 
 // One line per image that could not be decoded but is used, naming why and the materials
-// that render with their factors instead:
-// "<file>: image 3 ('logo'): <why>; material 1 ('box') renders with its base colour factor".
+// that render without it (with their factors alone):
+// "<file>: image 3 ('logo'): <why>; material 1 ('box') renders without it".
 void GltfTextures::warnFailedImages(std::vector<std::string>& warnings) const {
     for (const auto& [index, users] : failedImageUsers_) {
         const tinygltf::Image& g = model_.images[std::size_t(index)];
         std::string line = printable(file_, 120) + ": image " + str(index) +
                            (g.name.empty() ? "" : " ('" + printable(g.name, 60) + "')") + ": " +
                            printableMessage(imageProblem(std::size_t(index))) + "; " + users.front();
-        if (users.size() == 1) line += " renders with its base colour factor";
-        else line += " and " + str(users.size() - 1) + " more render with their base colour factors";
+        if (users.size() == 1) line += " renders without it";
+        else line += " and " + str(users.size() - 1) + " more render without it";
         warnings.push_back(line);
     }
 }

@@ -1,7 +1,7 @@
 #pragma once
 // glTF textures to the scene's: images decoded while tinygltf loads (GltfImageTable's callback),
 // samplers, texCoord sets and KHR_texture_transform read into TextureRefs, and one warning per
-// image that could not be decoded, naming the materials that render with their factors instead.
+// image that could not be decoded, naming the materials that render without it.
 // Internal to the glTF loader (gltf_internal.hpp).
 #include "scene/gltf_ignored.hpp"
 #include "scene/scene.hpp"
@@ -58,17 +58,24 @@ public:
     GltfTextures(const tinygltf::Model& model, GltfImageTable& decoded, IgnoredLog& ignored, std::string file)
         : model_(model), decoded_(decoded), ignored_(ignored), file_(std::move(file)) {}
 
-    // The decoded images a material's base colour texture uses move to Scene::images (every
-    // renderer uploads all of them, so a normal map Strata does not draw yet stays out).
+    // The decoded images a material's textures use move to Scene::images (every renderer
+    // uploads all of them, so an image no material uses stays out).
     void moveUsedImages(Scene& scene);
-    // A textureInfo (index, texCoord, KHR_texture_transform) to a TextureRef; image -1 where the
-    // texture cannot be drawn (warnFailedImages says why).
-    TextureRef textureOf(const tinygltf::TextureInfo& info, const std::string& material);
+    // A textureInfo (index, texCoord, KHR_texture_transform) of a material's `slot`
+    // ("baseColorTexture", "normalTexture", ...) to a TextureRef; image -1 where the texture
+    // cannot be drawn (warnFailedImages says why). Info is tinygltf's TextureInfo,
+    // NormalTextureInfo or OcclusionTextureInfo.
+    template <class Info>
+    TextureRef textureOf(const Info& info, const char* slot, const std::string& material) {
+        return textureOf(info.index, info.texCoord, info.extensions, slot, material);
+    }
     // One line per image that could not be decoded but is used, naming why and the materials
-    // that render with their factors instead.
+    // that render without it (with their factors alone).
     void warnFailedImages(std::vector<std::string>& warnings) const;
 
 private:
+    TextureRef textureOf(int index, int texCoord, const tinygltf::ExtensionMap& extensions, const char* slot,
+                         const std::string& material);
     std::string imageProblem(std::size_t image) const;
 
     const tinygltf::Model& model_;

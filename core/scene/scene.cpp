@@ -122,6 +122,9 @@ void makeFlatNormals(Mesh& mesh) {
     mesh.indices = std::move(out.indices);
     for (int set = 0; set < 2; ++set) mesh.texCoords[set] = std::move(out.texCoords[set]);
     mesh.colors = std::move(out.colors);
+    // glTF 3.7.2.1: with computed flat normals, a file's tangents must be ignored (they were
+    // made for normals that are not there); scene/tangents.hpp derives new ones where needed.
+    mesh.tangents.clear();
 }
 
 glm::mat3 TextureTransform::matrix() const {

@@ -30,6 +30,23 @@ struct Material {
     glm::vec3 baseColor{0.8f};
     float alpha = 1.0f;              // coverage/opacity used by the blending techniques
     TextureRef baseColorTexture;     // image -1: none
+    // Metallic-roughness (glTF 3.9.2, the BRDF of its appendix B: common/shading_model.h). The
+    // texture's blue channel scales metallic, its green roughness (linear values). Strata's own
+    // materials are rough dielectrics; the glTF loader takes the file's (whose defaults are 1, 1).
+    float metallic = 0.0f;
+    float roughness = 1.0f;
+    TextureRef metallicRoughnessTexture;
+    // Tangent-space normal map (linear, scaled in x and y by normalScale), ambient occlusion from
+    // the red channel (mixed in by occlusionStrength), and emission: emissiveFactor x
+    // KHR_materials_emissive_strength in `emissive`, times the sRGB emissive texture.
+    TextureRef normalTexture;
+    float normalScale = 1.0f;
+    TextureRef occlusionTexture;
+    float occlusionStrength = 1.0f;
+    glm::vec3 emissive{0.0f};
+    TextureRef emissiveTexture;
+    // KHR_materials_unlit: the base colour is the colour; no light, no emission.
+    bool unlit = false;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;        // MASK: fragments with alpha < cutoff are discarded
     // Volumetric model (Barta & Kovacs): attenuation per metre for each colour channel and the
@@ -75,10 +92,14 @@ struct Mesh {
     // each empty or one per position.
     std::vector<glm::vec2> texCoords[2];
     std::vector<glm::vec4> colors;
+    // glTF TANGENT (xyz unit, w the bitangent's sign), for normal textures: the file's, or
+    // derived from the normal texture's TEXCOORD set (scene/tangents.hpp); empty or one per position.
+    std::vector<glm::vec4> tangents;
     int material = 0;
 
     bool hasTexCoords(int set) const { return !texCoords[set].empty(); }
     bool hasColors() const { return !colors.empty(); }
+    bool hasTangents() const { return !tangents.empty(); }
 
     std::size_t triangleCount() const { return indices.size() / 3; }
     Bounds bounds() const;
@@ -138,7 +159,7 @@ Bounds worldBounds(const Scene& scene, const std::vector<Object>& objects);
 bool hasTransparency(const Scene& scene, const std::vector<Object>& objects);
 
 // Computes flat normals by unwelding (every triangle gets its own three vertices, with their
-// texture coordinates and colours).
+// texture coordinates and colours; tangents are dropped, as glTF requires).
 void makeFlatNormals(Mesh& mesh);
 
 }  // namespace strata

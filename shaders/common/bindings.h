@@ -16,8 +16,12 @@ GPU_CONST uint BIND_SOURCE = 0u;          // texture unit: the image a full-scre
 // Texture unit of a layered impostor's atlas (render/stand_in.hpp, common/scene_main.glsl); above
 // every technique's units (dual-2p reaches 19) so a stand-in draws inside any pass.
 GPU_CONST uint BIND_IMPOSTOR_ATLAS = 20u;
-// Texture unit of a material's base colour texture (common/material.glsl), above them too.
+// Texture units of a material's textures (common/material.glsl), above them too.
 GPU_CONST uint BIND_BASE_COLOR_TEXTURE = 21u;
+GPU_CONST uint BIND_METALLIC_ROUGHNESS_TEXTURE = 22u;
+GPU_CONST uint BIND_NORMAL_TEXTURE = 23u;
+GPU_CONST uint BIND_OCCLUSION_TEXTURE = 24u;
+GPU_CONST uint BIND_EMISSIVE_TEXTURE = 25u;
 
 // Vertex attribute locations of the scene vertex stage (common/scene.vert.glsl,
 // render/gpu_scene.cpp). 2 is the stand-in's impostor coordinates (render/stand_in.hpp).
@@ -26,6 +30,7 @@ GPU_CONST uint ATTRIB_NORMAL = 1u;
 GPU_CONST uint ATTRIB_TEXCOORD0 = 3u;
 GPU_CONST uint ATTRIB_TEXCOORD1 = 4u;
 GPU_CONST uint ATTRIB_COLOR = 5u;
+GPU_CONST uint ATTRIB_TANGENT = 6u;
 
 // Compute resolves run square groups of this many pixels a side; the host rounds the
 // dispatch up to whole groups.

@@ -1,45 +1,122 @@
-// A fragment's base colour and alpha as the glTF material defines them: factor x base colour
-// texture x COLOR_0 (common/shading_model.h). Which parts exist is decided when the program is
-// built, per material (render/scene_program.hpp, SceneProgram::variant): a factor-only material
-// is drawn by a build with no texture fetch, no vertex colour and no branch.
-//   STRATA_BASE_COLOR_TEXTURE  the material has a base colour texture (sRGB, decoded by the sampler)
-//   STRATA_VERTEX_COLOR        the mesh has COLOR_0
-//   STRATA_ALPHA_MASK          the material is MASK: common/scene_main.glsl discards below the cutoff
+// A fragment's material inputs as the glTF material defines them (common/shading_model.h does
+// the arithmetic, shared with the CPU reference): base colour and alpha (factor x base colour
+// texture x COLOR_0), metallic and roughness, occlusion, emission, and the normal-mapped normal.
+// Which parts exist is decided when the program is built, per material
+// (render/scene_program.hpp, SceneProgram::variant): a factor-only material is drawn by a build
+// with no texture fetch, no vertex colour and no branch.
+//   STRATA_BASE_COLOR_TEXTURE          base colour texture (sRGB, decoded by the GL_SRGB8_ALPHA8 texture)
+//   STRATA_VERTEX_COLOR                the mesh has COLOR_0
+//   STRATA_METALLIC_ROUGHNESS_TEXTURE  metallic (blue) and roughness (green), linear
+//   STRATA_NORMAL_TEXTURE              tangent-space normal map, linear; the mesh's tangents
+//   STRATA_OCCLUSION_TEXTURE           ambient occlusion (red), linear
+//   STRATA_EMISSIVE_TEXTURE            emission (sRGB)
+//   STRATA_ALPHA_MASK                  MASK: common/scene_main.glsl discards below the cutoff
+//   STRATA_UNLIT                       KHR_materials_unlit (common/surface.glsl skips the light)
 #ifndef STRATA_MATERIAL_GLSL
 #define STRATA_MATERIAL_GLSL
 #include "bindings.h"
 #include "shading_model.h"
+#include "material_features.glsl"
 
 uniform vec3 uBaseColor;
 uniform float uAlpha;
 uniform float uAlphaCutoff;
+uniform float uMetallic;
+uniform float uRoughness;
+uniform vec3 uEmissive;  // emissiveFactor x KHR_materials_emissive_strength
 
-#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
+#ifdef STRATA_MATERIAL_VARYING
 // Written by common/scene.vert.glsl (and passed on by a geometry stage under the same name).
 in MaterialVarying {
     vec2 texCoord0;
     vec2 texCoord1;
     vec4 color;
+#ifdef STRATA_NORMAL_TEXTURE
+    vec4 tangent;  // world space, w the bitangent's sign
+#endif
 } vMaterial;
+
+// A texture's coordinate: its TEXCOORD set, through its KHR_texture_transform.
+vec2 materialTexCoord(mat3 transform, int texCoord) {
+    return transformTexCoord(transform, texCoord == 0 ? vMaterial.texCoord0 : vMaterial.texCoord1);
+}
 #endif
 
 #ifdef STRATA_BASE_COLOR_TEXTURE
 layout(binding = BIND_BASE_COLOR_TEXTURE) uniform sampler2D uBaseColorTexture;
-uniform mat3 uBaseColorTransform;  // KHR_texture_transform
-uniform int uBaseColorTexCoord;    // which TEXCOORD set
+uniform mat3 uBaseColorTransform;
+uniform int uBaseColorTexCoord;
+#endif
+#ifdef STRATA_METALLIC_ROUGHNESS_TEXTURE
+layout(binding = BIND_METALLIC_ROUGHNESS_TEXTURE) uniform sampler2D uMetallicRoughnessTexture;
+uniform mat3 uMetallicRoughnessTransform;
+uniform int uMetallicRoughnessTexCoord;
+#endif
+#ifdef STRATA_NORMAL_TEXTURE
+layout(binding = BIND_NORMAL_TEXTURE) uniform sampler2D uNormalTexture;
+uniform mat3 uNormalTransform;
+uniform int uNormalTexCoord;
+uniform float uNormalScale;
+#endif
+#ifdef STRATA_OCCLUSION_TEXTURE
+layout(binding = BIND_OCCLUSION_TEXTURE) uniform sampler2D uOcclusionTexture;
+uniform mat3 uOcclusionTransform;
+uniform int uOcclusionTexCoord;
+uniform float uOcclusionStrength;
+#endif
+#ifdef STRATA_EMISSIVE_TEXTURE
+layout(binding = BIND_EMISSIVE_TEXTURE) uniform sampler2D uEmissiveTexture;
+uniform mat3 uEmissiveTransform;
+uniform int uEmissiveTexCoord;
 #endif
 
 vec4 materialBaseColor() {
     vec4 texel = vec4(1.0);
     vec4 vertexColor = vec4(1.0);
 #ifdef STRATA_BASE_COLOR_TEXTURE
-    vec2 uv = uBaseColorTexCoord == 0 ? vMaterial.texCoord0 : vMaterial.texCoord1;
-    texel = texture(uBaseColorTexture, transformTexCoord(uBaseColorTransform, uv));
+    texel = texture(uBaseColorTexture, materialTexCoord(uBaseColorTransform, uBaseColorTexCoord));
 #endif
 #ifdef STRATA_VERTEX_COLOR
     vertexColor = vMaterial.color;
 #endif
     return combineBaseColor(vec4(uBaseColor, uAlpha), texel, vertexColor);
+}
+
+// Metallic (x) and roughness (y): the factors times the texture's blue and green channels.
+vec2 materialMetallicRoughness() {
+    vec2 mr = vec2(uMetallic, uRoughness);
+#ifdef STRATA_METALLIC_ROUGHNESS_TEXTURE
+    vec4 texel = texture(uMetallicRoughnessTexture, materialTexCoord(uMetallicRoughnessTransform, uMetallicRoughnessTexCoord));
+    mr *= vec2(texel.b, texel.g);
+#endif
+    return mr;
+}
+
+float materialOcclusion() {
+#ifdef STRATA_OCCLUSION_TEXTURE
+    return occlusionOf(texture(uOcclusionTexture, materialTexCoord(uOcclusionTransform, uOcclusionTexCoord)).r,
+                       uOcclusionStrength);
+#else
+    return 1.0;
+#endif
+}
+
+vec3 materialEmissive() {
+#ifdef STRATA_EMISSIVE_TEXTURE
+    return uEmissive * texture(uEmissiveTexture, materialTexCoord(uEmissiveTransform, uEmissiveTexCoord)).rgb;
+#else
+    return uEmissive;
+#endif
+}
+
+// The shading normal: `normal` (the interpolated one) bent by the normal texture.
+vec3 materialNormal(vec3 normal) {
+#ifdef STRATA_NORMAL_TEXTURE
+    vec3 texel = texture(uNormalTexture, materialTexCoord(uNormalTransform, uNormalTexCoord)).rgb;
+    return normalFromMap(normal, vMaterial.tangent, texel, uNormalScale);
+#else
+    return normal;
+#endif
 }
 
 #endif

@@ -10,16 +10,24 @@ layout(location = 2) in vec4 inImpostor;
 #endif
 // A material's texture coordinates and vertex colour (common/material.glsl), in the builds
 // whose material uses them; a mesh without TEXCOORD_1 leaves that attribute disabled (0, 0).
+// A mesh without COLOR_0 leaves that attribute disabled too: (0, 0, 0, 1), which GpuScene
+// never lets reach a build with STRATA_VERTEX_COLOR. Tangents come with a normal texture.
 #include "bindings.h"
-#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
-#define STRATA_MATERIAL_VARYING
+#include "material_features.glsl"
+#ifdef STRATA_MATERIAL_VARYING
 layout(location = ATTRIB_TEXCOORD0) in vec2 inTexCoord0;
 layout(location = ATTRIB_TEXCOORD1) in vec2 inTexCoord1;
 layout(location = ATTRIB_COLOR) in vec4 inColor;
+#ifdef STRATA_NORMAL_TEXTURE
+layout(location = ATTRIB_TANGENT) in vec4 inTangent;
+#endif
 out MaterialVarying {
     vec2 texCoord0;
     vec2 texCoord1;
     vec4 color;
+#ifdef STRATA_NORMAL_TEXTURE
+    vec4 tangent;
+#endif
 } vMaterial;
 #endif
 
@@ -52,6 +60,10 @@ void main() {
     vMaterial.texCoord0 = inTexCoord0;
     vMaterial.texCoord1 = inTexCoord1;
     vMaterial.color = inColor;
+#ifdef STRATA_NORMAL_TEXTURE
+    // Tangents transform with the surface, as positions do (not by the normal matrix).
+    vMaterial.tangent = vec4(mat3(uModel) * inTangent.xyz, inTangent.w);
+#endif
 #endif
     gl_Position = uViewProj * world;
 }

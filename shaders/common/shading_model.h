@@ -11,10 +11,15 @@
 #define GPU_FN inline
 namespace strata::gpu {
 using glm::abs;
+using glm::cross;
 using glm::dot;
+using glm::exp2;
 using glm::length;
+using glm::max;
+using glm::min;
 using glm::mix;
 using glm::pow;
+using glm::sqrt;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;
@@ -26,14 +31,101 @@ using glm::mat3;
 
 GPU_NAMESPACE_BEGIN
 
-// Two-sided Lambert with an ambient floor, so back faces of transparent objects are lit like
-// front faces.
+// The lighting: a uniform environment of radiance kAmbient (so a white Lambert surface in it
+// alone reflects kAmbient, as Strata's shading always had) plus lights. Strata's default rig is
+// one directional light (Scene::lightDirection) whose irradiance makes a white rough dielectric
+// facing it reach about 1: kDefaultLightIrradiance.
 GPU_CONST float kAmbient = 0.3f;
+GPU_CONST float kPi = 3.14159265358979f;
+GPU_CONST float kDefaultLightIrradiance = (1.0f - kAmbient) * kPi;
+// Roughness below this is taken as this: a mirror's highlight (alpha -> 0) makes D(alpha) grow
+// as 1 / alpha^2 without bound; at 0.089 (Filament's floor for half-float targets) a metal's
+// highlight under the default light stays below 2e4, far inside fp16's 65504, so an fp16 layer
+// store cannot overflow to infinity.
+GPU_CONST float kMinRoughness = 0.089f;
+// Dielectric reflectance at normal incidence: an index of refraction of 1.5 (glTF appendix B).
+GPU_CONST float kDielectricF0 = 0.04f;
 
-GPU_FN vec3 shadeSurface(vec3 baseColor, vec3 normal, vec3 lightDirection) {
+// glTF 2.0 appendix B, the metallic-roughness BRDF, with alpha = roughness^2.
+// Trowbridge-Reitz (GGX) distribution D, for n.h > 0.
+GPU_FN float ggxDistribution(float alpha, float nDotH) {
+    float a2 = alpha * alpha;
+    float d = nDotH * nDotH * (a2 - 1.0f) + 1.0f;
+    return a2 / (kPi * d * d);
+}
+
+// Smith's separable masking-shadowing G = G1(l) G1(v) folded with the BRDF's
+// 1 / (4 |n.l| |n.v|): V = G / (4 |n.l| |n.v|), the appendix's form.
+GPU_FN float smithVisibility(float alpha, float nDotL, float nDotV) {
+    float a2 = alpha * alpha;
+    float l = nDotL + sqrt(a2 + (1.0f - a2) * nDotL * nDotL);
+    float v = nDotV + sqrt(a2 + (1.0f - a2) * nDotV * nDotV);
+    return 1.0f / (l * v);
+}
+
+GPU_FN vec3 schlickFresnel(vec3 f0, float vDotH) {
+    float m = 1.0f - vDotH;
+    float m2 = m * m;
+    return f0 + (vec3(1.0f) - f0) * (m2 * m2 * m);
+}
+
+// The normal a shading point uses: the surface's, turned to face the eye (a back face seen
+// through a transparent front is shaded as the side the eye sees); a degenerate normal (zero
+// length) faces the eye.
+GPU_FN vec3 normalFacingEye(vec3 normal, vec3 toEye) {
     float len = length(normal);
-    float ndl = len > 0.0f ? abs(dot(normal / len, lightDirection)) : 1.0f;
-    return baseColor * (kAmbient + (1.0f - kAmbient) * ndl);
+    if (!(len > 0.0f)) return toEye;
+    vec3 n = normal / len;
+    return dot(n, toEye) < 0.0f ? -n : n;
+}
+
+// Radiance reflected towards `toEye` from a light arriving from `toLight` with `irradiance` (on
+// a surface facing it): (f_diffuse + f_specular) E (n.l), with
+//   c_diff = base (1 - metallic), F0 = mix(0.04, base, metallic), F = Schlick(F0, v.h),
+//   f_diffuse = (1 - F) c_diff / pi,  f_specular = F D V.
+// All directions are unit vectors; `n` faces the eye.
+GPU_FN vec3 reflectedLight(vec3 baseColor, float metallic, float roughness, vec3 n, vec3 toEye, vec3 toLight,
+                           vec3 irradiance) {
+    float nDotL = dot(n, toLight);
+    if (!(nDotL > 0.0f)) return vec3(0.0f);
+    float nDotV = max(dot(n, toEye), 1e-4f);
+    // toLight + toEye is zero only for a light straight behind the point seen, which n.l > 0 and
+    // n.v >= 0 exclude but for grazing round-off; then the half vector is the normal.
+    vec3 sum = toLight + toEye;
+    float sumLength = length(sum);
+    vec3 h = sumLength > 1e-6f ? sum / sumLength : n;
+    float r = max(roughness, kMinRoughness);
+    float alpha = r * r;
+    vec3 f0 = mix(vec3(kDielectricF0), baseColor, metallic);
+    vec3 f = schlickFresnel(f0, max(dot(toEye, h), 0.0f));
+    vec3 diffuse = (vec3(1.0f) - f) * (baseColor * (1.0f - metallic)) / kPi;
+    vec3 specular = f * (ggxDistribution(alpha, max(dot(n, h), 0.0f)) * smithVisibility(alpha, nDotL, nDotV));
+    return (diffuse + specular) * irradiance * nDotL;
+}
+
+// What the uniform environment reflects: the diffuse colour times the environment radiance,
+// plus the specular lobe's directional albedo for F0, approximated analytically (Karis's fit to
+// the split-sum table, "Physically Based Shading on Mobile", 2014; within 0.16 of the integral
+// of this BRDF's lobe, tests/shading_model_test.cpp); both scaled by the
+// material's ambient occlusion, which glTF applies to indirect light only.
+GPU_FN vec3 environmentLight(vec3 baseColor, float metallic, float roughness, float occlusion, float nDotV) {
+    float r = max(roughness, kMinRoughness);
+    vec4 c = vec4(-1.0f, -0.0275f, -0.572f, 0.022f) * r + vec4(1.0f, 0.0425f, 1.04f, -0.04f);
+    float a004 = min(c.x * c.x, exp2(-9.28f * nDotV)) * c.x + c.y;
+    vec2 ab = vec2(-1.04f, 1.04f) * a004 + vec2(c.z, c.w);
+    vec3 f0 = mix(vec3(kDielectricF0), baseColor, metallic);
+    vec3 specularAlbedo = f0 * ab.x + vec3(ab.y);
+    return (baseColor * (1.0f - metallic) + specularAlbedo) * (kAmbient * occlusion);
+}
+
+// The shaded colour of a lit material under the environment and one light: what every pass and
+// the CPU reference compute per fragment (a file's KHR_lights_punctual lights add more
+// reflectedLight terms). `emissive` is emissiveFactor x texture x emissive strength.
+GPU_FN vec3 shadeSurface(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive,
+                         vec3 normal, vec3 toEye, vec3 toLight, vec3 lightIrradiance) {
+    vec3 n = normalFacingEye(normal, toEye);
+    return environmentLight(baseColor, metallic, roughness, occlusion, max(dot(n, toEye), 0.0f)) +
+           reflectedLight(baseColor, metallic, roughness, n, toEye, toLight, lightIrradiance) + emissive;
 }
 
 // The sRGB transfer function's inverse (glTF colour textures; the GL specification's decode for
@@ -53,6 +145,32 @@ GPU_FN vec2 transformTexCoord(mat3 transform, vec2 uv) {
 // colour, so the product is the factor alone.
 GPU_FN vec4 combineBaseColor(vec4 factor, vec4 texel, vec4 vertexColor) {
     return factor * texel * vertexColor;
+}
+
+// The occlusion texture's red channel, mixed in by the material's strength (glTF 3.9.3).
+GPU_FN float occlusionOf(float texelRed, float strength) {
+    return 1.0f + strength * (texelRed - 1.0f);
+}
+
+// A normal texture's texel (linear, in [0, 1]) as a direction in the frame of the interpolated
+// normal and tangent (glTF 3.9.3): m = (2 texel - 1) scaled by `scale` in x and y, taken along
+// the tangent, the bitangent cross(n, t) * w and the normal. The tangent is made orthogonal to
+// the normal first (interpolation bends them apart); a tangent along the normal, or a zero
+// normal, leaves the normal as it was.
+GPU_FN vec3 normalFromMap(vec3 normal, vec4 tangent, vec3 texel, float scale) {
+    float len = length(normal);
+    if (!(len > 0.0f)) return normal;
+    vec3 n = normal / len;
+    vec3 t = vec3(tangent.x, tangent.y, tangent.z);
+    t = t - n * dot(n, t);
+    float tLen = length(t);
+    if (!(tLen > 1e-12f)) return n;
+    t = t / tLen;
+    vec3 b = cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+    vec3 m = (texel * 2.0f - vec3(1.0f)) * vec3(scale, scale, 1.0f);
+    vec3 mapped = t * m.x + b * m.y + n * m.z;
+    float mappedLen = length(mapped);
+    return mappedLen > 0.0f ? mapped / mappedLen : n;
 }
 
 // MASK: the fragment exists where alpha >= alphaCutoff (glTF 2.0, 3.9.4).

@@ -1,16 +1,16 @@
 // Per-object material uniforms and the shaded colour of the current fragment.
 #include "bindings.h"
 #include "shading.glsl"
-#include "material.glsl"
+#include "shade_material.glsl"
 
 uniform uint uObjectId;
-uniform vec3 uLightDir;
 // The volumetric model (Barta & Kovacs; Material::tau and albedo): attenuation per metre for
 // each channel and the single-scattering albedo, both zero for a thin surface.
 uniform vec3 uTau;
 uniform vec3 uAlbedo;
 
 in vec3 vWorldNormal;
+in vec3 vWorldPosition;
 
 // The interpolated mesh normal, or for a stand-in the impostor texel's (common/scene_main.glsl).
 vec3 surfaceNormal() {
@@ -20,7 +20,7 @@ vec3 surfaceNormal() {
 // The shaded colour and the alpha of the fragment (common/material.glsl).
 vec4 surfaceColor() {
     vec4 base = materialBaseColor();
-    return vec4(shadeSurface(base.rgb, surfaceNormal(), uLightDir), base.a);
+    return vec4(shadeMaterial(base.rgb, surfaceNormal(), vWorldPosition), base.a);
 }
 
 // What `distance` metres of this object's medium let through, per channel: exp(-tau d). Finite,

@@ -67,7 +67,11 @@ PointSampling PointSamples::sample(const FrameContext& frame, const PassParamete
     // Colours by object id, for the point pass.
     const auto& objects = frame.scene.objects();
     std::vector<glm::vec4> colors(std::max<std::size_t>(objects.size(), 1), glm::vec4(0.0f));
-    for (const Object& o : objects) colors[std::size_t(o.id)] = glm::vec4(frame.scene.scene().materials[o.material].baseColor, 1.0f);
+    // Alpha 0 marks an unlit material (shaders/oit/screendoor/points.frag.glsl).
+    for (const Object& o : objects) {
+        const Material& m = frame.scene.scene().materials[o.material];
+        colors[std::size_t(o.id)] = glm::vec4(m.baseColor, m.unlit ? 0.0f : 1.0f);
+    }
     gl::allocateBuffer(colors_, colors.size() * sizeof(glm::vec4), GL_DYNAMIC_DRAW, "screendoor-object-sw colours");
     glNamedBufferSubData(colors_.id(), 0, GLsizeiptr(colors.size() * sizeof(glm::vec4)), colors.data());
 
@@ -92,6 +96,8 @@ void PointSamples::draw(const FrameContext& tileFrame) const {
     const GLuint p = drawProgram_.id();
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(tileFrame.viewProjection));
     glProgramUniform3fv(p, glGetUniformLocation(p, "uLightDir"), 1, glm::value_ptr(tileFrame.scene.scene().lightDirection));
+    const glm::vec4 eye = eyeUniform(tileFrame.viewProjection);
+    glProgramUniform4fv(p, glGetUniformLocation(p, "uEye"), 1, glm::value_ptr(eye));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_POINTS, points_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_OBJECT_COLORS, colors_.id());
     glUseProgram(p);

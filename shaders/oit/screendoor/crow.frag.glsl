@@ -11,8 +11,6 @@
 // Blended "over" (SRC_ALPHA, ONE_MINUS_SRC_ALPHA), objects sorted back to front.
 #include "surface.glsl"
 
-in vec3 vWorldPosition;
-
 uniform vec3 uEyePosition;
 uniform float uAlphaMin;        // face-on opacity (ignored when uMaterialAlpha)
 uniform float uAlphaMax;        // opacity at the silhouette

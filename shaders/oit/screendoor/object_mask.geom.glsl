@@ -35,21 +35,29 @@ out ImpostorVarying {
 } impostorOut;
 #endif
 
-#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
+#include "material_features.glsl"
+#ifdef STRATA_MATERIAL_VARYING
 // Passed on to common/material.glsl under the same block name.
 in MaterialVarying {
     vec2 texCoord0;
     vec2 texCoord1;
     vec4 color;
+#ifdef STRATA_NORMAL_TEXTURE
+    vec4 tangent;
+#endif
 } materialIn[];
 out MaterialVarying {
     vec2 texCoord0;
     vec2 texCoord1;
     vec4 color;
+#ifdef STRATA_NORMAL_TEXTURE
+    vec4 tangent;
+#endif
 } materialOut;
 #endif
 
 out vec3 gWorldNormal;
+out vec3 gWorldPosition;
 out vec2 gMaskCoord;  // mask texels
 
 void main() {
@@ -65,14 +73,18 @@ void main() {
     for (int i = 0; i < 3; ++i) {
         gl_Position = gl_in[i].gl_Position;
         gWorldNormal = vWorldNormal[i];
+        gWorldPosition = vWorldPosition[i];
 #ifdef STRATA_IMPOSTOR
         impostorOut.uv = impostorIn[i].uv;
         impostorOut.layer = impostorIn[i].layer;
 #endif
-#if defined(STRATA_BASE_COLOR_TEXTURE) || defined(STRATA_VERTEX_COLOR)
+#ifdef STRATA_MATERIAL_VARYING
         materialOut.texCoord0 = materialIn[i].texCoord0;
         materialOut.texCoord1 = materialIn[i].texCoord1;
         materialOut.color = materialIn[i].color;
+#ifdef STRATA_NORMAL_TEXTURE
+        materialOut.tangent = materialIn[i].tangent;
+#endif
 #endif
         gMaskCoord = offset + coords[i];
         EmitVertex();

@@ -8,11 +8,13 @@ layout(std430, binding = BIND_POINTS) readonly buffer Points { ScreenDoorPoint p
 uniform mat4 uViewProj;
 
 out vec3 vPointNormal;
+out vec3 vPointPosition;
 flat out uint vObjectId;
 
 void main() {
     ScreenDoorPoint p = points[gl_VertexID];
     gl_Position = uViewProj * vec4(p.x, p.y, p.z, 1.0);
     vPointNormal = unpackSnorm4x8(p.normal).xyz;
+    vPointPosition = vec3(p.x, p.y, p.z);
     vObjectId = p.object;
 }

@@ -17,11 +17,10 @@
 #include "shading.glsl"
 // alpha_mask.glsl brings random_hash.glsl (hashUint, hashUnit) too.
 #include "alpha_mask.glsl"
-#include "material.glsl"
-
-uniform vec3 uLightDir;
+#include "shade_material.glsl"
 
 in vec3 gWorldNormal;
+in vec3 gWorldPosition;
 in vec2 gMaskCoord;
 
 layout(location = 0) out vec4 outColor;
@@ -60,5 +59,5 @@ void main() {
 #endif
     vec4 base = materialBaseColor();  // before the discard: a texture fetch takes derivatives too
     if (!footprintKeeps(gMaskCoord, dx, dy, base.a)) discard;
-    outColor = vec4(shadeSurface(base.rgb, kStandIn ? strataImpostorNormal : gWorldNormal, uLightDir), 1.0);
+    outColor = vec4(shadeMaterial(base.rgb, kStandIn ? strataImpostorNormal : gWorldNormal, gWorldPosition), 1.0);
 }
