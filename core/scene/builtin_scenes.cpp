@@ -330,11 +330,16 @@ Scene makeDefaultScene() {
               "foliage card");
 
     // Interpenetrating glass: a box turned on the left pedestal with a sphere through its corner.
-    int glass = s.addMaterial(transparent("glass", {0.6f, 0.85f, 0.95f}, 0.3f));
+    // Glossy: the light's highlight shows on every glass surface (roughness 0.15).
+    Material glassMaterial = transparent("glass", {0.6f, 0.85f, 0.95f}, 0.3f);
+    glassMaterial.roughness = 0.15f;
+    int glass = s.addMaterial(glassMaterial);
     placeMesh(s, s.addMesh(makeBox({-0.45f, 0, -0.45f}, {0.45f, 0.9f, 0.45f})), glass,
               glm::rotate(glm::translate(identity, {-2.0f, 0.8f, -1.5f}), glm::radians(30.0f), glm::vec3(0, 1, 0)),
               "glass box");
-    placeMesh(s, s.addMesh(makeSphere(0.45f, 32, 16)), s.addMaterial(transparent("glass sphere", {0.85f, 0.6f, 0.9f}, 0.35f)),
+    Material glassSphere = transparent("glass sphere", {0.85f, 0.6f, 0.9f}, 0.35f);
+    glassSphere.roughness = 0.15f;
+    placeMesh(s, s.addMesh(makeSphere(0.45f, 32, 16)), s.addMaterial(glassSphere),
               glm::translate(identity, {-1.6f, 1.65f, -1.2f}), "glass sphere");
     // Two intersecting volumes on the right pedestal (media for ll-volume / abuffer-volume).
     int sphere = s.addMesh(makeSphere(0.5f, 40, 20));
@@ -351,7 +356,11 @@ Scene makeDefaultScene() {
 
     // The opaque room: floor, back and left walls, two pedestals.
     int wallMat = s.addMaterial(opaque("wall", {0.75f, 0.72f, 0.66f}));
-    int pedestalMat = s.addMaterial(opaque("pedestal", {0.3f, 0.32f, 0.38f}));
+    // Brushed steel: a metal (no diffuse term, a tinted highlight) beside the dielectrics.
+    Material steel = opaque("pedestal", {0.62f, 0.63f, 0.66f});
+    steel.metallic = 1.0f;
+    steel.roughness = 0.35f;
+    int pedestalMat = s.addMaterial(steel);
     placeMesh(s, s.addMesh(makeBox({-5, -0.2f, -5}, {5, 0, 5})), s.addMaterial(opaque("floor", {0.45f, 0.42f, 0.4f})),
               identity, "floor");
     placeMesh(s, s.addMesh(makeBox({-5, 0, -5.2f}, {5, 4, -5})), wallMat, identity, "back wall");
