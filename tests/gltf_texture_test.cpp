@@ -4,6 +4,7 @@
 #include "gltf_test_builder.hpp"
 
 #include "scene/gltf_loader.hpp"
+#include "scene/lights.hpp"
 #include "scene/image_decode.hpp"
 
 #include <doctest/doctest.h>
@@ -290,10 +291,10 @@ TEST_CASE("gltf: extensionsRequired naming an extension Strata does not implemen
     GltfBuilder b;
     int pos = b.positions(kTrianglePositions);
     b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}}}));
-    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
-    b.doc["extensionsRequired"] = {"KHR_lights_punctual"};
+    b.doc["extensionsUsed"] = {"EXT_meshopt_compression"};
+    b.doc["extensionsRequired"] = {"EXT_meshopt_compression"};
     auto file = b.writeGltf("required");
-    CHECK_THROWS_WITH_AS(loadGltf(file), (file.string() + ": requires extension KHR_lights_punctual, which Strata "
+    CHECK_THROWS_WITH_AS(loadGltf(file), (file.string() + ": requires extension EXT_meshopt_compression, which Strata "
                                                           "does not implement").c_str(),
                          LoadError);
     b.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_foo"};
@@ -600,4 +601,36 @@ TEST_CASE("gltf: out-of-range PBR factors are clamped and said; a bad emissive s
     CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("pbr-strength")),
                          doctest::Contains("KHR_materials_emissive_strength: emissiveStrength must be a number in [0, 10000]"),
                          LoadError);
+}
+
+TEST_CASE("gltf: KHR_lights_punctual lights are read and placed by their nodes; bad lights are refused") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}}}));
+    b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    b.doc["extensions"] = {{"KHR_lights_punctual",
+                            {{"lights", {{{"type", "point"}, {"intensity", 20.0}, {"color", {1.0, 0.5, 0.0}}, {"range", 8.0}},
+                                         {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.4}}}}}}}}};
+    b.doc["nodes"].push_back({{"translation", {0.0, 3.0, 0.0}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    b.doc["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("lights"), report);
+    CHECK(report.warnings.empty());
+    REQUIRE(s.lights.size() == 2);
+    CHECK(s.lights[0].type == Light::Type::Point);
+    CHECK(s.lights[0].intensity == 20.0f);
+    CHECK(s.lights[0].color == glm::vec3(1.0f, 0.5f, 0.0f));
+    CHECK(s.lights[0].range == 8.0f);
+    CHECK(s.lights[1].type == Light::Type::Spot);
+    CHECK(s.lights[1].outerConeAngle == doctest::Approx(0.4f));
+    const std::vector<gpu::PunctualLight> placed = placeLights(s);
+    REQUIRE(placed.size() == 2);
+    CHECK(placed[0].positionRange == glm::vec4(0.0f, 3.0f, 0.0f, 8.0f));
+
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.5;
+    CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("lights-cone")),
+                         doctest::Contains("light 1: spot cone angles must satisfy 0 <= inner < outer <= pi/2"), LoadError);
+    b.doc["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.2;
+    b.doc["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 7;
+    CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("lights-index")), doctest::Contains("light 7"), LoadError);
 }

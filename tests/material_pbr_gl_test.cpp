@@ -10,6 +10,8 @@
 #include "reference/raycast.hpp"
 #include "scene/tangents.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <doctest/doctest.h>
 
 using namespace strata;
@@ -173,4 +175,35 @@ TEST_CASE("an unlit material is its base colour on every exact technique") {
         CHECK(got.r == doctest::Approx(0.5f * 0.3f + 0.5f * under.r).epsilon(1e-4));
         CHECK(got.b == doctest::Approx(0.5f * 0.9f + 0.5f * under.b).epsilon(1e-4));
     }
+}
+
+TEST_CASE("a scene's punctual lights replace the default rig, alike on every exact technique and the reference") {
+    Scene s = litScene();
+    addObject(s, quad(-1, 1, 0), pbrBlend({0.8f, 0.7f, 0.6f, 0.6f}, 0.2f, 0.4f));
+    Light point;
+    point.type = Light::Type::Point;
+    point.intensity = 6.0f;
+    point.color = {1.0f, 0.8f, 0.6f};
+    s.lights.push_back(point);
+    Light spot;
+    spot.type = Light::Type::Spot;
+    spot.intensity = 8.0f;
+    spot.range = 5.0f;
+    spot.innerConeAngle = 0.1f;
+    spot.outerConeAngle = 0.5f;
+    s.lights.push_back(spot);
+    Node pointNode;
+    pointNode.local = glm::translate(glm::mat4(1.0f), {-0.6f, 0.4f, 1.0f});
+    pointNode.light = 0;
+    s.addNode(pointNode);
+    Node spotNode;  // above the quad's right half, shining down -Z onto it
+    spotNode.local = glm::translate(glm::mat4(1.0f), {0.5f, -0.3f, 1.5f});
+    spotNode.light = 1;
+    s.addNode(spotNode);
+    const Image lit = checkAgainstReference(s);
+    // The default rig alone looks otherwise: the lights are used, not added to it or ignored.
+    Scene rig = s;
+    rig.lights.clear();
+    const Image rigImage = checkAgainstReference(rig);
+    CHECK(compareImages(lit, rigImage).maxAbsError > 0.05f);
 }

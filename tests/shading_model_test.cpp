@@ -2,7 +2,10 @@
 // against values worked by hand, its energy against numerical integration, its extremes, and
 // the normal-map frame and derived tangents it reads.
 #include "render/shading.hpp"
+#include "scene/lights.hpp"
 #include "scene/tangents.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <doctest/doctest.h>
 
@@ -195,4 +198,61 @@ TEST_CASE("derived tangents follow increasing u, with w = -1 where the UV layout
         CHECK(glm::length(glm::vec3(t)) == doctest::Approx(1.0f));
         CHECK(t.z == doctest::Approx(0.0f));
     }
+}
+
+TEST_CASE("punctual lights: inverse-square point light, its range window, the spot cone, placement by node") {
+    Scene s;
+    s.materials.push_back(Material{});
+    Light point;
+    point.type = Light::Type::Point;
+    point.intensity = 10.0f;
+    point.color = {1.0f, 0.5f, 0.25f};
+    s.lights.push_back(point);
+    Light spot;
+    spot.type = Light::Type::Spot;
+    spot.intensity = 4.0f;
+    spot.innerConeAngle = 0.0f;
+    spot.outerConeAngle = float(3.14159265358979 / 4.0);
+    s.lights.push_back(spot);
+    Node a;
+    a.local = glm::translate(glm::mat4(1.0f), {0.0f, 2.0f, 0.0f});
+    a.light = 0;
+    s.addNode(a);
+    Node b;  // at (5, 0, 0), turned so its -Z points down -Y
+    b.local = glm::rotate(glm::translate(glm::mat4(1.0f), {5.0f, 0.0f, 0.0f}), float(-3.14159265358979 / 2.0),
+                          glm::vec3(1.0f, 0.0f, 0.0f));
+    b.light = 1;
+    s.addNode(b);
+    const std::vector<gpu::PunctualLight> lights = placeLights(s);
+    REQUIRE(lights.size() == 2);
+
+    // 10 cd at 2 m: 2.5 lux, times the colour; the direction towards it is +y.
+    glm::vec3 e = gpu::lightIrradianceAt(lights[0], glm::vec3(0.0f));
+    CHECK(e.r == doctest::Approx(2.5f));
+    CHECK(e.g == doctest::Approx(1.25f));
+    CHECK(gpu::lightToward(lights[0], glm::vec3(0.0f)).y == doctest::Approx(1.0f));
+    // A range of 4 windows it by 1 - (d / range)^4 = 1 - 1/16, and to 0 at the range.
+    s.lights[0].range = 4.0f;
+    const std::vector<gpu::PunctualLight> ranged = placeLights(s);
+    CHECK(gpu::lightIrradianceAt(ranged[0], glm::vec3(0.0f)).r == doctest::Approx(2.5f * (1.0f - 1.0f / 16.0f)));
+    CHECK(gpu::lightIrradianceAt(ranged[0], glm::vec3(0.0f, -2.5f, 0.0f)).r == 0.0f);
+
+    // The spot shines down from (5, 0, 0): full on its axis, (cos 30 - cos 45)^2 / (1 - cos 45)^2
+    // at 30 degrees off it, nothing past 45.
+    const glm::vec3 below(5.0f, -1.0f, 0.0f);
+    CHECK(gpu::lightIrradianceAt(lights[1], below).r == doctest::Approx(4.0f));
+    const float t30 = std::tan(float(3.14159265358979 / 6.0));
+    const float d2 = 1.0f + t30 * t30;
+    const float cone = (std::cos(float(3.14159265358979 / 6.0)) - std::cos(float(3.14159265358979 / 4.0))) /
+                       (1.0f - std::cos(float(3.14159265358979 / 4.0)));
+    CHECK(gpu::lightIrradianceAt(lights[1], glm::vec3(5.0f + t30, -1.0f, 0.0f)).r ==
+          doctest::Approx(4.0f / d2 * cone * cone).epsilon(1e-4));
+    CHECK(gpu::lightIrradianceAt(lights[1], glm::vec3(7.0f, -1.0f, 0.0f)).r == 0.0f);
+    // A scene without lights gets the default rig: one directional light along lightDirection.
+    s.lights.clear();
+    s.lightDirection = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
+    const std::vector<gpu::PunctualLight> rig = placeLights(s);
+    REQUIRE(rig.size() == 1);
+    CHECK(gpu::lightToward(rig[0], glm::vec3(3.0f)).x == doctest::Approx(std::sqrt(0.5f)));
+    CHECK(gpu::lightIrradianceAt(rig[0], glm::vec3(3.0f)).r == doctest::Approx(kDefaultLightIrradiance));
 }

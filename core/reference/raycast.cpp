@@ -3,6 +3,7 @@
 #include "render/depth_order.hpp"
 #include "render/shading.hpp"
 #include "render/volume_composite.hpp"
+#include "scene/lights.hpp"
 #include "scene/mesh_volume.hpp"
 #include "scene/texture_sampling.hpp"
 
@@ -270,10 +271,16 @@ glm::dvec4 interpolate(const std::vector<T>& values, const std::uint32_t* idx, c
     return h.b0 * glm::dvec4(values[idx[0]]) + h.b1 * glm::dvec4(values[idx[1]]) + h.b2 * glm::dvec4(values[idx[2]]);
 }
 
+// The hit point as the GPU interpolates it: the triangle's world-space (float) vertices.
+glm::vec3 interpolatedPosition(const PreparedObject& o, const std::uint32_t* idx, const TriangleHit& h) {
+    return glm::vec3(h.b0 * glm::dvec3(o.positions[idx[0]]) + h.b1 * glm::dvec3(o.positions[idx[1]]) +
+                     h.b2 * glm::dvec3(o.positions[idx[2]]));
+}
+
 // The shaded colour at a hit seen along `direction`: the material at the point (scene/
 // texture_sampling.hpp) through common/shading_model.h, as common/surface.glsl does per fragment.
-glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tri, const TriangleHit& h,
-                   const glm::vec3& baseColor, const glm::dvec3& direction) {
+glm::vec3 shadeHit(const Scene& scene, const std::vector<gpu::PunctualLight>& lights, const PreparedObject& o,
+                   std::uint32_t tri, const TriangleHit& h, const glm::vec3& baseColor, const glm::dvec3& direction) {
     const Material& material = *o.material;
     if (material.unlit) return baseColor;
     const Mesh& mesh = *o.mesh;
@@ -298,8 +305,16 @@ glm::vec3 shadeHit(const Scene& scene, const PreparedObject& o, std::uint32_t tr
     }
     const MaterialPoint m = materialAt(scene, material, mesh, tri, bary);
     const glm::vec3 toEye = glm::vec3(-glm::normalize(direction));
-    return shadeSurface(baseColor, m.metallic, m.roughness, m.occlusion, m.emissive, n, toEye, scene.lightDirection,
-                        glm::vec3(kDefaultLightIrradiance));
+    // common/lighting.glsl's shadeLit: the environment, emission and each light.
+    const glm::vec3 facing = gpu::normalFacingEye(n, toEye);
+    glm::vec3 color = gpu::environmentLight(baseColor, m.metallic, m.roughness, m.occlusion,
+                                            std::max(glm::dot(facing, toEye), 0.0f)) +
+                      m.emissive;
+    const glm::vec3 at = interpolatedPosition(o, idx, h);
+    for (const gpu::PunctualLight& light : lights)
+        color += gpu::reflectedLight(baseColor, m.metallic, m.roughness, facing, toEye, gpu::lightToward(light, at),
+                                     gpu::lightIrradianceAt(light, at));
+    return color;
 }
 
 }  // namespace
@@ -309,6 +324,7 @@ struct RaycastReference::Impl {
     RaycastOptions options;
     std::vector<PreparedObject> opaque;       // opaque and MASK-passing objects
     std::vector<PreparedObject> transparent;  // BLEND objects
+    std::vector<gpu::PunctualLight> lights;    // scene/lights.hpp, as GpuScene uploads them
     // options.volumes: each object's classification and medium, by object id, and the volumes
     // around the last ray origin seen (every ray of an image starts at the eye).
     struct Volume {
@@ -363,6 +379,7 @@ RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>
     : impl_(std::make_unique<Impl>()) {
     impl_->scene = &scene;
     impl_->options = options;
+    impl_->lights = placeLights(scene);
     for (const Object& obj : objects) {
         if (obj.mesh < 0 || obj.mesh >= int(scene.meshes.size()) || obj.material < 0 ||
             obj.material >= int(scene.materials.size()))
@@ -452,7 +469,7 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
         out.opaqueObject = best->id;
         out.opaquePrimitive = int(bestTri);
         out.opaqueColor =
-            shadeHit(scene, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)), direction);
+            shadeHit(scene, impl_->lights, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)), direction);
     }
 
     // Every transparent hit strictly nearer than the opaque one (the GPU tests GL_GREATER
@@ -470,7 +487,7 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
                 f.object = o.id;
                 f.primitive = int(tri);
                 const glm::vec4 base = baseColorAtHit(scene, o, tri, h);
-                f.color = shadeHit(scene, o, tri, h, glm::vec3(base), direction);
+                f.color = shadeHit(scene, impl_->lights, o, tri, h, glm::vec3(base), direction);
                 f.alpha = base.a;
                 f.frontFacing = frontFacing(o, tri, direction);
                 out.fragments.push_back(f);

@@ -1,6 +1,7 @@
 #include "render/gpu_scene.hpp"
 
 #include "common/bindings.h"
+#include "scene/lights.hpp"
 #include "scene/texture_sampling.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -168,6 +169,11 @@ GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(sce
         (scene_.materials[o.material].isTransparent() ? transparent_ : opaque_).push_back(o.id);
     }
     uploadTextures();
+    std::vector<gpu::PunctualLight> lights = placeLights(scene_);
+    lightCount_ = int(lights.size());
+    lights.resize(std::size_t(gpu::kMaxLights));  // the block's declared size
+    lights_ = gl::Buffer::create();
+    glNamedBufferStorage(lights_.id(), GLsizeiptr(lights.size() * sizeof(gpu::PunctualLight)), lights.data(), 0);
     for (const Object& o : objects_) {
         const Material& m = scene_.materials[std::size_t(o.material)];
         const Mesh& mesh = scene_.meshes[std::size_t(o.mesh)];
@@ -239,6 +245,12 @@ void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProj
     glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(scene_.lightDirection));
     const glm::vec4 eye = eyeUniform(viewProjection);
     glProgramUniform4fv(p.id(), p.eye, 1, glm::value_ptr(eye));
+    setLightUniforms(p.id(), p.lightCount);
+}
+
+void GpuScene::setLightUniforms(GLuint program, GLint countLocation) const {
+    glProgramUniform1i(program, countLocation, lightCount_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, gpu::BIND_LIGHTS, lights_.id());
 }
 
 void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {

@@ -68,8 +68,11 @@ public:
     // draws the object's triangles, or with `standIn` the stand-in's quads in their place.
     void draw(const SceneProgram& program, int objectIndex, const StandInDraw* standIn = nullptr) const;
 
-    // Uniforms every scene program shares for a frame.
+    // Uniforms every scene program shares for a frame (the lights' included).
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
+    // The scene's lights (scene/lights.hpp) for a program that shades through
+    // common/lighting.glsl: binds their block and sets uLightCount at `countLocation`.
+    void setLightUniforms(GLuint program, GLint countLocation) const;
 
     // The SceneFeature bits object `objectIndex` draws with (textures, vertex colours, MASK, unlit).
     unsigned materialFeatures(int objectIndex) const { return features_[std::size_t(objectIndex)]; }
@@ -98,6 +101,8 @@ private:
     std::vector<std::pair<Sampler, gl::Sampler>> samplers_;
     std::vector<std::array<int, kMaterialSlots>> materialSampler_;
     std::size_t textureBytes_ = 0;
+    gl::Buffer lights_;  // gpu::PunctualLight[kMaxLights], std140 (common/lighting.glsl)
+    int lightCount_ = 0;
     Bounds bounds_;
     std::size_t triangles_ = 0;
 };

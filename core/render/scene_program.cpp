@@ -30,6 +30,7 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.roughness = glGetUniformLocation(id, "uRoughness");
     p.emissive = glGetUniformLocation(id, "uEmissive");
     p.eye = glGetUniformLocation(id, "uEye");
+    p.lightCount = glGetUniformLocation(id, "uLightCount");
     p.normalScale = glGetUniformLocation(id, "uNormalScale");
     p.occlusionStrength = glGetUniformLocation(id, "uOcclusionStrength");
     const char* slots[5] = {"BaseColor", "MetallicRoughness", "Normal", "Occlusion", "Emissive"};

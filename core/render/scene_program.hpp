@@ -44,7 +44,7 @@ struct SceneProgram {
           lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
           volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
           impostorSlices = -1, impostorOverlap = -1,  // common/scene_main.glsl (the variant's)
-          metallic = -1, roughness = -1, emissive = -1, eye = -1,
+          metallic = -1, roughness = -1, emissive = -1, eye = -1, lightCount = -1,
           normalScale = -1, occlusionStrength = -1;  // common/material.glsl (the variant's)
     // Base colour, metallic-roughness, normal, occlusion, emissive (GpuScene's MaterialSlot order).
     TextureUniforms textures[5];

@@ -8,6 +8,7 @@
 #include "scene/gltf_schema.hpp"
 #include "scene/gltf_textures.hpp"
 #include "scene/tangents.hpp"
+#include "common/shading_model.h"
 
 // The Debian package ships libtinygltf.so with the implementation (and its own JSON parser),
 // so this file only includes the declarations; defining TINYGLTF_IMPLEMENTATION here would
@@ -501,6 +502,7 @@ struct Converter {
                 if (std::size_t(g.mesh) >= model.meshes.size()) fail(what + ": mesh " + str(g.mesh) + " does not exist");
                 node.meshes = meshMap[std::size_t(g.mesh)];
             }
+            node.light = nodeLight(g, what);
             scene.nodes.push_back(std::move(node));  // 1:1 with glTF nodes, so children keep their indices
         }
         if (!model.scenes.empty() && model.defaultScene >= 0) {
@@ -522,6 +524,58 @@ struct Converter {
                 if (parent[i] < 0) scene.roots.push_back(int(i));
         }
     }
+
+    // KHR_lights_punctual's lights (the document's list; nodes place them).
+    void convertLights() {
+        for (std::size_t i = 0; i < model.lights.size(); ++i) {
+            const tinygltf::Light& g = model.lights[i];
+            const std::string what = "KHR_lights_punctual light " + str(i);
+            Light l;
+            l.name = g.name.empty() ? "light " + str(i) : g.name;
+            if (g.type == "directional") l.type = Light::Type::Directional;
+            else if (g.type == "point") l.type = Light::Type::Point;
+            else if (g.type == "spot") l.type = Light::Type::Spot;
+            else fail(what + ": unknown type '" + printable(g.type, 40) + "'");
+            if (!g.color.empty()) {
+                if (g.color.size() != 3) fail(what + ": color must have 3 components");
+                for (int c = 0; c < 3; ++c) l.color[c] = unitFactor(g.color[std::size_t(c)], "light color", what);
+            }
+            // Bounded like every input: a light brighter than the Sun's 1.2e5 lux by far would
+            // overflow half-float targets at once.
+            if (!(g.intensity >= 0.0) || !(g.intensity <= 1.0e6)) fail(what + ": intensity must be a number in [0, 1e6]");
+            l.intensity = float(g.intensity);
+            if (!(g.range >= 0.0) || !std::isfinite(g.range)) fail(what + ": range must be a finite number > 0");
+            l.range = float(g.range);
+            if (l.type == Light::Type::Spot) {
+                const double inner = g.spot.innerConeAngle, outer = g.spot.outerConeAngle;
+                if (!(inner >= 0.0) || !(outer > inner) || !(outer <= 1.5707963267948966))
+                    fail(what + ": spot cone angles must satisfy 0 <= inner < outer <= pi/2");
+                l.innerConeAngle = float(inner);
+                l.outerConeAngle = float(outer);
+            }
+            scene.lights.push_back(l);
+        }
+    }
+
+    // The light a node places (its KHR_lights_punctual extension), -1 for none. Past
+    // gpu::kMaxLights placed lights the rest are dropped and said.
+    int nodeLight(const tinygltf::Node& g, const std::string& what) {
+        auto ext = g.extensions.find("KHR_lights_punctual");
+        if (ext == g.extensions.end()) return -1;
+        const std::string lw = what + " KHR_lights_punctual";
+        const double index = number(ext->second, "light", -1.0, lw);
+        if (index != std::floor(index)) fail(lw + ": light must be an integer");
+        if (index < 0.0 || index >= double(scene.lights.size()))
+            fail(lw + ": light " + (std::abs(index) < 1e15 ? std::to_string(std::int64_t(index)) : std::string("index")) +
+                 " does not exist (the file has " + str(scene.lights.size()) + ")");
+        if (placedLights >= std::size_t(gpu::kMaxLights)) {
+            ignored.note("too many lights", "lights past the first " + str(std::size_t(gpu::kMaxLights)) + " ignored", what);
+            return -1;
+        }
+        ++placedLights;
+        return int(index);
+    }
+    std::size_t placedLights = 0;
 
     std::size_t reachableTriangles() const {
         std::size_t triangles = 0;
@@ -596,6 +650,7 @@ Scene loadGltfFromMemory(const std::string& bytes, const std::filesystem::path& 
         conv.convertMeshes();
         // Where a normal texture needs tangents the file did not give (or flat normals dropped).
         deriveMissingTangents(conv.scene);
+        conv.convertLights();
         conv.convertNodes();
         conv.checkWorldTransforms();
         detail::noteIgnoredFeatures(model, ignored);

@@ -111,6 +111,20 @@ struct Node {
     std::vector<int> children;
     std::vector<int> meshes;          // indices into Scene::meshes
     int materialOverride = -1;        // applies to this node's meshes and its descendants
+    int light = -1;                   // index into Scene::lights placed by this node, -1 none
+};
+
+// A KHR_lights_punctual light. A node places it (Node::light): at the node's origin, shining
+// along the node's -Z. Colour is linear; intensity in lux (directional) or candela (point, spot).
+struct Light {
+    enum class Type { Directional, Point, Spot };
+    std::string name;
+    Type type = Type::Directional;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;  // point and spot: beyond it the light is windowed to 0; 0 unlimited
+    float innerConeAngle = 0.0f;                    // spot, radians
+    float outerConeAngle = 0.7853981633974483f;     // spot, radians (pi / 4)
 };
 
 // A camera the scene suggests (builtin scenes place one; loaded models are framed instead).
@@ -125,10 +139,13 @@ struct Scene {
     std::vector<Material> materials;  // index 0 always exists (the default material)
     std::vector<Mesh> meshes;
     std::vector<TextureImage> images;  // decoded texture images (materials' TextureRef::image)
+    std::vector<Light> lights;         // placed by nodes; none: the default rig (scene/lights.hpp)
     std::vector<Node> nodes;
     std::vector<int> roots;
     std::optional<CameraPose> camera;
-    glm::vec3 lightDirection = glm::normalize(glm::vec3(0.35f, 0.8f, 0.5f));  // towards the light, world
+    // Towards the default rig's light, world: the light of a scene without lights, and the key
+    // light of the models that take one direction (volumetric scattering, screen-door points).
+    glm::vec3 lightDirection = glm::normalize(glm::vec3(0.35f, 0.8f, 0.5f));
     glm::vec3 background{0.08f, 0.08f, 0.1f};                               // linear RGB
     // Transparent surfaces whose eye depths differ by at most this many float ulps (relative)
     // are one layer, composited in object order: the tie rule of render/depth_order.hpp.

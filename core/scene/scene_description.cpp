@@ -176,8 +176,19 @@ int merge(Scene& scene, Scene&& model, Node objectNode) {
     int materialBase = int(scene.materials.size()) - 1;  // model material 0 (default) maps to ours
     int meshBase = int(scene.meshes.size());
     int nodeBase = int(scene.nodes.size());
+    const int imageBase = int(scene.images.size());
+    const int lightBase = int(scene.lights.size());
     auto material = [&](int m) { return m <= 0 ? m : m + materialBase; };
-    for (std::size_t i = 1; i < model.materials.size(); ++i) scene.materials.push_back(std::move(model.materials[i]));
+    for (std::size_t i = 1; i < model.materials.size(); ++i) {
+        Material& m = model.materials[i];
+        // The model's textures follow its images to their place in the scene's list.
+        for (TextureRef* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.occlusionTexture,
+                              &m.emissiveTexture})
+            if (t->present()) t->image += imageBase;
+        scene.materials.push_back(std::move(m));
+    }
+    for (TextureImage& image : model.images) scene.images.push_back(std::move(image));
+    for (Light& light : model.lights) scene.lights.push_back(std::move(light));
     for (Mesh& mesh : model.meshes) {
         mesh.material = material(mesh.material);
         scene.meshes.push_back(std::move(mesh));
@@ -186,6 +197,7 @@ int merge(Scene& scene, Scene&& model, Node objectNode) {
         for (int& c : node.children) c += nodeBase;
         for (int& m : node.meshes) m += meshBase;
         node.materialOverride = material(node.materialOverride);
+        if (node.light >= 0) node.light += lightBase;
         scene.nodes.push_back(std::move(node));
     }
     for (int root : model.roots) objectNode.children.push_back(root + nodeBase);

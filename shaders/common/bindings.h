@@ -22,6 +22,8 @@ GPU_CONST uint BIND_METALLIC_ROUGHNESS_TEXTURE = 22u;
 GPU_CONST uint BIND_NORMAL_TEXTURE = 23u;
 GPU_CONST uint BIND_OCCLUSION_TEXTURE = 24u;
 GPU_CONST uint BIND_EMISSIVE_TEXTURE = 25u;
+// Uniform block binding of the scene's lights (common/lighting.glsl; GpuScene::setLightUniforms).
+GPU_CONST uint BIND_LIGHTS = 0u;
 
 // Vertex attribute locations of the scene vertex stage (common/scene.vert.glsl,
 // render/gpu_scene.cpp). 2 is the stand-in's impostor coordinates (render/stand_in.hpp).

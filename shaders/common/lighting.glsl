@@ -1,23 +1,35 @@
-// The light a shaded point receives and the eye it is seen from, for every pass that shades
+// The lights a shaded point receives and the eye it is seen from, for every pass that shades
 // (common/surface.glsl, the screen-door stages): the shading model of common/shading_model.h
-// evaluated at a world position. GpuScene::setFrameUniforms sets both uniforms.
+// evaluated at a world position. GpuScene::setFrameUniforms sets all three.
 #ifndef STRATA_LIGHTING_GLSL
 #define STRATA_LIGHTING_GLSL
+#include "bindings.h"
 #include "shading_model.h"
 
-uniform vec3 uLightDir;  // towards the default light, world space
+uniform vec3 uLightDir;  // towards the default light, world space (the key light of other models)
 // The eye as a homogeneous point: (position, 1) for a perspective camera, (direction towards
 // the eye, 0) for an orthographic one, so one expression gives the direction to it.
 uniform vec4 uEye;
+// The scene's lights in world space: its KHR_lights_punctual lights, or the default rig's one.
+layout(std140, binding = BIND_LIGHTS) uniform Lights {
+    PunctualLight uLights[kMaxLights];
+};
+uniform int uLightCount;
 
 vec3 directionToEye(vec3 worldPosition) {
     return normalize(uEye.xyz - worldPosition * uEye.w);
 }
 
-// A lit material at `worldPosition` with shading normal `normal` (not necessarily unit length).
+// A lit material at `worldPosition` with shading normal `normal` (not necessarily unit length):
+// the environment term, emission, and each light's reflectedLight.
 vec3 shadeLit(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive, vec3 normal,
               vec3 worldPosition) {
-    return shadeSurface(baseColor, metallic, roughness, occlusion, emissive, normal, directionToEye(worldPosition),
-                        uLightDir, vec3(kDefaultLightIrradiance));
+    vec3 toEye = directionToEye(worldPosition);
+    vec3 n = normalFacingEye(normal, toEye);
+    vec3 color = environmentLight(baseColor, metallic, roughness, occlusion, max(dot(n, toEye), 0.0)) + emissive;
+    for (int i = 0; i < uLightCount; ++i)
+        color += reflectedLight(baseColor, metallic, roughness, n, toEye, lightToward(uLights[i], worldPosition),
+                                lightIrradianceAt(uLights[i], worldPosition));
+    return color;
 }
 #endif

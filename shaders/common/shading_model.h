@@ -118,9 +118,59 @@ GPU_FN vec3 environmentLight(vec3 baseColor, float metallic, float roughness, fl
     return (baseColor * (1.0f - metallic) + specularAlbedo) * (kAmbient * occlusion);
 }
 
-// The shaded colour of a lit material under the environment and one light: what every pass and
-// the CPU reference compute per fragment (a file's KHR_lights_punctual lights add more
-// reflectedLight terms). `emissive` is emissiveFactor x texture x emissive strength.
+// A light as every shading pass and the CPU reference receive it, in world space: a file's
+// KHR_lights_punctual lights placed by their nodes, or Strata's default rig (one directional
+// light along Scene::lightDirection of irradiance kDefaultLightIrradiance). vec4s only, so the
+// C++ struct and GLSL's std140 block lay it out alike.
+GPU_CONST int kLightDirectional = 0;
+GPU_CONST int kLightPoint = 1;
+GPU_CONST int kLightSpot = 2;
+GPU_CONST int kMaxLights = 64;  // per scene; the loader says what it drops past this
+struct PunctualLight {
+    vec4 colorType;      // rgb: colour x intensity (lux, or candela for point and spot); w: kLight*
+    vec4 positionRange;  // xyz: position; w: range (0: unlimited)
+    vec4 directionCone;  // xyz: unit direction the light shines along; w: spot's 1 / (cos inner - cos outer)
+    vec4 coneOffset;     // x: spot's -cos(outer) / (cos inner - cos outer)
+};
+
+// The unit direction from `position` towards the light.
+GPU_FN vec3 lightToward(PunctualLight light, vec3 position) {
+    vec3 along = vec3(light.directionCone.x, light.directionCone.y, light.directionCone.z);
+    if (int(light.colorType.w) == kLightDirectional) return -along;
+    vec3 d = vec3(light.positionRange.x, light.positionRange.y, light.positionRange.z) - position;
+    float len = length(d);
+    return len > 0.0f ? d / len : -along;
+}
+
+// What the light delivers at `position` on a surface facing it (KHR_lights_punctual): a
+// directional light its intensity; a point light intensity / d^2, windowed by the range as the
+// extension recommends, clamp(1 - (d / range)^4, 0, 1); a spot light that times the smoothed
+// cone, clamp(cos(angle) * scale + offset, 0, 1)^2.
+GPU_FN vec3 lightIrradianceAt(PunctualLight light, vec3 position) {
+    vec3 color = vec3(light.colorType.x, light.colorType.y, light.colorType.z);
+    int type = int(light.colorType.w);
+    if (type == kLightDirectional) return color;
+    vec3 d = vec3(light.positionRange.x, light.positionRange.y, light.positionRange.z) - position;
+    float d2 = max(dot(d, d), 1e-8f);
+    float range = light.positionRange.w;
+    float window = 1.0f;
+    if (range > 0.0f) {
+        float r = d2 / (range * range);
+        window = min(max(1.0f - r * r, 0.0f), 1.0f);
+    }
+    float attenuation = window / d2;
+    if (type == kLightSpot) {
+        vec3 along = vec3(light.directionCone.x, light.directionCone.y, light.directionCone.z);
+        float cosAngle = dot(along, -d / sqrt(d2));
+        float cone = min(max(cosAngle * light.directionCone.w + light.coneOffset.x, 0.0f), 1.0f);
+        attenuation *= cone * cone;
+    }
+    return color * attenuation;
+}
+
+// The shaded colour of a lit material under the environment and one light (a scene's further
+// lights add their reflectedLight terms: common/lighting.glsl, the CPU reference).
+// `emissive` is emissiveFactor x texture x emissive strength.
 GPU_FN vec3 shadeSurface(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive,
                          vec3 normal, vec3 toEye, vec3 toLight, vec3 lightIrradiance) {
     vec3 n = normalFacingEye(normal, toEye);

@@ -98,6 +98,7 @@ void PointSamples::draw(const FrameContext& tileFrame) const {
     glProgramUniform3fv(p, glGetUniformLocation(p, "uLightDir"), 1, glm::value_ptr(tileFrame.scene.scene().lightDirection));
     const glm::vec4 eye = eyeUniform(tileFrame.viewProjection);
     glProgramUniform4fv(p, glGetUniformLocation(p, "uEye"), 1, glm::value_ptr(eye));
+    tileFrame.scene.setLightUniforms(p, glGetUniformLocation(p, "uLightCount"));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_POINTS, points_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_OBJECT_COLORS, colors_.id());
     glUseProgram(p);
