@@ -97,7 +97,8 @@ TEST_CASE("scene description: transforms, overrides and merged indices") {
         {"model": ")" + model + R"(", "name": "plain", "translate": [1, 2, 3], "rotate_deg": [0, 0, 90], "scale": 2},
         {"model": "desc-quad.gltf", "rotate_axis_angle": [0, 1, 0, 180], "scale": [1, 2, 3],
          "material": {"base_color": [0.1, 0.2, 0.3], "alpha": 0.25, "tau": [1, 2, 3], "albedo": [0.5, 0.5, 0.5],
-                      "double_sided": false}}
+                      "double_sided": false, "metallic": 0.75, "roughness": 0.25, "emissive": [0.5, 0, 0],
+                      "unlit": false}}
       ]})");
     Scene s = loadSceneDescription(path);
     CHECK(s.name == "two-quads");
@@ -132,6 +133,10 @@ TEST_CASE("scene description: transforms, overrides and merged indices") {
     CHECK(over.tau == glm::vec3(1, 2, 3));
     CHECK(over.albedo == glm::vec3(0.5f));
     CHECK_FALSE(over.doubleSided);
+    CHECK(over.metallic == doctest::Approx(0.75f));
+    CHECK(over.roughness == doctest::Approx(0.25f));
+    CHECK(over.emissive == glm::vec3(0.5f, 0.0f, 0.0f));
+    CHECK_FALSE(over.unlit);
     CHECK(hasTransparency(s, objects));
 }
 

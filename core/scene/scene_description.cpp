@@ -90,7 +90,8 @@ glm::vec3 unitRange3(const json& v, const std::string& where) {
 
 Material parseMaterial(const json& m, const std::string& where) {
     if (!m.is_object()) fail(where + "material: expected an object");
-    onlyKeys(m, {"name", "base_color", "alpha", "alpha_mode", "alpha_cutoff", "tau", "albedo", "double_sided"},
+    onlyKeys(m, {"name", "base_color", "alpha", "alpha_mode", "alpha_cutoff", "tau", "albedo", "double_sided", "metallic",
+                 "roughness", "emissive", "unlit"},
              where + "material: ");
     std::string w = where + "material.";
     Material mat;
@@ -129,6 +130,17 @@ Material parseMaterial(const json& m, const std::string& where) {
     if (m.contains("double_sided")) {
         if (!m["double_sided"].is_boolean()) fail(w + "double_sided: expected true or false");
         mat.doubleSided = m["double_sided"].get<bool>();
+    }
+    // The metallic-roughness model (glTF's factors, as the glTF loader reads them).
+    for (auto [key, value] : {std::pair<const char*, float*>{"metallic", &mat.metallic}, {"roughness", &mat.roughness}})
+        if (m.contains(key)) {
+            *value = number(m[key], w + key);
+            if (!(*value >= 0.0f && *value <= 1.0f)) fail(w + key + ": must be in [0, 1]");
+        }
+    if (m.contains("emissive")) mat.emissive = unitRange3(m["emissive"], w + "emissive");
+    if (m.contains("unlit")) {
+        if (!m["unlit"].is_boolean()) fail(w + "unlit: expected true or false");
+        mat.unlit = m["unlit"].get<bool>();
     }
     return mat;
 }
