@@ -107,6 +107,10 @@ n=$(num fragments "$(grep '^inspect: ' <<<"$out")")
 (( n >= 2 )) || fail "inspect: $n fragments at 430,410, expected the globe's (at least 2)"
 (( $(grep -c '^fragment: .*kept=yes$' <<<"$out") == n )) || fail "inspect: abuffer did not keep all $n"
 grep -q "verdict=\"all $n kept\"" <<<"$out" || fail "inspect: abuffer's verdict is not 'all $n kept'"
+# Each fragment's alpha is its factor times the texel's; the globe has no texture: texel 1.
+awk '/^fragment: / { for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] }
+                     d = v["alpha"] - v["alpha_factor"] * v["texel_alpha"]; if (d < -1e-3 || d > 1e-3 || v["texel_alpha"] != "1.0000") bad = 1 }
+     END { exit bad }' <<<"$out" || fail "inspect: alpha is not factor x texel alpha (texel 1 on the untextured globe)"
 out=$(inspect --mode kbuffer --set kbuffer.capacity=1)
 echo "$out"
 grep -q "verdict=\"the nearest 1 of $n kept\"" <<<"$out" || fail "inspect: kbuffer capacity=1 is not 'the nearest 1 of $n'"

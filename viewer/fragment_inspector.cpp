@@ -21,6 +21,21 @@ std::string objectName(const GpuScene& scene, int object) {
     return scene.scene().materials[std::size_t(scene.objects()[std::size_t(object)].material)].name;
 }
 
+// The material's alpha factor for an object, and what the texture and COLOR_0 multiplied it by
+// (the fragment's alpha over the factor): "factor x texel" for the window and the smoke test.
+struct AlphaParts {
+    float factor = 1.0f;
+    float texel = 1.0f;  // texture x vertex alpha at the fragment; 1 for a factor-only material
+};
+
+AlphaParts alphaParts(const GpuScene& scene, const SurfaceFragment& f) {
+    AlphaParts parts;
+    if (f.object < 0 || std::size_t(f.object) >= scene.objects().size()) return parts;
+    parts.factor = scene.scene().materials[std::size_t(scene.objects()[std::size_t(f.object)].material)].alpha;
+    parts.texel = parts.factor > 0.0f ? f.alpha / parts.factor : 0.0f;
+    return parts;
+}
+
 double distance(glm::vec3 a, glm::vec3 b) {
     glm::vec3 d = glm::abs(a - b);
     return double(std::max(d.r, std::max(d.g, d.b)));
@@ -143,7 +158,9 @@ void FragmentInspector::drawWindow(const GpuScene& scene) {
             ImGui::SameLine();
             ImGui::Text("%.2f %.2f %.2f", f.color.r, f.color.g, f.color.b);
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", f.alpha);
+            const AlphaParts parts = alphaParts(scene, f);
+            ImGui::Text("%.3f = %.3f x %.3f", f.alpha, parts.factor, parts.texel);
+            helpTooltip("the fragment's alpha = the material's alpha factor x the texture's (and COLOR_0's) alpha here");
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(tied ? "tied" : "");
             helpTooltip(tied ? "same depth layer as the fragment above (the tie rule): coplanar" : "");
@@ -173,9 +190,11 @@ void FragmentInspector::printFigures(const GpuScene& scene) const {
                 in.firstMatch, in.lastMatch, in.bestDistance, verdict(in).c_str());
     for (std::size_t i = 0; i < in.reference.fragments.size(); ++i) {
         const SurfaceFragment& f = in.reference.fragments[i];
-        std::printf("fragment: %zu depth=%.6f object=%d (%s) primitive=%d rgb=%.4f,%.4f,%.4f alpha=%.4f kept=%s\n", i,
-                    f.depth, f.object, objectName(scene, f.object).c_str(), f.primitive, f.color.r, f.color.g, f.color.b,
-                    f.alpha, keptName(in.kept[i]));
+        const AlphaParts parts = alphaParts(scene, f);
+        std::printf("fragment: %zu depth=%.6f object=%d (%s) primitive=%d rgb=%.4f,%.4f,%.4f alpha=%.4f "
+                    "alpha_factor=%.4f texel_alpha=%.4f kept=%s\n",
+                    i, f.depth, f.object, objectName(scene, f.object).c_str(), f.primitive, f.color.r, f.color.g,
+                    f.color.b, f.alpha, parts.factor, parts.texel, keptName(in.kept[i]));
     }
 }
 

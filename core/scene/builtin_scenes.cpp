@@ -330,15 +330,15 @@ Scene makeDefaultScene() {
               "foliage card");
 
     // Interpenetrating glass: a box turned on the left pedestal with a sphere through its corner.
-    // Glossy: the light's highlight shows on every glass surface (roughness 0.15).
+    // Glossy: the light's highlight shows on every glass surface (roughness 0.3).
     Material glassMaterial = transparent("glass", {0.6f, 0.85f, 0.95f}, 0.3f);
-    glassMaterial.roughness = 0.15f;
+    glassMaterial.roughness = 0.3f;
     int glass = s.addMaterial(glassMaterial);
     placeMesh(s, s.addMesh(makeBox({-0.45f, 0, -0.45f}, {0.45f, 0.9f, 0.45f})), glass,
               glm::rotate(glm::translate(identity, {-2.0f, 0.8f, -1.5f}), glm::radians(30.0f), glm::vec3(0, 1, 0)),
               "glass box");
     Material glassSphere = transparent("glass sphere", {0.85f, 0.6f, 0.9f}, 0.35f);
-    glassSphere.roughness = 0.15f;
+    glassSphere.roughness = 0.3f;
     placeMesh(s, s.addMesh(makeSphere(0.45f, 32, 16)), s.addMaterial(glassSphere),
               glm::translate(identity, {-1.6f, 1.65f, -1.2f}), "glass sphere");
     // Two intersecting volumes on the right pedestal (media for ll-volume / abuffer-volume).
@@ -359,7 +359,7 @@ Scene makeDefaultScene() {
     // Brushed steel: a metal (no diffuse term, a tinted highlight) beside the dielectrics.
     Material steel = opaque("pedestal", {0.62f, 0.63f, 0.66f});
     steel.metallic = 1.0f;
-    steel.roughness = 0.35f;
+    steel.roughness = 0.5f;
     int pedestalMat = s.addMaterial(steel);
     placeMesh(s, s.addMesh(makeBox({-5, -0.2f, -5}, {5, 0, 5})), s.addMaterial(opaque("floor", {0.45f, 0.42f, 0.4f})),
               identity, "floor");
