@@ -2,11 +2,13 @@
 // Writes tiny glTF files for the loader and scene-description tests: a binary buffer plus a
 // JSON document built with nlohmann-json, saved as .gltf (+ .bin or a base64 data URI) or .glb.
 #include <nlohmann/json.hpp>
+#include <OpenImageIO/imageio.h>
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -171,6 +173,21 @@ struct GltfBuilder {
         return path;
     }
 };
+
+// `pixels` (8 or 16 bits a channel, straight alpha) encoded by OpenImageIO in the format the
+// extension of `name` names, as the file's bytes; empty when this OpenImageIO cannot write it.
+inline std::vector<unsigned char> encodeImage(const std::string& name, int width, int height, int channels, OIIO::TypeDesc type,
+                                  const void* pixels, const char* compression = nullptr) {
+    const std::filesystem::path path = tempDir() / name;
+    OIIO::ImageSpec spec(width, height, channels, type);
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // the texels are straight alpha, as glTF's
+    if (compression) spec.attribute("compression", compression);
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out || !out->open(path.string(), spec) || !out->write_image(type, pixels)) return {};
+    out->close();
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // A unit quad in z = 0 (4 vertices) with +Z normals: the smallest indexed test mesh.
 inline const std::vector<float> kQuadPositions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};

@@ -31,26 +31,11 @@ std::string loadError(const std::filesystem::path& file) {
     return "(loaded)";
 }
 
-// `pixels` (8 or 16 bits a channel, straight alpha) encoded by OpenImageIO in the format the
-// extension of `name` names, as the file's bytes; empty when this OpenImageIO cannot write it.
-std::vector<unsigned char> encode(const std::string& name, int width, int height, int channels, OIIO::TypeDesc type,
-                                  const void* pixels, const char* compression = nullptr) {
-    const std::filesystem::path path = test::tempDir() / name;
-    OIIO::ImageSpec spec(width, height, channels, type);
-    spec.attribute("oiio:UnassociatedAlpha", 1);  // the texels are straight alpha, as glTF's
-    if (compression) spec.attribute("compression", compression);
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out || !out->open(path.string(), spec) || !out->write_image(type, pixels)) return {};
-    out->close();
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // A 2 x 1 RGBA PNG with known texels.
 const std::vector<std::uint8_t> kTwoTexels = {10, 20, 30, 40, 200, 150, 100, 255};
 
 std::vector<unsigned char> twoTexelPng() {
-    auto png = encode("two-texels.png", 2, 1, 4, OIIO::TypeDesc::UINT8, kTwoTexels.data());
+    auto png = encodeImage("two-texels.png", 2, 1, 4, OIIO::TypeDesc::UINT8, kTwoTexels.data());
     REQUIRE_FALSE(png.empty());
     return png;
 }
@@ -120,25 +105,25 @@ TEST_CASE("image decoding: grey, grey + alpha, RGB, 16-bit, JPEG and WebP images
         return image;
     };
     const std::uint16_t grey16[2] = {0, 65535};
-    TextureImage g = decoded(encode("grey16.png", 2, 1, 1, OIIO::TypeDesc::UINT16, grey16));
+    TextureImage g = decoded(encodeImage("grey16.png", 2, 1, 1, OIIO::TypeDesc::UINT16, grey16));
     CHECK(g.rgba == std::vector<std::uint8_t>{0, 0, 0, 255, 255, 255, 255, 255});  // grey to RGB, alpha 255
     const std::uint8_t greyAlpha[4] = {50, 100, 200, 0};
-    CHECK(decoded(encode("grey-alpha.png", 2, 1, 2, OIIO::TypeDesc::UINT8, greyAlpha)).rgba ==
+    CHECK(decoded(encodeImage("grey-alpha.png", 2, 1, 2, OIIO::TypeDesc::UINT8, greyAlpha)).rgba ==
           std::vector<std::uint8_t>{50, 50, 50, 100, 200, 200, 200, 0});  // straight alpha kept
     const std::uint8_t rgb[6] = {255, 0, 0, 0, 0, 255};
-    CHECK(decoded(encode("rgb.png", 2, 1, 3, OIIO::TypeDesc::UINT8, rgb)).rgba ==
+    CHECK(decoded(encodeImage("rgb.png", 2, 1, 3, OIIO::TypeDesc::UINT8, rgb)).rgba ==
           std::vector<std::uint8_t>{255, 0, 0, 255, 0, 0, 255, 255});
     // A flat-coloured JPEG comes back within JPEG's rounding.
     std::vector<std::uint8_t> flat(8 * 8 * 3);
     for (std::size_t i = 0; i < flat.size(); i += 3) flat[i] = 200, flat[i + 1] = 100, flat[i + 2] = 50;
-    TextureImage j = decoded(encode("flat.jpg", 8, 8, 3, OIIO::TypeDesc::UINT8, flat.data()));
+    TextureImage j = decoded(encodeImage("flat.jpg", 8, 8, 3, OIIO::TypeDesc::UINT8, flat.data()));
     CHECK(j.width == 8);
     CHECK(j.height == 8);
     for (int c = 0; c < 3; ++c) CHECK(std::abs(int(j.rgba[std::size_t(c)]) - int(flat[std::size_t(c)])) <= 3);
     CHECK(j.rgba[3] == 255);
     // WebP, lossless: its alpha comes back exactly (OpenImageIO 2.4's WebP writer alters colours
     // of its own, so only the size and alpha are stated).
-    const std::vector<unsigned char> webp = encode("texels.webp", 2, 1, 4, OIIO::TypeDesc::UINT8, kTwoTexels.data(), "lossless");
+    const std::vector<unsigned char> webp = encodeImage("texels.webp", 2, 1, 4, OIIO::TypeDesc::UINT8, kTwoTexels.data(), "lossless");
     if (webp.empty()) {
         MESSAGE("skipped: this OpenImageIO writes no WebP");
     } else {
