@@ -200,6 +200,13 @@ TEST_CASE("a scene's punctual lights replace the default rig, alike on every exa
     spotNode.local = glm::translate(glm::mat4(1.0f), {0.5f, -0.3f, 1.5f});
     spotNode.light = 1;
     s.addNode(spotNode);
+    {
+        test::glContext();
+        // The light loop is a variant: objects of a scene with lights draw with it, and only they.
+        GpuScene lights(s);
+        for (std::size_t i = 0; i < lights.objects().size(); ++i)
+            CHECK((lights.materialFeatures(int(i)) & kScenePunctualLights) != 0u);
+    }
     const Image lit = checkAgainstReference(s);
     // The default rig alone looks otherwise: the lights are used, not added to it or ignored.
     Scene rig = s;

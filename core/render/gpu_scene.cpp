@@ -184,6 +184,9 @@ GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(sce
         if (mesh.hasColors()) f |= kSceneVertexColor;
         if (m.alphaTested()) f |= kSceneAlphaMask;
         if (m.unlit) f = (f & (kSceneBaseColorTexture | kSceneVertexColor | kSceneAlphaMask)) | kSceneUnlit;
+        // A scene with its own lights shades through the light loop; one without, through the
+        // default rig's single directional light, with no loop and no light block to read.
+        else if (!scene_.lights.empty()) f |= kScenePunctualLights;
         features_.push_back(f);
     }
 }
@@ -242,10 +245,10 @@ void GpuScene::uploadTextures() {
 
 void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProjection) const {
     glProgramUniformMatrix4fv(p.id(), p.viewProj, 1, GL_FALSE, glm::value_ptr(viewProjection));
-    glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(scene_.lightDirection));
+    const glm::vec3 toLight = glm::normalize(scene_.lightDirection);  // as scene/lights.hpp's defaultLight
+    glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(toLight));
     const glm::vec4 eye = eyeUniform(viewProjection);
     glProgramUniform4fv(p.id(), p.eye, 1, glm::value_ptr(eye));
-    setLightUniforms(p.id(), p.lightCount);
 }
 
 void GpuScene::setLightUniforms(GLuint program, GLint countLocation) const {
@@ -267,6 +270,9 @@ void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
     glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
     glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
     glProgramUniform1i(program, p.volumeEntry, volumeEntry_[std::size_t(objectIndex)]);
+    // The light loop's count, on the variant that has it (the pass's plain program does not, so
+    // SceneProgram::variant has no value of it to copy).
+    if (p.lightCount >= 0) setLightUniforms(program, p.lightCount);
     glProgramUniform1f(program, p.metallic, m.metallic);
     glProgramUniform1f(program, p.roughness, m.roughness);
     glProgramUniform3fv(program, p.emissive, 1, glm::value_ptr(m.emissive));
@@ -317,7 +323,8 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
 void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandInDraw& standIn) const {
     if (standIn.first.empty()) return;
     // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
-    const SceneProgram& variant = p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & kSceneUnlit));
+    const SceneProgram& variant =
+        p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & (kSceneUnlit | kScenePunctualLights)));
     setObjectUniforms(variant, objectIndex);
     glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
     glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);

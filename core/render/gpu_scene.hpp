@@ -68,7 +68,7 @@ public:
     // draws the object's triangles, or with `standIn` the stand-in's quads in their place.
     void draw(const SceneProgram& program, int objectIndex, const StandInDraw* standIn = nullptr) const;
 
-    // Uniforms every scene program shares for a frame (the lights' included).
+    // Uniforms every scene program shares for a frame.
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
     // The scene's lights (scene/lights.hpp) for a program that shades through
     // common/lighting.glsl: binds their block and sets uLightCount at `countLocation`.

@@ -109,6 +109,7 @@ const SceneProgram& SceneProgram::variant(unsigned features) const {
         if (features & kSceneOcclusionTexture) defines["STRATA_OCCLUSION_TEXTURE"] = "";
         if (features & kSceneEmissiveTexture) defines["STRATA_EMISSIVE_TEXTURE"] = "";
         if (features & kSceneUnlit) defines["STRATA_UNLIT"] = "";
+        if (features & kScenePunctualLights) defines["STRATA_PUNCTUAL_LIGHTS"] = "";
         v->program = buildFromStages(stages, defines);
         // Every plain uniform of this program except the per-object ones GpuScene::draw sets on
         // whichever program draws (samplers, images and blocks bind by layout, not by value).

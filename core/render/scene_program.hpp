@@ -30,7 +30,8 @@ enum SceneFeature : unsigned {
     kSceneOcclusionTexture = 64u,          // STRATA_OCCLUSION_TEXTURE
     kSceneEmissiveTexture = 128u,          // STRATA_EMISSIVE_TEXTURE
     kSceneUnlit = 256u,                    // STRATA_UNLIT
-    kSceneFeatureCombinations = 512u,      // one past every bit set
+    kScenePunctualLights = 512u,           // STRATA_PUNCTUAL_LIGHTS: the scene has its own lights
+    kSceneFeatureCombinations = 1024u,     // one past every bit set
 };
 
 // The per-object locations of one material texture's uniforms (common/material.glsl).

@@ -59,10 +59,17 @@ PointSampling PointSamples::sample(const FrameContext& frame, const PassParamete
                                    double maxTriangleSamples) {
     if (!sampleProgram_) {
         sampleProgram_ = gl::buildProgram({"oit/screendoor/point_samples.comp.glsl"});
-        drawProgram_ = gl::buildProgram({"oit/screendoor/points.vert.glsl", "oit/screendoor/points.frag.glsl"});
         counters_ = gl::Buffer::create();
         glNamedBufferStorage(counters_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
         colors_ = gl::Buffer::create();
+    }
+    // The points shade under the scene's lights: the light loop only where it has its own.
+    const bool punctual = !frame.scene.scene().lights.empty();
+    if (!drawProgram_ || drawProgramPunctual_ != punctual) {
+        gl::Defines defines;
+        if (punctual) defines["STRATA_PUNCTUAL_LIGHTS"] = "";
+        drawProgram_ = gl::buildProgram({"oit/screendoor/points.vert.glsl", "oit/screendoor/points.frag.glsl"}, defines);
+        drawProgramPunctual_ = punctual;
     }
     // Colours by object id, for the point pass.
     const auto& objects = frame.scene.objects();
@@ -95,7 +102,8 @@ PointSampling PointSamples::sample(const FrameContext& frame, const PassParamete
 void PointSamples::draw(const FrameContext& tileFrame) const {
     const GLuint p = drawProgram_.id();
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(tileFrame.viewProjection));
-    glProgramUniform3fv(p, glGetUniformLocation(p, "uLightDir"), 1, glm::value_ptr(tileFrame.scene.scene().lightDirection));
+    const glm::vec3 toLight = glm::normalize(tileFrame.scene.scene().lightDirection);
+    glProgramUniform3fv(p, glGetUniformLocation(p, "uLightDir"), 1, glm::value_ptr(toLight));
     const glm::vec4 eye = eyeUniform(tileFrame.viewProjection);
     glProgramUniform4fv(p, glGetUniformLocation(p, "uEye"), 1, glm::value_ptr(eye));
     tileFrame.scene.setLightUniforms(p, glGetUniformLocation(p, "uLightCount"));

@@ -32,6 +32,7 @@ private:
                       std::uint64_t& trianglesBounded);
 
     gl::Program sampleProgram_, drawProgram_;
+    bool drawProgramPunctual_ = false;  // drawProgram_ built with STRATA_PUNCTUAL_LIGHTS
     gl::Buffer points_, counters_, colors_;
     std::uint64_t capacity_ = 0;
     std::uint64_t stored_ = 0;
