@@ -148,7 +148,7 @@ glm::vec3 paletteColor(int i) {
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
     static const std::vector<BuiltinSceneInfo> list = {
         {"layers", "N[:textured] (1..4096, default 8)",
-         "N full-view parallel quads, depth complexity exactly N; textured: through a white texture"},
+         "N full-view parallel unlit quads, depth complexity exactly N; textured: through a white texture"},
         {"coplanar", "K (1..1024, default 4)", "K coincident full-view quads: one depth, K fragments"},
         {"shells", "K[:roundoff] (1..1024, default 2)",
          "K coincident transparent spheres; roundoff: the copies differ by float round-off only"},
@@ -178,6 +178,9 @@ Scene makeLayersScene(int layers, float alpha, bool textured) {
         int mesh = s.addMesh(textured ? texturedQuad(4.0f * d, 4.0f * d) : makeQuad(4.0f * d, 4.0f * d));
         Material m = transparent("layer" + std::to_string(i), paletteColor(i), alpha);
         if (textured) m.baseColorTexture.image = 0;  // the default sampler: trilinear, repeat
+        // Unlit: a layer's colour is its base colour, as the closed forms take it and as the
+        // peers (tools/peers) draw their layers, so the bench compares compositing alone.
+        m.unlit = true;
         int material = s.addMaterial(m);
         placeMesh(s, mesh, material, glm::translate(glm::mat4(1.0f), {0, 0, -d}), "layer" + std::to_string(i));
     }
