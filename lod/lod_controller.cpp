@@ -39,7 +39,7 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
         in.triangles = scene_.scene().meshes[std::size_t(o.mesh)].triangleCount();
         in.impostor.id = o.mesh;  // instances of one mesh share its impostor
         in.transparent = scene_.scene().materials[std::size_t(o.material)].isTransparent();
-        in.materialNotBaked = scene_.materialFeatures(int(i)) != 0;
+        in.materialNotBaked = (scene_.materialFeatures(int(i)) & kSceneSurfaceDetail) != 0;
     }
 }
 

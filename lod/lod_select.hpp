@@ -93,7 +93,7 @@ enum class LodReason {
     GeometryCheaper,  // geometry: predicted no slower than the impostor
     ImpostorCheaper,  // impostor: predicted faster, error within the bound
     TransparentAuto,  // geometry: transparent, and the mode is auto (LodObjectInput::transparent)
-    MaterialAuto,     // geometry: textured, vertex colours or MASK, and the mode is auto
+    MaterialAuto,     // geometry: textured, vertex colours or MASK (kSceneSurfaceDetail), and the mode is auto
 };
 const char* to_string(LodReason reason);
 

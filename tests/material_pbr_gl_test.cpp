@@ -205,7 +205,11 @@ TEST_CASE("a scene's punctual lights replace the default rig, alike on every exa
         // The light loop is a variant: objects of a scene with lights draw with it, and only they.
         GpuScene lights(s);
         for (std::size_t i = 0; i < lights.objects().size(); ++i)
+        {
             CHECK((lights.materialFeatures(int(i)) & kScenePunctualLights) != 0u);
+            // Lights are not surface detail: --lod auto may still draw these objects as impostors.
+            CHECK((lights.materialFeatures(int(i)) & kSceneSurfaceDetail) == 0u);
+        }
     }
     const Image lit = checkAgainstReference(s);
     // The default rig alone looks otherwise: the lights are used, not added to it or ignored.

@@ -34,6 +34,12 @@ enum SceneFeature : unsigned {
     kSceneFeatureCombinations = 1024u,     // one past every bit set
 };
 
+// What a layered impostor does not bake (it keeps normals and depths only): a material's
+// textures, vertex colours and MASK cut-out. Unlit and the light loop apply to stand-ins too.
+inline constexpr unsigned kSceneSurfaceDetail = kSceneBaseColorTexture | kSceneVertexColor | kSceneAlphaMask |
+                                                kSceneMetallicRoughnessTexture | kSceneNormalTexture |
+                                                kSceneOcclusionTexture | kSceneEmissiveTexture;
+
 // The per-object locations of one material texture's uniforms (common/material.glsl).
 struct TextureUniforms {
     GLint transform = -1, texCoord = -1;
