@@ -147,6 +147,11 @@ void drawScene(const PanelState& state) {
     if (scene.textureBytes() > 0)
         ImGui::Text("textures %zu (%.1f MiB on the GPU)", scene.scene().images.size(),
                     double(scene.textureBytes()) / (1024.0 * 1024.0));
+    // Which lights shade it: the file's KHR_lights_punctual ones, or Strata's default rig.
+    if (scene.scene().lights.empty())
+        ImGui::TextUnformatted("lights: default rig (one directional light)");
+    else
+        ImGui::Text("lights: %zu KHR_lights_punctual", scene.scene().lights.size());
     if (!b.empty()) {
         glm::vec3 e = b.max - b.min;
         ImGui::Text("bounds %.3g x %.3g x %.3g", e.x, e.y, e.z);
