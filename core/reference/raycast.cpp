@@ -307,9 +307,7 @@ glm::vec3 shadeHit(const Scene& scene, const std::vector<gpu::PunctualLight>& li
     const glm::vec3 toEye = glm::vec3(-glm::normalize(direction));
     // common/lighting.glsl's shadeLit: the environment, emission and each light.
     const glm::vec3 facing = gpu::normalFacingEye(n, toEye);
-    glm::vec3 color = gpu::environmentLight(baseColor, m.metallic, m.roughness, m.occlusion,
-                                            std::max(glm::dot(facing, toEye), 0.0f)) +
-                      m.emissive;
+    glm::vec3 color = gpu::environmentAndEmission(baseColor, m.metallic, m.roughness, m.occlusion, m.emissive, facing, toEye);
     const glm::vec3 at = interpolatedPosition(o, idx, h);
     for (const gpu::PunctualLight& light : lights)
         color += gpu::reflectedLight(baseColor, m.metallic, m.roughness, facing, toEye, gpu::lightToward(light, at),

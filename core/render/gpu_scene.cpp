@@ -27,6 +27,13 @@ void addAttribute(std::vector<unsigned char>& bytes, const std::vector<T>& value
     bindings.push_back({location, offset});
 }
 
+// An attribute must have one value per position.
+void checkCount(const Mesh& mesh, std::size_t count, const char* what) {
+    if (count != mesh.positions.size())
+        throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(count) + " " + what + " for " +
+                                 std::to_string(mesh.positions.size()) + " positions");
+}
+
 // Which encoding, texture unit and build feature each MaterialSlot has.
 struct SlotInfo {
     bool srgb;
@@ -55,8 +62,8 @@ gl::Texture uploadImage(const TextureImage& image, bool srgb) {
     return t;
 }
 
-}  // namespace
-
+// common/lighting.glsl's uEye for a view-projection: (eye, 1) for a perspective camera,
+// (direction towards the eye, 0) for an orthographic one.
 glm::vec4 eyeUniform(const glm::mat4& viewProjection) {
     // The preimage of (0, 0, 1, 0) under the view-projection: the point every clip-space ray
     // leaves from. For a perspective camera its w is non-zero and the point finite; for an
@@ -68,6 +75,8 @@ glm::vec4 eyeUniform(const glm::mat4& viewProjection) {
     if (glm::length(xyz) > 0.0) return glm::vec4(glm::vec3(-glm::normalize(xyz)), 0.0f);
     return glm::vec4(0.0f, 0.0f, 1.0f, 0.0f);
 }
+
+}  // namespace
 
 const TextureRef& materialTexture(const Material& m, int slot) {
     switch (slot) {
@@ -81,9 +90,7 @@ const TextureRef& materialTexture(const Material& m, int slot) {
 }
 
 GpuMesh uploadMesh(const Mesh& mesh) {
-    if (mesh.normals.size() != mesh.positions.size())
-        throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.normals.size()) +
-                                 " normals for " + std::to_string(mesh.positions.size()) + " positions");
+    checkCount(mesh, mesh.normals.size(), "normals");
     std::vector<float> interleaved;
     interleaved.reserve(mesh.positions.size() * 6);
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -116,24 +123,17 @@ GpuMesh uploadMesh(const Mesh& mesh) {
     const GLuint texCoordLocation[2] = {gpu::ATTRIB_TEXCOORD0, gpu::ATTRIB_TEXCOORD1};
     for (int set = 0; set < 2; ++set) {
         if (!mesh.hasTexCoords(set)) continue;
-        if (mesh.texCoords[set].size() != mesh.positions.size())
-            throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.texCoords[set].size()) +
-                                     " TEXCOORD_" + std::to_string(set) + " for " +
-                                     std::to_string(mesh.positions.size()) + " positions");
+        checkCount(mesh, mesh.texCoords[set].size(), ("TEXCOORD_" + std::to_string(set)).c_str());
         addAttribute(bytes, mesh.texCoords[set], vao, texCoordLocation[set], 2, bindings);
         g.texCoords[set] = true;
     }
     if (mesh.hasColors()) {
-        if (mesh.colors.size() != mesh.positions.size())
-            throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.colors.size()) +
-                                     " colours for " + std::to_string(mesh.positions.size()) + " positions");
+        checkCount(mesh, mesh.colors.size(), "colours");
         addAttribute(bytes, mesh.colors, vao, gpu::ATTRIB_COLOR, 4, bindings);
         g.colors = true;
     }
     if (mesh.hasTangents()) {
-        if (mesh.tangents.size() != mesh.positions.size())
-            throw std::runtime_error("mesh '" + mesh.name + "' has " + std::to_string(mesh.tangents.size()) +
-                                     " tangents for " + std::to_string(mesh.positions.size()) + " positions");
+        checkCount(mesh, mesh.tangents.size(), "tangents");
         addAttribute(bytes, mesh.tangents, vao, gpu::ATTRIB_TANGENT, 4, bindings);
         g.tangents = true;
     }
@@ -245,10 +245,15 @@ void GpuScene::uploadTextures() {
 
 void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProjection) const {
     glProgramUniformMatrix4fv(p.id(), p.viewProj, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    setViewLightUniforms(p.id(), p.lightDir, p.eye, viewProjection);
+}
+
+void GpuScene::setViewLightUniforms(GLuint program, GLint lightDir, GLint eye,
+                                    const glm::mat4& viewProjection) const {
     const glm::vec3 toLight = glm::normalize(scene_.lightDirection);  // as scene/lights.hpp's defaultLight
-    glProgramUniform3fv(p.id(), p.lightDir, 1, glm::value_ptr(toLight));
-    const glm::vec4 eye = eyeUniform(viewProjection);
-    glProgramUniform4fv(p.id(), p.eye, 1, glm::value_ptr(eye));
+    glProgramUniform3fv(program, lightDir, 1, glm::value_ptr(toLight));
+    const glm::vec4 eyePoint = eyeUniform(viewProjection);
+    glProgramUniform4fv(program, eye, 1, glm::value_ptr(eyePoint));
 }
 
 void GpuScene::setLightUniforms(GLuint program, GLint countLocation) const {

@@ -36,9 +36,6 @@ enum MaterialSlot : int {
 };
 const TextureRef& materialTexture(const Material& material, int slot);
 
-// common/lighting.glsl's uEye for a view-projection: (eye, 1) for a perspective camera,
-// (direction towards the eye, 0) for an orthographic one.
-glm::vec4 eyeUniform(const glm::mat4& viewProjection);
 
 // Uploads one mesh in the layout every scene program reads (attributes 0 position, 1 normal;
 // ATTRIB_TEXCOORD0/1, ATTRIB_COLOR and ATTRIB_TANGENT of common/bindings.h where the mesh has them, in a buffer
@@ -70,6 +67,9 @@ public:
 
     // Uniforms every scene program shares for a frame.
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
+    // The default light's direction (uLightDir) and the eye (uEye) of common/lighting.glsl, for
+    // a program that shades through it; setFrameUniforms sets them on scene programs.
+    void setViewLightUniforms(GLuint program, GLint lightDir, GLint eye, const glm::mat4& viewProjection) const;
     // The scene's lights (scene/lights.hpp) for a program that shades through
     // common/lighting.glsl: binds their block and sets uLightCount at `countLocation`.
     void setLightUniforms(GLuint program, GLint countLocation) const;

@@ -343,12 +343,26 @@ struct Converter {
                 if (!std::isfinite(t.x) || !std::isfinite(t.y)) fail(what + ": non-finite " + sets[set] + " value");
             mesh.texCoords[set] = std::move(uv);
         }
+        // A VEC3 or VEC4 attribute as vec4s (absent components from `fill`), one per position, finite.
+        auto accessorOf = [&](int index, const char* semantic) -> const tinygltf::Accessor& {
+            if (index < 0 || std::size_t(index) >= model.accessors.size())
+                fail(what + " " + semantic + ": accessor " + str(index) + " does not exist");
+            return model.accessors[std::size_t(index)];
+        };
+        auto readVec4 = [&](int index, int components, const char* semantic, glm::vec4 fill) {
+            AccessorView v = checkAccessor(model, index, components, false, what + " " + semantic);
+            checkCount(v.count, semantic);
+            std::vector<glm::vec4> values(v.count, fill);
+            readAccessor(v, what + " " + semantic, [&](std::size_t e, int c, double x) { values[e][c] = float(x); });
+            for (const auto& q : values)
+                if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w))
+                    fail(what + ": non-finite " + semantic + " value");
+            return values;
+        };
         auto color = p.attributes.find("COLOR_0");
         if (color != p.attributes.end()) {
             const std::string cw = what + " COLOR_0 (accessor " + str(color->second) + ")";
-            if (color->second < 0 || std::size_t(color->second) >= model.accessors.size())
-                fail(what + " COLOR_0: accessor " + str(color->second) + " does not exist");
-            const tinygltf::Accessor& acc = model.accessors[std::size_t(color->second)];
+            const tinygltf::Accessor& acc = accessorOf(color->second, "COLOR_0");
             const int components = vectorComponents(acc.type);
             if (components != 3 && components != 4)
                 fail(cw + ": type " + typeName(acc.type) + ", expected VEC3 or VEC4");
@@ -359,30 +373,15 @@ struct Converter {
             if (acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !unorm)
                 fail(cw + ": component type " + str(acc.componentType) + (acc.normalized ? "" : " not normalized") +
                      "; colours are FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT");
-            AccessorView v = checkAccessor(model, color->second, components, false, what + " COLOR_0");
-            checkCount(v.count, "COLOR_0");
-            std::vector<glm::vec4> colors(v.count, glm::vec4(1.0f));
-            readAccessor(v, what + " COLOR_0", [&](std::size_t e, int c, double x) { colors[e][c] = float(x); });
-            for (const auto& c : colors)
-                if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b) || !std::isfinite(c.a))
-                    fail(what + ": non-finite COLOR_0 value");
-            mesh.colors = std::move(colors);
+            mesh.colors = readVec4(color->second, components, "COLOR_0", glm::vec4(1.0f));
         }
         auto tangent = p.attributes.find("TANGENT");
         if (tangent != p.attributes.end()) {
-            const std::string tw = what + " TANGENT (accessor " + str(tangent->second) + ")";
-            if (tangent->second < 0 || std::size_t(tangent->second) >= model.accessors.size())
-                fail(what + " TANGENT: accessor " + str(tangent->second) + " does not exist");
-            const tinygltf::Accessor& acc = model.accessors[std::size_t(tangent->second)];
-            if (vectorComponents(acc.type) != 4) fail(tw + ": type " + typeName(acc.type) + ", expected VEC4");
-            AccessorView v = checkAccessor(model, tangent->second, 4, false, what + " TANGENT");
-            checkCount(v.count, "TANGENT");
-            std::vector<glm::vec4> tangents(v.count, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-            readAccessor(v, what + " TANGENT", [&](std::size_t e, int c, double x) { tangents[e][c] = float(x); });
-            for (const auto& t : tangents)
-                if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || !std::isfinite(t.w))
-                    fail(what + ": non-finite TANGENT value");
-            mesh.tangents = std::move(tangents);
+            const tinygltf::Accessor& acc = accessorOf(tangent->second, "TANGENT");
+            if (vectorComponents(acc.type) != 4)
+                fail(what + " TANGENT (accessor " + str(tangent->second) + "): type " + typeName(acc.type) +
+                     ", expected VEC4");
+            mesh.tangents = readVec4(tangent->second, 4, "TANGENT", glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         }
     }
 

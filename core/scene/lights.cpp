@@ -56,13 +56,10 @@ struct Placer {
 }  // namespace
 
 gpu::PunctualLight defaultLight(const Scene& scene) {
-    Light l;
-    l.intensity = gpu::kDefaultLightIrradiance;
-    glm::mat4 world(1.0f);
-    // A directional light shines along -lightDirection: its node's -Z.
-    const glm::vec3 along = -glm::normalize(scene.lightDirection);
-    gpu::PunctualLight p = toPunctual(l, world);
-    p.directionCone = glm::vec4(along, p.directionCone.w);
+    // A directional light shining along -lightDirection (position, range and cone unused).
+    gpu::PunctualLight p{};
+    p.colorType = glm::vec4(glm::vec3(gpu::kDefaultLightIrradiance), float(gpu::kLightDirectional));
+    p.directionCone = glm::vec4(-glm::normalize(scene.lightDirection), 1.0f);
     return p;
 }
 

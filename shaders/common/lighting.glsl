@@ -31,7 +31,7 @@ vec3 shadeLit(vec3 baseColor, float metallic, float roughness, float occlusion, 
               vec3 worldPosition) {
     vec3 toEye = directionToEye(worldPosition);
     vec3 n = normalFacingEye(normal, toEye);
-    vec3 color = environmentLight(baseColor, metallic, roughness, occlusion, max(dot(n, toEye), 0.0)) + emissive;
+    vec3 color = environmentAndEmission(baseColor, metallic, roughness, occlusion, emissive, n, toEye);
 #ifdef STRATA_PUNCTUAL_LIGHTS
     for (int i = 0; i < uLightCount; ++i)
         color += reflectedLight(baseColor, metallic, roughness, n, toEye, lightToward(uLights[i], worldPosition),

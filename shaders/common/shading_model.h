@@ -168,14 +168,21 @@ GPU_FN vec3 lightIrradianceAt(PunctualLight light, vec3 position) {
     return color * attenuation;
 }
 
+// What a lit material shows before its lights: the environment term and its emission. `n` is
+// the normal facing the eye (normalFacingEye). Each light adds its reflectedLight to this.
+GPU_FN vec3 environmentAndEmission(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive, vec3 n,
+                       vec3 toEye) {
+    return environmentLight(baseColor, metallic, roughness, occlusion, max(dot(n, toEye), 0.0f)) + emissive;
+}
+
 // The shaded colour of a lit material under the environment and one light (a scene's further
 // lights add their reflectedLight terms: common/lighting.glsl, the CPU reference).
 // `emissive` is emissiveFactor x texture x emissive strength.
 GPU_FN vec3 shadeSurface(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive,
                          vec3 normal, vec3 toEye, vec3 toLight, vec3 lightIrradiance) {
     vec3 n = normalFacingEye(normal, toEye);
-    return environmentLight(baseColor, metallic, roughness, occlusion, max(dot(n, toEye), 0.0f)) +
-           reflectedLight(baseColor, metallic, roughness, n, toEye, toLight, lightIrradiance) + emissive;
+    return environmentAndEmission(baseColor, metallic, roughness, occlusion, emissive, n, toEye) +
+           reflectedLight(baseColor, metallic, roughness, n, toEye, toLight, lightIrradiance);
 }
 
 // The sRGB transfer function's inverse (glTF colour textures; the GL specification's decode for

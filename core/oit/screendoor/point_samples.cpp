@@ -102,10 +102,8 @@ PointSampling PointSamples::sample(const FrameContext& frame, const PassParamete
 void PointSamples::draw(const FrameContext& tileFrame) const {
     const GLuint p = drawProgram_.id();
     glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "uViewProj"), 1, GL_FALSE, glm::value_ptr(tileFrame.viewProjection));
-    const glm::vec3 toLight = glm::normalize(tileFrame.scene.scene().lightDirection);
-    glProgramUniform3fv(p, glGetUniformLocation(p, "uLightDir"), 1, glm::value_ptr(toLight));
-    const glm::vec4 eye = eyeUniform(tileFrame.viewProjection);
-    glProgramUniform4fv(p, glGetUniformLocation(p, "uEye"), 1, glm::value_ptr(eye));
+    tileFrame.scene.setViewLightUniforms(p, glGetUniformLocation(p, "uLightDir"), glGetUniformLocation(p, "uEye"),
+                                         tileFrame.viewProjection);
     tileFrame.scene.setLightUniforms(p, glGetUniformLocation(p, "uLightCount"));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_POINTS, points_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_OBJECT_COLORS, colors_.id());
