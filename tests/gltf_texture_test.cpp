@@ -7,6 +7,8 @@
 #include "scene/lights.hpp"
 #include "scene/image_decode.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <doctest/doctest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -618,4 +620,40 @@ TEST_CASE("gltf: KHR_lights_punctual lights are read and placed by their nodes; 
     b.doc["extensions"]["KHR_lights_punctual"]["lights"][1]["spot"]["innerConeAngle"] = 0.2;
     b.doc["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 7;
     CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("lights-index")), doctest::Contains("light 7"), LoadError);
+}
+
+TEST_CASE("gltf: KHR_materials_transmission, _ior and _volume's thickness make a transparent coloured filter") {
+    GltfBuilder b;
+    int pos = b.positions(kTrianglePositions);
+    b.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_ior", "KHR_materials_volume"};
+    b.material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.5, 0.2, 1.0}}, {"metallicFactor", 0.0}}},
+                {"extensions",
+                 {{"KHR_materials_transmission", {{"transmissionFactor", 0.8}}},
+                  {"KHR_materials_ior", {{"ior", 1.33}}},
+                  {"KHR_materials_volume", {{"thicknessFactor", 0.25}, {"attenuationDistance", 2.0},
+                                            {"attenuationColor", {0.5, 1.0, 1.0}}}}}}});
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}}}, {"material", 0}}}));
+    GltfLoadReport report;
+    Scene s = loadGltf(b.writeGltf("glass"), report);
+    CHECK(report.warnings.empty());
+    REQUIRE(s.materials.size() == 2);
+    const Material& glass = s.materials[1];
+    CHECK(glass.transmission == doctest::Approx(0.8f));
+    CHECK(glass.ior == doctest::Approx(1.33f));
+    CHECK(glass.thickness == doctest::Approx(0.25f));
+    // OPAQUE in the file, transparent to the OIT core: light passes through it.
+    CHECK(glass.alphaMode == AlphaMode::Opaque);
+    CHECK(glass.transmissive());
+    CHECK(glass.isTransparent());
+    // tau = -ln(0.5) / 2 in red; through 0.25 of it (unit scale) exp(-tau 0.25) = 0.5^(1/8).
+    const glm::vec3 filter = volumeFilterOnEntry(glass, glm::mat4(1.0f));
+    CHECK(filter.r == doctest::Approx(std::pow(0.5, 0.125)).epsilon(1e-5));
+    CHECK(filter.g == 1.0f);
+    // The node's scale lengthens the path: scaled by 2, 0.5^(1/4).
+    CHECK(volumeFilterOnEntry(glass, glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))).r ==
+          doctest::Approx(std::pow(0.5, 0.25)).epsilon(1e-5));
+
+    b.doc["materials"][0]["extensions"]["KHR_materials_ior"]["ior"] = 0.5;
+    CHECK_THROWS_WITH_AS(loadGltf(b.writeGltf("glass-ior")),
+                         doctest::Contains("KHR_materials_ior: ior must be 0 or a number in [1, 10]"), LoadError);
 }

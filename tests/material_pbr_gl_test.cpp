@@ -151,7 +151,7 @@ TEST_CASE("an occlusion texture darkens the environment term only, alike on the 
     // The right half's texel is 1: unchanged. The left half loses (1 - occlusion) of the
     // environment term, occlusion = 1 + 0.5 (64/255 - 1), times alpha 0.9 over the backdrop.
     const float lost = (1.0f - gpu::occlusionOf(64.0f / 255.0f, 0.5f)) * 0.9f;
-    const glm::vec3 environment = gpu::environmentLight(glm::vec3(0.7f), 0.0f, 0.9f, 1.0f, 1.0f);
+    const glm::vec3 environment = gpu::environmentLight(glm::vec3(0.7f), glm::vec3(gpu::kDielectricF0), 0.9f, 1.0f, 1.0f);
     CHECK(std::abs(withOcclusion.at(12, 8).r - without.at(12, 8).r) <= 1e-5f);
     const float darker = without.at(3, 8).r - withOcclusion.at(3, 8).r;
     // n.v is near 1 at the pixel (the eye is 3 away, the point within 0.6 of the axis).

@@ -12,11 +12,22 @@
 #include <cmath>
 
 using namespace strata;
-using gpu::environmentLight;
 using gpu::normalFromMap;
-using gpu::reflectedLight;
 
 namespace {
+
+// The BRDF for an opaque dielectric-or-metal base (transmission 0, ior 1.5), in the material's
+// parameters: the cases below are stated in them.
+glm::vec3 reflectedLight(glm::vec3 base, float metallic, float roughness, glm::vec3 n, glm::vec3 toEye,
+                         glm::vec3 toLight, glm::vec3 irradiance) {
+    return gpu::reflectedLight(gpu::diffuseAlbedo(base, metallic, 0.0f), gpu::specularF0(base, metallic, gpu::kDefaultIor),
+                               roughness, n, toEye, toLight, irradiance);
+}
+
+glm::vec3 environmentLight(glm::vec3 base, float metallic, float roughness, float occlusion, float nDotV) {
+    return gpu::environmentLight(gpu::diffuseAlbedo(base, metallic, 0.0f), gpu::specularF0(base, metallic, gpu::kDefaultIor),
+                                 roughness, occlusion, nDotV);
+}
 
 constexpr float kPiF = 3.14159265358979f;
 const glm::vec3 kUp(0.0f, 0.0f, 1.0f);
@@ -255,4 +266,39 @@ TEST_CASE("punctual lights: inverse-square point light, its range window, the sp
     REQUIRE(rig.size() == 1);
     CHECK(gpu::lightToward(rig[0], glm::vec3(3.0f)).x == doctest::Approx(std::sqrt(0.5f)));
     CHECK(gpu::lightIrradianceAt(rig[0], glm::vec3(3.0f)).r == doctest::Approx(kDefaultLightIrradiance));
+}
+
+TEST_CASE("transmission: the filter is the base colour less Fresnel, and its scalar form keeps the light") {
+    const glm::vec3 base(1.0f, 0.5f, 0.25f);
+    // Head on, a dielectric of ior 1.5 reflects 4 %: 96 % of the tinted light goes through.
+    const glm::vec3 headOn = gpu::transmissionFilter(base, 0.0f, 1.0f, 1.5f, 1.0f);
+    CHECK(headOn.r == doctest::Approx(0.96f));
+    CHECK(headOn.b == doctest::Approx(0.24f));
+    // Half transmissive: half of it; a metal or a grazing view: nothing; ior 1 reflects nothing.
+    CHECK(gpu::transmissionFilter(base, 0.0f, 0.5f, 1.5f, 1.0f).r == doctest::Approx(0.48f));
+    CHECK(gpu::transmissionFilter(base, 1.0f, 1.0f, 1.5f, 1.0f) == glm::vec3(0.0f));
+    CHECK(gpu::transmissionFilter(base, 0.0f, 1.0f, 1.5f, 0.0f) == glm::vec3(0.0f));
+    CHECK(gpu::transmissionFilter(base, 0.0f, 1.0f, 1.0f, 1.0f) == base);
+    CHECK(gpu::dielectricF0(1.5f) == doctest::Approx(gpu::kDielectricF0));
+    // What passes through does not also scatter: the diffuse albedo loses the transmitted part.
+    CHECK(gpu::diffuseAlbedo(base, 0.0f, 0.75f) == base * 0.25f);
+
+    // A fragment of coverage 0.5 over that filter lets through 0.5 + 0.5 x filter per channel.
+    const gpu::SurfaceOptics o = gpu::surfaceOpticsOf(glm::vec3(0.2f), 0.5f, headOn);
+    CHECK(o.transmittance.r == doctest::Approx(0.98f));
+    CHECK(o.transmittance.b == doctest::Approx(0.62f));
+    CHECK(o.premultiplied == glm::vec3(0.1f));
+    // Its scalar form: alpha = 1 - mean(transmittance), colour premultiplied over it.
+    const glm::vec4 scalar = gpu::scalarOpacityForm(o);
+    const float alpha = 1.0f - (0.98f + 0.74f + 0.62f) / 3.0f;
+    CHECK(scalar.a == doctest::Approx(alpha));
+    CHECK(scalar.a * scalar.r == doctest::Approx(0.1f));
+    // With nothing transmitted it is the usual (colour, alpha), exactly.
+    const glm::vec4 plain = gpu::scalarOpacityForm(gpu::surfaceOpticsOf(glm::vec3(0.3f, 0.6f, 0.9f), 0.25f, glm::vec3(0.0f)));
+    CHECK(plain.a == doctest::Approx(0.25f));
+    CHECK(plain.g == doctest::Approx(0.6f));
+    // Clear glass that absorbs nothing keeps a finite colour: alpha is held at kMinScalarAlpha.
+    const glm::vec4 clear = gpu::scalarOpacityForm(gpu::surfaceOpticsOf(glm::vec3(0.05f), 1.0f, glm::vec3(1.0f)));
+    CHECK(clear.a == gpu::kMinScalarAlpha);
+    CHECK(std::isfinite(clear.r));
 }

@@ -19,21 +19,27 @@ glm::ivec2 parseSize(const std::string& text) {
 }
 
 void registerModesCommand(CLI::App& app) {
-    auto* cmd = app.add_subcommand("modes", "list the transparency techniques: id, family, robust?, coplanarity?, passes, memory");
+    auto* cmd = app.add_subcommand(
+        "modes", "list the transparency techniques: id, family, robust?, coplanarity?, coloured filters, passes, memory");
     auto withSettings = std::make_shared<bool>(false);
     cmd->add_flag("--settings", *withSettings,
                   "under each technique, its settings: name, range, default, what a change forces, help");
     cmd->callback([withSettings] {
-        std::printf("%-16s %-11s %-7s %-10s %-34s %s\n", "id", "family", "robust", "coplanar", "passes", "memory");
+        std::printf("%-16s %-11s %-7s %-10s %-8s %-34s %s\n", "id", "family", "robust", "coplanar", "filters", "passes",
+                    "memory");
         for (const auto& e : techniqueRegistry()) {
             const auto& i = e.info;
-            std::printf("%-16s %-11s %-7s %-10s %-34s %s\n", i.id.c_str(), i.family.c_str(), i.robust ? "yes" : "no",
-                        i.handlesCoplanarity ? "yes" : "no", i.passes.c_str(), i.memoryModel.c_str());
+            std::printf("%-16s %-11s %-7s %-10s %-8s %-34s %s\n", i.id.c_str(), i.family.c_str(), i.robust ? "yes" : "no",
+                        i.handlesCoplanarity ? "yes" : "no", i.rgbTransmittance ? "rgb" : "scalar", i.passes.c_str(),
+                        i.memoryModel.c_str());
             if (!*withSettings) continue;
             for (const auto& d : e.settings)
                 std::printf("    %-20s %-24s default %-6s change: %-10s %s\n", d.name.c_str(), describeRange(d).c_str(),
                             formatSettingValue(d, d.defaultValue).c_str(), toString(d.change), d.help.c_str());
         }
+        std::printf("\nfilters: how a transmissive (KHR_materials_transmission) surface composites. rgb: its "
+                    "transmittance per channel, exact (glass behind coloured glass keeps both tints). scalar: one "
+                    "alpha, 1 - mean transmittance, with the colour premultiplied over it: brightness kept, tint lost.\n");
     });
 }
 

@@ -168,6 +168,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.family = technique->info().family;
         mode.robust = technique->info().robust;
         mode.handlesCoplanarity = technique->info().handlesCoplanarity;
+        mode.rgbTransmittance = technique->info().rgbTransmittance;
         mode.settingDescriptions = technique->settingDescriptions();
         mode.settings = technique->settings();
         std::unique_ptr<ZoomController> controller;

@@ -78,6 +78,7 @@ struct BenchMode {
     std::string reference;  // the mode its error is measured against (benchReferenceOf)
     bool robust = false;
     bool handlesCoplanarity = false;
+    bool rgbTransmittance = false;  // TechniqueInfo::rgbTransmittance
     double msMedian = 0, msP95 = 0;          // GPU ms of the technique's passes (opaque pass excluded)
     double cpuMsMedian = 0;                  // CPU wall ms of the whole frame
     double opaqueMsMedian = 0;               // GPU ms of the opaque pass, for scale

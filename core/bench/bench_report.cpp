@@ -43,6 +43,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         for (const auto& [name, ms] : m.passMsMedian) passes[name] = finite(ms);
         modes.push_back({
             {"id", m.id}, {"family", m.family}, {"reference", m.reference}, {"robust", m.robust}, {"handles_coplanarity", m.handlesCoplanarity},
+            {"rgb_transmittance", m.rgbTransmittance},
             {"ms_median", finite(m.msMedian)}, {"ms_p95", finite(m.msP95)}, {"cpu_ms_median", finite(m.cpuMsMedian)},
             {"opaque_ms_median", finite(m.opaqueMsMedian)}, {"pass_ms_median", passes},
             {"passes", m.passes}, {"bytes", m.bytes},

@@ -9,6 +9,7 @@
 
 #include "common/bindings.h"
 #include "gl/debug.hpp"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/fragment_lists.hpp"
 #include "oit/volume/volume_resolve.hpp"
@@ -46,18 +47,21 @@ public:
           volume_(volume ? std::make_unique<VolumeResolve>() : nullptr) {}
 
     void render(const FrameContext& frame) override {
-        if (!storeProgram_.program) {
-            const gl::Defines defines = volume_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{};
-            storeProgram_ = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
-            resolveProgram_ =
+        // The volumetric resolve reads the scalar layout (oit/volume/volume_list.glsl).
+        const ColorModel model = volume_ ? ColorModel::Scalar : colorModelFor(frame.scene);
+        programs_ = &programsFor_[int(model)];
+        if (!programs_->store.program) {
+            const gl::Defines defines = withColorModel(volume_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{}, model);
+            programs_->store = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
+            programs_->resolve =
                 gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}, defines);
-            computeResolveProgram_ = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, defines);
+            programs_->computeResolve = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, defines);
         }
         stats_ = {};
         if (volume_) volume_->prepare(frame);
         int resolves = 0;
         const FragmentLists::Run run =
-            lists_.render(frame, storeProgram_, std::uint64_t(settings_.initialNodes), settings_.maxBlockMiB,
+            lists_.render(frame, programs_->store, std::uint64_t(settings_.initialNodes), settings_.maxBlockMiB,
                           [&](const FragmentLists::Tile& tile) {
                               resolve(frame, tile);
                               ++resolves;
@@ -84,14 +88,15 @@ private:
         glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
-        setDepthOrderUniforms(frame, resolveProgram_.id());
-        if (volume_) volume_->bind(frame, resolveProgram_.id());
-        drawFullscreen(frame, resolveProgram_.id());
+        const GLuint program = programs_->resolve.id();
+        setDepthOrderUniforms(frame, program);
+        if (volume_) volume_->bind(frame, program);
+        drawFullscreen(frame, program);
     }
 
     void resolveCompute(const FrameContext& frame, const FragmentLists::Tile& tile) {
         gl::ScopedPass pass(frame.timer, info_.id + " resolve (compute)");
-        const GLuint program = computeResolveProgram_.id();
+        const GLuint program = programs_->computeResolve.id();
         glBindImageTexture(gpu::BIND_RESOLVE_OUTPUT, frame.targets.outputColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                            GL_RGBA32F);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
@@ -107,8 +112,12 @@ private:
                         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
 
-    SceneProgram storeProgram_;
-    gl::Program resolveProgram_, computeResolveProgram_;
+    struct Programs {
+        SceneProgram store;
+        gl::Program resolve, computeResolve;
+    };
+    Programs programsFor_[kColorModels];  // built on first use, per ColorModel
+    Programs* programs_ = nullptr;        // the frame's
     FragmentLists lists_;
     std::unique_ptr<VolumeResolve> volume_;  // abuffer-volume only
 };
@@ -119,6 +128,7 @@ TechniqueEntry abufferEntry() {
     TechniqueInfo info{"abuffer", "reference", true, true, "2 per tile (+1 store per regrow)",
                        "w*h*4 heads + 24 B per fragment, pool grown to the fragments present",
                        "exact reference: per-pixel linked lists of every fragment, sorted by (depth, object, primitive)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<ABuffer>(info, false);
 }
 

@@ -30,6 +30,9 @@ struct TechniqueInfo {
     std::string passes;         // e.g. "1", "N", "ceil(N/2)+1", "2 (+regrow)"
     std::string memoryModel;    // e.g. "none", "w*h*K*8", "pool sized to fragments"
     std::string description;
+    // Composites a transmissive material's coloured filter per channel, exactly (oit/color_model.hpp);
+    // the others composite its scalar form, which keeps its brightness and loses its tint.
+    bool rgbTransmittance = false;
 };
 
 struct TechniqueStats {

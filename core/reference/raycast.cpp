@@ -42,6 +42,7 @@ struct PreparedObject {
     glm::dmat3 linear{1.0};            // the world's upper 3x3 (tangents transform by it)
     glm::dmat3 normalMatrix{1.0};      // inverse transpose of the world's upper 3x3
     double frontSign = 1.0;            // -1 when the world flips winding (negative determinant)
+    glm::vec3 volumeFilter{1.0f};      // scene/scene.hpp's volumeFilterOnEntry, as uVolumeFilter
     std::vector<BvhNode> nodes;
     std::vector<std::uint32_t> order;  // triangle indices, leaves reference ranges of this
 };
@@ -277,12 +278,19 @@ glm::vec3 interpolatedPosition(const PreparedObject& o, const std::uint32_t* idx
                      h.b2 * glm::dvec3(o.positions[idx[2]]));
 }
 
-// The shaded colour at a hit seen along `direction`: the material at the point (scene/
+// What a hit shows: its shaded colour and, for a transmissive material, what it lets through
+// (common/shade_material.glsl's materialTransmitted); zero otherwise.
+struct ShadedHit {
+    glm::vec3 color{0.0f};
+    glm::vec3 transmitted{0.0f};
+};
+
+// The shading at a hit seen along `direction`: the material at the point (scene/
 // texture_sampling.hpp) through common/shading_model.h, as common/surface.glsl does per fragment.
-glm::vec3 shadeHit(const Scene& scene, const std::vector<gpu::PunctualLight>& lights, const PreparedObject& o,
+ShadedHit shadeHit(const Scene& scene, const std::vector<gpu::PunctualLight>& lights, const PreparedObject& o,
                    std::uint32_t tri, const TriangleHit& h, const glm::vec3& baseColor, const glm::dvec3& direction) {
     const Material& material = *o.material;
-    if (material.unlit) return baseColor;
+    if (material.unlit) return {baseColor};
     const Mesh& mesh = *o.mesh;
     const std::uint32_t* idx = mesh.indices.data() + 3 * tri;
     glm::dvec3 normal;
@@ -296,6 +304,7 @@ glm::vec3 shadeHit(const Scene& scene, const std::vector<gpu::PunctualLight>& li
     }
     double len = glm::length(normal);
     glm::vec3 n = len > 0.0 ? glm::vec3(normal / len) : glm::vec3(0.0f);
+    const glm::vec3 interpolated = n;
     const glm::dvec3 bary(h.b0, h.b1, h.b2);
     if (usesNormalTexture(scene, material, mesh)) {
         const glm::dvec4 t = interpolate(mesh.tangents, idx, h);
@@ -307,12 +316,21 @@ glm::vec3 shadeHit(const Scene& scene, const std::vector<gpu::PunctualLight>& li
     const glm::vec3 toEye = glm::vec3(-glm::normalize(direction));
     // common/lighting.glsl's shadeLit: the environment, emission and each light.
     const glm::vec3 facing = gpu::normalFacingEye(n, toEye);
-    glm::vec3 color = gpu::environmentAndEmission(baseColor, m.metallic, m.roughness, m.occlusion, m.emissive, facing, toEye);
+    // Without STRATA_TRANSMISSION the GPU takes transmission 0 and ior 1.5: Material's defaults.
+    const glm::vec3 diffuse = gpu::diffuseAlbedo(baseColor, m.metallic, material.transmission);
+    const glm::vec3 f0 = gpu::specularF0(baseColor, m.metallic, material.ior);
+    ShadedHit out;
+    out.color = gpu::environmentAndEmission(diffuse, f0, m.roughness, m.occlusion, m.emissive, facing, toEye);
     const glm::vec3 at = interpolatedPosition(o, idx, h);
     for (const gpu::PunctualLight& light : lights)
-        color += gpu::reflectedLight(baseColor, m.metallic, m.roughness, facing, toEye, gpu::lightToward(light, at),
-                                     gpu::lightIrradianceAt(light, at));
-    return color;
+        out.color += gpu::reflectedLight(diffuse, f0, m.roughness, facing, toEye, gpu::lightToward(light, at),
+                                         gpu::lightIrradianceAt(light, at));
+    if (material.transmissive()) {
+        out.transmitted = gpu::transmissionFilter(baseColor, m.metallic, material.transmission, material.ior,
+                                                  glm::dot(facing, toEye));
+        if (glm::dot(interpolated, toEye) > 0.0f) out.transmitted *= o.volumeFilter;
+    }
+    return out;
 }
 
 }  // namespace
@@ -404,6 +422,7 @@ RaycastReference::RaycastReference(const Scene& scene, const std::vector<Object>
         double det = glm::determinant(linear);
         p.frontSign = det < 0.0 ? -1.0 : 1.0;
         p.normalMatrix = det != 0.0 ? glm::transpose(glm::inverse(linear)) : glm::dmat3(1.0);
+        p.volumeFilter = volumeFilterOnEntry(material, obj.world);
         BvhBuilder{p, {}}.build();
         (material.isTransparent() ? impl_->transparent : impl_->opaque).push_back(std::move(p));
     }
@@ -467,7 +486,8 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
         out.opaqueObject = best->id;
         out.opaquePrimitive = int(bestTri);
         out.opaqueColor =
-            shadeHit(scene, impl_->lights, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)), direction);
+            shadeHit(scene, impl_->lights, *best, bestTri, bestHit, glm::vec3(baseColorAtHit(scene, *best, bestTri, bestHit)), direction)
+                .color;
     }
 
     // Every transparent hit strictly nearer than the opaque one (the GPU tests GL_GREATER
@@ -485,8 +505,19 @@ PixelSample RaycastReference::sampleRay(const glm::dvec3& origin, const glm::dve
                 f.object = o.id;
                 f.primitive = int(tri);
                 const glm::vec4 base = baseColorAtHit(scene, o, tri, h);
-                f.color = shadeHit(scene, impl_->lights, o, tri, h, glm::vec3(base), direction);
+                const ShadedHit shaded = shadeHit(scene, impl_->lights, o, tri, h, glm::vec3(base), direction);
+                f.color = shaded.color;
                 f.alpha = base.a;
+                if (o.material->transmissive()) {
+                    // common/surface.glsl's surfaceOptics: OPAQUE glass covers its whole surface.
+                    const float coverage = o.material->alphaMode == AlphaMode::Blend ? base.a : 1.0f;
+                    const gpu::SurfaceOptics optics = gpu::surfaceOpticsOf(shaded.color, coverage, shaded.transmitted);
+                    const glm::vec4 scalar = gpu::scalarOpacityForm(optics);
+                    f.color = glm::vec3(scalar);
+                    f.alpha = scalar.a;
+                    f.coloredFilter = true;
+                    f.transmittance = optics.transmittance;
+                }
                 f.frontFacing = frontFacing(o, tri, direction);
                 out.fragments.push_back(f);
             },

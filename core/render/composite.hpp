@@ -14,6 +14,14 @@ struct SurfaceFragment {
     glm::vec3 color{0.0f};  // shaded colour, not premultiplied
     float alpha = 0.0f;
     bool frontFacing = true;
+    // A coloured filter (a transmissive material): what passes behind it per channel, where
+    // alpha * color is still its premultiplied colour and alpha the scalar form the techniques
+    // without RGB transmittance composite (common/shading_model.h's scalarOpacityForm).
+    bool coloredFilter = false;
+    glm::vec3 transmittance{1.0f};
+
+    // What passes behind the fragment, per channel.
+    glm::vec3 passes() const { return coloredFilter ? transmittance : glm::vec3(1.0f - alpha); }
 };
 
 inline bool nearerFirst(const SurfaceFragment& a, const SurfaceFragment& b) {

@@ -27,10 +27,10 @@ int orderFragments(std::vector<SurfaceFragment>& fragments, double tolerance) {
 
 glm::vec3 compositeOrdered(const std::vector<SurfaceFragment>& ordered, const glm::vec3& background) {
     glm::vec3 color(0.0f);
-    float transmittance = 1.0f;
+    glm::vec3 transmittance(1.0f);
     for (const auto& f : ordered) {
         color += transmittance * f.alpha * f.color;
-        transmittance *= 1.0f - f.alpha;
+        transmittance *= f.passes();
     }
     return color + transmittance * background;
 }

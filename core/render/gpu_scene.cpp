@@ -187,7 +187,11 @@ GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(sce
         // A scene with its own lights shades through the light loop; one without, through the
         // default rig's single directional light, with no loop and no light block to read.
         else if (!scene_.lights.empty()) f |= kScenePunctualLights;
+        if (m.usesTransmissionModel()) f |= kSceneTransmission;
+        // Only a transparent object's filter reaches a technique's storage.
+        if (m.transmissive()) coloredFilters_ = true;
         features_.push_back(f);
+        volumeFilter_.push_back(volumeFilterOnEntry(m, o.world));
     }
 }
 
@@ -284,6 +288,12 @@ void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
     const unsigned features = features_[std::size_t(objectIndex)];
     if (features & kSceneNormalTexture) glProgramUniform1f(program, p.normalScale, m.normalScale);
     if (features & kSceneOcclusionTexture) glProgramUniform1f(program, p.occlusionStrength, m.occlusionStrength);
+    if (features & kSceneTransmission) {
+        glProgramUniform1f(program, p.transmission, m.transmission);
+        glProgramUniform1f(program, p.ior, m.ior);
+        glProgramUniform3fv(program, p.volumeFilter, 1, glm::value_ptr(volumeFilter_[std::size_t(objectIndex)]));
+        glProgramUniform1i(program, p.alphaBlend, m.alphaMode == AlphaMode::Blend);
+    }
     for (int slot = 0; slot < kMaterialSlots; ++slot) {
         if (!(features & kSlots[slot].feature)) continue;
         const TextureRef& t = materialTexture(m, slot);
@@ -329,7 +339,7 @@ void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandIn
     if (standIn.first.empty()) return;
     // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
     const SceneProgram& variant =
-        p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & (kSceneUnlit | kScenePunctualLights)));
+        p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & kSceneStandInKeeps));
     setObjectUniforms(variant, objectIndex);
     glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
     glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);

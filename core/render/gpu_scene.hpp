@@ -76,6 +76,10 @@ public:
 
     // The SceneFeature bits object `objectIndex` draws with (textures, vertex colours, MASK, unlit).
     unsigned materialFeatures(int objectIndex) const { return features_[std::size_t(objectIndex)]; }
+    // Some transparent object filters what is behind it per channel (a transmissive material):
+    // the techniques that composite RGB transmittance build their programs for it
+    // (oit/color_model.hpp); every other scene keeps the scalar storage.
+    bool hasColoredFilters() const { return coloredFilters_; }
     // Decoded texture images on the GPU, mip levels included (the panel's and bench's figure).
     std::size_t textureBytes() const { return textureBytes_; }
 
@@ -93,6 +97,8 @@ private:
     std::vector<ObjectVolume> volumes_;
     std::vector<int> volumeEntry_;  // uVolumeEntry per object: 0 surface, +1/-1 entering faces
     std::vector<unsigned> features_;  // SceneFeature bits per object
+    std::vector<glm::vec3> volumeFilter_;  // uVolumeFilter per object (scene/scene.hpp's volumeFilterOnEntry)
+    bool coloredFilters_ = false;
     // Per Scene::images entry, mipmapped, in the encodings materials use it with (colour
     // textures sRGB, the others linear; an unused one has id 0).
     std::vector<gl::Texture> srgbTextures_, linearTextures_;

@@ -33,6 +33,10 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.lightCount = glGetUniformLocation(id, "uLightCount");
     p.normalScale = glGetUniformLocation(id, "uNormalScale");
     p.occlusionStrength = glGetUniformLocation(id, "uOcclusionStrength");
+    p.transmission = glGetUniformLocation(id, "uTransmission");
+    p.ior = glGetUniformLocation(id, "uIor");
+    p.volumeFilter = glGetUniformLocation(id, "uVolumeFilter");
+    p.alphaBlend = glGetUniformLocation(id, "uAlphaBlend");
     const char* slots[5] = {"BaseColor", "MetallicRoughness", "Normal", "Occlusion", "Emissive"};
     for (int i = 0; i < 5; ++i) {
         p.textures[i].transform = glGetUniformLocation(id, ("u" + std::string(slots[i]) + "Transform").c_str());
@@ -110,6 +114,7 @@ const SceneProgram& SceneProgram::variant(unsigned features) const {
         if (features & kSceneEmissiveTexture) defines["STRATA_EMISSIVE_TEXTURE"] = "";
         if (features & kSceneUnlit) defines["STRATA_UNLIT"] = "";
         if (features & kScenePunctualLights) defines["STRATA_PUNCTUAL_LIGHTS"] = "";
+        if (features & kSceneTransmission) defines["STRATA_TRANSMISSION"] = "";
         v->program = buildFromStages(stages, defines);
         // Every plain uniform of this program except the per-object ones GpuScene::draw sets on
         // whichever program draws (samplers, images and blocks bind by layout, not by value).

@@ -31,7 +31,8 @@ enum SceneFeature : unsigned {
     kSceneEmissiveTexture = 128u,          // STRATA_EMISSIVE_TEXTURE
     kSceneUnlit = 256u,                    // STRATA_UNLIT
     kScenePunctualLights = 512u,           // STRATA_PUNCTUAL_LIGHTS: the scene has its own lights
-    kSceneFeatureCombinations = 1024u,     // one past every bit set
+    kSceneTransmission = 1024u,            // STRATA_TRANSMISSION: KHR_materials_transmission, _ior
+    kSceneFeatureCombinations = 2048u,     // one past every bit set
 };
 
 // What a layered impostor does not bake (it keeps normals and depths only): a material's
@@ -39,6 +40,9 @@ enum SceneFeature : unsigned {
 inline constexpr unsigned kSceneSurfaceDetail = kSceneBaseColorTexture | kSceneVertexColor | kSceneAlphaMask |
                                                 kSceneMetallicRoughnessTexture | kSceneNormalTexture |
                                                 kSceneOcclusionTexture | kSceneEmissiveTexture;
+
+// What a stand-in keeps of its object's draw: the factors and lights it shades with.
+inline constexpr unsigned kSceneStandInKeeps = kSceneUnlit | kScenePunctualLights | kSceneTransmission;
 
 // The per-object locations of one material texture's uniforms (common/material.glsl).
 struct TextureUniforms {
@@ -52,7 +56,8 @@ struct SceneProgram {
           volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
           impostorSlices = -1, impostorOverlap = -1,  // common/scene_main.glsl (the variant's)
           metallic = -1, roughness = -1, emissive = -1, eye = -1, lightCount = -1,
-          normalScale = -1, occlusionStrength = -1;  // common/material.glsl (the variant's)
+          normalScale = -1, occlusionStrength = -1,  // common/material.glsl (the variant's)
+          transmission = -1, ior = -1, volumeFilter = -1, alphaBlend = -1;
     // Base colour, metallic-roughness, normal, occlusion, emissive (GpuScene's MaterialSlot order).
     TextureUniforms textures[5];
 

@@ -55,11 +55,12 @@ bool indexedSemantic(const std::string& name, std::string& set, int& index) {
 // KHR_materials_volume gives tau and albedo, KHR_mesh_quantization's integer attributes are
 // decoded like any accessor, KHR_texture_transform places a texture, KHR_materials_emissive_strength
 // scales emission, KHR_materials_unlit drops the light, KHR_lights_punctual's lights replace the
-// default rig.
+// default rig, KHR_materials_transmission and _ior make a coloured filter (without refraction).
 bool implementedExtension(const std::string& extension) {
     return extension == "KHR_materials_volume" || extension == "KHR_mesh_quantization" ||
            extension == "KHR_texture_transform" || extension == "KHR_materials_emissive_strength" ||
-           extension == "KHR_materials_unlit" || extension == "KHR_lights_punctual";
+           extension == "KHR_materials_unlit" || extension == "KHR_lights_punctual" ||
+           extension == "KHR_materials_transmission" || extension == "KHR_materials_ior";
 }
 
 void noteIgnoredAttributes(const tinygltf::Primitive& p, const std::string& place, IgnoredLog& log) {

@@ -201,6 +201,9 @@ struct Converter {
                 const double thickness = number(ext, "thicknessFactor", 0.0, vw);
                 if (!(thickness >= 0.0) || !std::isfinite(thickness)) fail(vw + ": thicknessFactor must be a finite number >= 0");
                 m.volume = thickness > 0.0;
+                m.thickness = float(std::min(thickness, 1.0e6));
+                if (ext.IsObject() && ext.Has("thicknessTexture"))
+                    ignored.note("thicknessTexture", "KHR_materials_volume thicknessTexture ignored: thicknessFactor is used", what);
             }
             scene.materials.push_back(std::move(m));
         }
@@ -232,6 +235,28 @@ struct Converter {
             m.emissive *= float(k);
         }
         m.unlit = g.extensions.count("KHR_materials_unlit") > 0;
+        convertTransmission(g, what, m);
+    }
+
+    // KHR_materials_transmission's factor and KHR_materials_ior (no refraction is drawn: the
+    // README's materials section says what is modelled).
+    void convertTransmission(const tinygltf::Material& g, const std::string& what, Material& m) {
+        auto transmission = g.extensions.find("KHR_materials_transmission");
+        if (transmission != g.extensions.end()) {
+            const std::string tw = what + " KHR_materials_transmission";
+            m.transmission = unitFactor(number(transmission->second, "transmissionFactor", 0.0, tw), "transmissionFactor", what);
+            if (transmission->second.IsObject() && transmission->second.Has("transmissionTexture"))
+                ignored.note("transmissionTexture", "KHR_materials_transmission transmissionTexture ignored: transmissionFactor is used", what);
+        }
+        auto ior = g.extensions.find("KHR_materials_ior");
+        if (ior != g.extensions.end()) {
+            const std::string iw = what + " KHR_materials_ior";
+            const double value = number(ior->second, "ior", 1.5, iw);
+            // The extension allows 0 as "infinite" (a perfect mirror F0 of 1) and >= 1 otherwise.
+            if (!std::isfinite(value) || (value != 0.0 && value < 1.0) || value > 10.0)
+                fail(iw + ": ior must be 0 or a number in [1, 10]");
+            m.ior = value == 0.0 ? 1.0e4f : float(value);
+        }
     }
 
     // A factor the specification bounds to [0, 1]: refused if not a number, clamped (and said

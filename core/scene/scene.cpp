@@ -94,6 +94,12 @@ bool hasTransparency(const Scene& scene, const std::vector<Object>& objects) {
     return false;
 }
 
+glm::vec3 volumeFilterOnEntry(const Material& material, const glm::mat4& world) {
+    if (!material.transmissive() || !(material.thickness > 0.0f)) return glm::vec3(1.0f);
+    const float scale = std::cbrt(std::abs(glm::determinant(glm::mat3(world))));
+    return glm::exp(-material.tau * (material.thickness * scale));
+}
+
 void makeFlatNormals(Mesh& mesh) {
     Mesh out;
     const std::size_t n = mesh.indices.size() / 3 * 3;

@@ -47,6 +47,15 @@ struct Material {
     TextureRef emissiveTexture;
     // KHR_materials_unlit: the base colour is the colour; no light, no emission.
     bool unlit = false;
+    // KHR_materials_transmission (the factor; no refraction): the fraction of the dielectric base
+    // that lets light through, tinted by the base colour, instead of scattering it diffusely
+    // (common/shading_model.h's transmissionFilter). KHR_materials_ior sets the dielectric's
+    // Fresnel reflectance. KHR_materials_volume's thicknessFactor (model units, scaled by the
+    // object's transform) is the path through the medium a surface technique attenuates by tau
+    // where the view ray enters it (render/gpu_scene.cpp's volume filter).
+    float transmission = 0.0f;
+    float ior = 1.5f;
+    float thickness = 0.0f;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;        // MASK: fragments with alpha < cutoff are discarded
     // Volumetric model (Barta & Kovacs): attenuation per metre for each colour channel and the
@@ -62,9 +71,15 @@ struct Material {
     bool volume = false;
     bool doubleSided = true;
 
+    // Light passes through the surface coloured (an unlit material has no transmission).
+    bool transmissive() const { return transmission > 0.0f && !unlit; }
+    // Shades with its transmission or ior (common/material.glsl's STRATA_TRANSMISSION build);
+    // every other lit material is an opaque-base dielectric of ior 1.5, which the plain build assumes.
+    bool usesTransmissionModel() const { return !unlit && (transmission > 0.0f || ior != 1.5f); }
     // Transparent materials go through the transparency technique, everything else through
-    // the opaque pass (MASK is an alpha test, hence opaque).
-    bool isTransparent() const { return alphaMode == AlphaMode::Blend; }
+    // the opaque pass (MASK is an alpha test, hence opaque). Transmissive glass is transparent
+    // whatever its alpha mode.
+    bool isTransparent() const { return alphaMode == AlphaMode::Blend || transmissive(); }
     // The fragment's alpha is tested against alphaCutoff in every pass that draws the object.
     bool alphaTested() const { return alphaMode == AlphaMode::Mask; }
 };
@@ -174,6 +189,13 @@ Bounds worldBounds(const Scene& scene, const std::vector<Object>& objects);
 
 // Counts transparent objects; a scene with none needs no transparency pass.
 bool hasTransparency(const Scene& scene, const std::vector<Object>& objects);
+
+// What a transmissive material's medium lets through where the view ray enters the object, per
+// channel: exp(-tau x thickness x s), with s the object transform's mean scale (the cube root of
+// its determinant's magnitude), KHR_materials_volume's "thickness in the node's coordinate
+// space". 1 for a thin-walled (thickness 0) or non-transmissive material. The surface techniques
+// take it once per entry, without refraction; the volumetric ones integrate tau themselves.
+glm::vec3 volumeFilterOnEntry(const Material& material, const glm::mat4& world);
 
 // Computes flat normals by unwelding (every triangle gets its own three vertices, with their
 // texture coordinates and colours; tangents are dropped, as glTF requires).

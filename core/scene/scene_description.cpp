@@ -91,7 +91,7 @@ glm::vec3 unitRange3(const json& v, const std::string& where) {
 Material parseMaterial(const json& m, const std::string& where) {
     if (!m.is_object()) fail(where + "material: expected an object");
     onlyKeys(m, {"name", "base_color", "alpha", "alpha_mode", "alpha_cutoff", "tau", "albedo", "double_sided", "metallic",
-                 "roughness", "emissive", "unlit"},
+                 "roughness", "emissive", "unlit", "transmission", "ior", "thickness"},
              where + "material: ");
     std::string w = where + "material.";
     Material mat;
@@ -132,11 +132,21 @@ Material parseMaterial(const json& m, const std::string& where) {
         mat.doubleSided = m["double_sided"].get<bool>();
     }
     // The metallic-roughness model (glTF's factors, as the glTF loader reads them).
-    for (auto [key, value] : {std::pair<const char*, float*>{"metallic", &mat.metallic}, {"roughness", &mat.roughness}})
+    for (auto [key, value] : {std::pair<const char*, float*>{"metallic", &mat.metallic}, {"roughness", &mat.roughness},
+                              {"transmission", &mat.transmission}})
         if (m.contains(key)) {
             *value = number(m[key], w + key);
             if (!(*value >= 0.0f && *value <= 1.0f)) fail(w + key + ": must be in [0, 1]");
         }
+    // KHR_materials_ior and KHR_materials_volume's thickness (the glTF loader's bounds).
+    if (m.contains("ior")) {
+        mat.ior = number(m["ior"], w + "ior");
+        if (!(mat.ior >= 1.0f && mat.ior <= 10.0f)) fail(w + "ior: must be in [1, 10]");
+    }
+    if (m.contains("thickness")) {
+        mat.thickness = number(m["thickness"], w + "thickness");
+        if (!(mat.thickness >= 0.0f && mat.thickness <= 1.0e6f)) fail(w + "thickness: must be in [0, 1e6]");
+    }
     if (m.contains("emissive")) mat.emissive = unitRange3(m["emissive"], w + "emissive");
     if (m.contains("unlit")) {
         if (!m["unlit"].is_boolean()) fail(w + "unlit: expected true or false");

@@ -26,19 +26,20 @@ vec3 directionToEye(vec3 worldPosition) {
 }
 
 // A lit material at `worldPosition` with shading normal `normal` (not necessarily unit length):
-// the environment term, emission, and each light's reflectedLight.
-vec3 shadeLit(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive, vec3 normal,
+// the environment term, emission, and each light's reflectedLight, for the diffuse albedo and
+// specular F0 of common/shading_model.h's diffuseAlbedo and specularF0.
+vec3 shadeLit(vec3 diffuse, vec3 f0, float roughness, float occlusion, vec3 emissive, vec3 normal,
               vec3 worldPosition) {
     vec3 toEye = directionToEye(worldPosition);
     vec3 n = normalFacingEye(normal, toEye);
-    vec3 color = environmentAndEmission(baseColor, metallic, roughness, occlusion, emissive, n, toEye);
+    vec3 color = environmentAndEmission(diffuse, f0, roughness, occlusion, emissive, n, toEye);
 #ifdef STRATA_PUNCTUAL_LIGHTS
     for (int i = 0; i < uLightCount; ++i)
-        color += reflectedLight(baseColor, metallic, roughness, n, toEye, lightToward(uLights[i], worldPosition),
+        color += reflectedLight(diffuse, f0, roughness, n, toEye, lightToward(uLights[i], worldPosition),
                                 lightIrradianceAt(uLights[i], worldPosition));
 #else
     // The default rig (scene/lights.hpp's defaultLight): one directional light.
-    color += reflectedLight(baseColor, metallic, roughness, n, toEye, uLightDir, vec3(kDefaultLightIrradiance));
+    color += reflectedLight(diffuse, f0, roughness, n, toEye, uLightDir, vec3(kDefaultLightIrradiance));
 #endif
     return color;
 }

@@ -12,6 +12,8 @@
 //   STRATA_EMISSIVE_TEXTURE            emission (sRGB)
 //   STRATA_ALPHA_MASK                  MASK: common/scene_main.glsl discards below the cutoff
 //   STRATA_UNLIT                       KHR_materials_unlit (common/surface.glsl skips the light)
+//   STRATA_TRANSMISSION                KHR_materials_transmission and _ior (common/surface.glsl's
+//                                      SurfaceOptics); without it transmission is 0 and ior 1.5
 #ifndef STRATA_MATERIAL_GLSL
 #define STRATA_MATERIAL_GLSL
 #include "bindings.h"
@@ -24,6 +26,12 @@ uniform float uAlphaCutoff;
 uniform float uMetallic;
 uniform float uRoughness;
 uniform vec3 uEmissive;  // emissiveFactor x KHR_materials_emissive_strength
+#ifdef STRATA_TRANSMISSION
+uniform float uTransmission;
+uniform float uIor;
+uniform vec3 uVolumeFilter;  // exp(-tau x thickness) through the medium, per channel
+uniform bool uAlphaBlend;    // BLEND: alpha is coverage; OPAQUE glass covers its whole surface
+#endif
 
 #ifdef STRATA_MATERIAL_VARYING
 // Written by common/scene.vert.glsl (and passed on by a geometry stage under the same name).
@@ -106,6 +114,22 @@ vec3 materialEmissive() {
     return uEmissive * texture(uEmissiveTexture, materialTexCoord(uEmissiveTransform, uEmissiveTexCoord)).rgb;
 #else
     return uEmissive;
+#endif
+}
+
+float materialTransmission() {
+#ifdef STRATA_TRANSMISSION
+    return uTransmission;
+#else
+    return 0.0;
+#endif
+}
+
+float materialIor() {
+#ifdef STRATA_TRANSMISSION
+    return uIor;
+#else
+    return kDefaultIor;
 #endif
 }
 

@@ -45,6 +45,25 @@ GPU_CONST float kDefaultLightIrradiance = (1.0f - kAmbient) * kPi;
 GPU_CONST float kMinRoughness = 0.089f;
 // Dielectric reflectance at normal incidence: an index of refraction of 1.5 (glTF appendix B).
 GPU_CONST float kDielectricF0 = 0.04f;
+GPU_CONST float kDefaultIor = 1.5f;
+
+// KHR_materials_ior: a dielectric's reflectance at normal incidence, ((ior - 1) / (ior + 1))^2
+// (kDielectricF0 at the default 1.5; 0 at ior 1, where nothing is reflected).
+GPU_FN float dielectricF0(float ior) {
+    float r = (ior - 1.0f) / (ior + 1.0f);
+    return r * r;
+}
+
+// The two colours appendix B's BRDF mixes, from the material's parameters: the diffuse albedo
+// c_diff = base (1 - metallic), less the fraction `transmission` of the dielectric base that
+// lets light through instead of scattering it (KHR_materials_transmission), and the specular
+// F0 = mix(dielectric F0 from the ior, base, metallic).
+GPU_FN vec3 diffuseAlbedo(vec3 baseColor, float metallic, float transmission) {
+    return baseColor * ((1.0f - metallic) * (1.0f - transmission));
+}
+GPU_FN vec3 specularF0(vec3 baseColor, float metallic, float ior) {
+    return mix(vec3(dielectricF0(ior)), baseColor, metallic);
+}
 
 // glTF 2.0 appendix B, the metallic-roughness BRDF, with alpha = roughness^2.
 // Trowbridge-Reitz (GGX) distribution D, for n.h > 0.
@@ -81,10 +100,10 @@ GPU_FN vec3 normalFacingEye(vec3 normal, vec3 toEye) {
 
 // Radiance reflected towards `toEye` from a light arriving from `toLight` with `irradiance` (on
 // a surface facing it): (f_diffuse + f_specular) E (n.l), with
-//   c_diff = base (1 - metallic), F0 = mix(0.04, base, metallic), F = Schlick(F0, v.h),
-//   f_diffuse = (1 - F) c_diff / pi,  f_specular = F D V.
+//   F = Schlick(F0, v.h), f_diffuse = (1 - F) c_diff / pi,  f_specular = F D V,
+// with c_diff and F0 from diffuseAlbedo and specularF0.
 // All directions are unit vectors; `n` faces the eye.
-GPU_FN vec3 reflectedLight(vec3 baseColor, float metallic, float roughness, vec3 n, vec3 toEye, vec3 toLight,
+GPU_FN vec3 reflectedLight(vec3 diffuse, vec3 f0, float roughness, vec3 n, vec3 toEye, vec3 toLight,
                            vec3 irradiance) {
     float nDotL = dot(n, toLight);
     if (!(nDotL > 0.0f)) return vec3(0.0f);
@@ -96,11 +115,10 @@ GPU_FN vec3 reflectedLight(vec3 baseColor, float metallic, float roughness, vec3
     vec3 h = sumLength > 1e-6f ? sum / sumLength : n;
     float r = max(roughness, kMinRoughness);
     float alpha = r * r;
-    vec3 f0 = mix(vec3(kDielectricF0), baseColor, metallic);
     vec3 f = schlickFresnel(f0, max(dot(toEye, h), 0.0f));
-    vec3 diffuse = (vec3(1.0f) - f) * (baseColor * (1.0f - metallic)) / kPi;
+    vec3 diffuseLobe = (vec3(1.0f) - f) * diffuse / kPi;
     vec3 specular = f * (ggxDistribution(alpha, max(dot(n, h), 0.0f)) * smithVisibility(alpha, nDotL, nDotV));
-    return (diffuse + specular) * irradiance * nDotL;
+    return (diffuseLobe + specular) * irradiance * nDotL;
 }
 
 // What the uniform environment reflects: the diffuse colour times the environment radiance,
@@ -108,14 +126,13 @@ GPU_FN vec3 reflectedLight(vec3 baseColor, float metallic, float roughness, vec3
 // the split-sum table, "Physically Based Shading on Mobile", 2014; within 0.16 of the integral
 // of this BRDF's lobe, tests/shading_model_test.cpp); both scaled by the
 // material's ambient occlusion, which glTF applies to indirect light only.
-GPU_FN vec3 environmentLight(vec3 baseColor, float metallic, float roughness, float occlusion, float nDotV) {
+GPU_FN vec3 environmentLight(vec3 diffuse, vec3 f0, float roughness, float occlusion, float nDotV) {
     float r = max(roughness, kMinRoughness);
     vec4 c = vec4(-1.0f, -0.0275f, -0.572f, 0.022f) * r + vec4(1.0f, 0.0425f, 1.04f, -0.04f);
     float a004 = min(c.x * c.x, exp2(-9.28f * nDotV)) * c.x + c.y;
     vec2 ab = vec2(-1.04f, 1.04f) * a004 + vec2(c.z, c.w);
-    vec3 f0 = mix(vec3(kDielectricF0), baseColor, metallic);
     vec3 specularAlbedo = f0 * ab.x + vec3(ab.y);
-    return (baseColor * (1.0f - metallic) + specularAlbedo) * (kAmbient * occlusion);
+    return (diffuse + specularAlbedo) * (kAmbient * occlusion);
 }
 
 // A light as every shading pass and the CPU reference receive it, in world space: a file's
@@ -170,9 +187,9 @@ GPU_FN vec3 lightIrradianceAt(PunctualLight light, vec3 position) {
 
 // What a lit material shows before its lights: the environment term and its emission. `n` is
 // the normal facing the eye (normalFacingEye). Each light adds its reflectedLight to this.
-GPU_FN vec3 environmentAndEmission(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive, vec3 n,
-                       vec3 toEye) {
-    return environmentLight(baseColor, metallic, roughness, occlusion, max(dot(n, toEye), 0.0f)) + emissive;
+GPU_FN vec3 environmentAndEmission(vec3 diffuse, vec3 f0, float roughness, float occlusion, vec3 emissive, vec3 n,
+                                   vec3 toEye) {
+    return environmentLight(diffuse, f0, roughness, occlusion, max(dot(n, toEye), 0.0f)) + emissive;
 }
 
 // The shaded colour of a lit material under the environment and one light (a scene's further
@@ -181,8 +198,50 @@ GPU_FN vec3 environmentAndEmission(vec3 baseColor, float metallic, float roughne
 GPU_FN vec3 shadeSurface(vec3 baseColor, float metallic, float roughness, float occlusion, vec3 emissive,
                          vec3 normal, vec3 toEye, vec3 toLight, vec3 lightIrradiance) {
     vec3 n = normalFacingEye(normal, toEye);
-    return environmentAndEmission(baseColor, metallic, roughness, occlusion, emissive, n, toEye) +
-           reflectedLight(baseColor, metallic, roughness, n, toEye, toLight, lightIrradiance);
+    vec3 diffuse = diffuseAlbedo(baseColor, metallic, 0.0f);
+    vec3 f0 = specularF0(baseColor, metallic, kDefaultIor);
+    return environmentAndEmission(diffuse, f0, roughness, occlusion, emissive, n, toEye) +
+           reflectedLight(diffuse, f0, roughness, n, toEye, toLight, lightIrradiance);
+}
+
+// KHR_materials_transmission without refraction (the transmitted ray goes on straight): what a
+// transmissive surface lets through, per channel. The transmitted fraction of the dielectric
+// base, tinted by the base colour, less what its specular layer reflects at this view angle
+// (Schlick's Fresnel for the ior). `nDotV` is the cosine between the normal facing the eye and
+// the direction to the eye.
+GPU_FN vec3 transmissionFilter(vec3 baseColor, float metallic, float transmission, float ior, float nDotV) {
+    float f0 = dielectricF0(ior);
+    float m = 1.0f - min(max(nDotV, 0.0f), 1.0f);
+    float m2 = m * m;
+    float fresnel = f0 + (1.0f - f0) * (m2 * m2 * m);
+    return baseColor * (transmission * (1.0f - metallic) * (1.0f - fresnel));
+}
+
+// One transparent fragment's effect on what lies behind it, C = premultiplied + transmittance *
+// C_behind: a coverage `alpha` of a surface that shades `shaded` and lets `transmitted` through
+// (transmissionFilter; zero for a surface that transmits nothing, which gives the usual
+// (alpha c, 1 - alpha)). ("filter" is a reserved word in GLSL.)
+struct SurfaceOptics {
+    vec3 premultiplied;
+    vec3 transmittance;
+};
+GPU_FN SurfaceOptics surfaceOpticsOf(vec3 shaded, float alpha, vec3 transmitted) {
+    SurfaceOptics o;
+    o.premultiplied = shaded * alpha;
+    o.transmittance = vec3(1.0f - alpha) + transmitted * alpha;
+    return o;
+}
+
+// The same fragment as one colour and one alpha, for the techniques that composite a scalar
+// transmittance (the approximate ones, peeling): alpha = 1 - mean(transmittance), colour the
+// premultiplied colour over it, so that alpha * colour is exact and only the filter's tint
+// is lost. Where almost nothing is absorbed (clear glass: a highlight on a filter of ~1) the
+// alpha is held at kMinScalarAlpha, and the colour at most 1 / kMinScalarAlpha times the light.
+GPU_CONST float kMinScalarAlpha = 1.0f / 256.0f;
+GPU_FN vec4 scalarOpacityForm(SurfaceOptics o) {
+    float alpha = 1.0f - (o.transmittance.x + o.transmittance.y + o.transmittance.z) / 3.0f;
+    alpha = min(max(alpha, kMinScalarAlpha), 1.0f);
+    return vec4(o.premultiplied / alpha, alpha);
 }
 
 // The sRGB transfer function's inverse (glTF colour textures; the GL specification's decode for

@@ -17,10 +17,29 @@ vec3 surfaceNormal() {
     return kStandIn ? strataImpostorNormal : vWorldNormal;
 }
 
-// The shaded colour and the alpha of the fragment (common/material.glsl).
+// The fragment's effect on what lies behind it (common/shading_model.h's SurfaceOptics): its
+// premultiplied colour and its transmittance per channel, coloured for a transmissive material.
+// The techniques that composite RGB transmittance store this (oit/fragment_color.glsl).
+SurfaceOptics surfaceOptics() {
+    vec4 base = materialBaseColor();
+    vec3 shaded = shadeMaterial(base.rgb, surfaceNormal(), vWorldPosition);
+#ifdef STRATA_TRANSMISSION
+    float coverage = uAlphaBlend ? base.a : 1.0;
+    return surfaceOpticsOf(shaded, coverage, materialTransmitted(base.rgb, surfaceNormal(), vWorldPosition));
+#else
+    return surfaceOpticsOf(shaded, base.a, vec3(0.0));
+#endif
+}
+
+// The shaded colour and the alpha of the fragment (common/material.glsl); for a transmissive
+// material the scalar form of its optics (shading_model.h's scalarOpacityForm).
 vec4 surfaceColor() {
+#ifdef STRATA_TRANSMISSION
+    return scalarOpacityForm(surfaceOptics());
+#else
     vec4 base = materialBaseColor();
     return vec4(shadeMaterial(base.rgb, surfaceNormal(), vWorldPosition), base.a);
+#endif
 }
 
 // What `distance` metres of this object's medium let through, per channel: exp(-tau d). Finite,

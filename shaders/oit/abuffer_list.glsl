@@ -9,7 +9,7 @@ float fragmentDepth(uint i) { return nodes[i].depth; }
 uint fragmentObject(uint i) { return nodes[i].objectId; }
 uint fragmentPrimitive(uint i) { return nodes[i].primitiveId; }
 
-void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
+void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
     compositePacked(nodes[i].colorRG, nodes[i].colorBA, color, transmittance);
 }
 
@@ -21,7 +21,7 @@ void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
 vec3 resolvePixel(ivec2 pixel, vec3 opaque) {
     gFirstNode = imageLoad(uHeads, pixel).r - 1u;
     vec3 color = vec3(0.0);
-    float transmittance = 1.0;
+    Transmittance transmittance = Transmittance(1.0);
     compositeInDepthOrder(color, transmittance);
 #ifdef LIST_TAIL
     compositeTail(pixel, color, transmittance);

@@ -14,14 +14,15 @@ layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2DArray uHeads;
 layout(binding = BIND_HEADS, r32ui) uniform coherent uimage2D uHeads;
 #endif
 
-// Fills node `index` with one fragment (colour stored as half) and links it in front of the list
-// whose head is the value `head` was swapped out for: every store pass writes nodes this way.
-// The caller swaps the head (imageAtomicExchange(uHeads, ..., index + 1u)) and passes the old one.
-void writeNode(uint index, float depth, uint objectId, uint primitiveBits, vec4 color, uint head) {
+// Fills node `index` with one fragment (its colour words from oit/fragment_color.glsl) and links
+// it in front of the list whose head is the value `head` was swapped out for: every store pass
+// writes nodes this way. The caller swaps the head (imageAtomicExchange(uHeads, ..., index + 1u))
+// and passes the old one.
+void writeNode(uint index, float depth, uint objectId, uint primitiveBits, uvec2 colorWords, uint head) {
     nodes[index].depth = depth;
     nodes[index].objectId = objectId;
     nodes[index].primitiveId = primitiveBits;
-    nodes[index].colorRG = packHalf2x16(color.rg);
-    nodes[index].colorBA = packHalf2x16(color.ba);
+    nodes[index].colorRG = colorWords.x;
+    nodes[index].colorBA = colorWords.y;
     nodes[index].next = head;
 }

@@ -4,6 +4,7 @@
 // but not stored; the host grows the pool to the counted size and renders again.
 #include "surface.glsl"
 #include "abuffer_storage.glsl"
+#include "fragment_color.glsl"
 
 #ifdef VOLUME
 #include "oit/volume/volume_store.glsl"
@@ -23,5 +24,5 @@ void main() {
     uint primitiveBits = uint(gl_PrimitiveID);
 #endif
     uint head = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
-    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, c, head);
+    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, packSurfaceColor(c), head);
 }

@@ -9,7 +9,7 @@
 //
 // The including resolve defines, before including this file:
 //   float fragmentDepth(uint i); uint fragmentObject(uint i); uint fragmentPrimitive(uint i);
-//   void compositeFragment(uint i, inout vec3 color, inout float transmittance);
+//   void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance);
 //   FOR_EACH_FRAGMENT(i): a loop header visiting every fragment index i of the pixel.
 // Up to LOCAL_CAPACITY fragments sort in registers; longer lists are walked by repeated
 // selection, O(n^2) but exact for any depth complexity.
@@ -20,6 +20,7 @@
 #define NO_FRAGMENT 0xFFFFFFFFu
 
 #include "oit/depth_layer.glsl"
+#include "oit/transmittance.glsl"
 
 float orderKey(uint i) { return layerKey(fragmentDepth(i)); }
 
@@ -49,7 +50,7 @@ uint nextInDepthOrder(uint previous) {
     return best;
 }
 
-void compositeLongList(inout vec3 color, inout float transmittance) {
+void compositeLongList(inout vec3 color, inout Transmittance transmittance) {
     uint previous = NO_FRAGMENT;  // the last fragment of the layer composited last
     while (true) {
         uint first = nextInDepthOrder(previous);
@@ -78,7 +79,7 @@ void compositeLongList(inout vec3 color, inout float transmittance) {
     }
 }
 
-void compositeInDepthOrder(inout vec3 color, inout float transmittance) {
+void compositeInDepthOrder(inout vec3 color, inout Transmittance transmittance) {
     // Keys stay in registers beside the indices: the sort reads memory only on an exact key
     // tie, and the layer pass only inside a layer of two or more (coincident surfaces).
     uint local[LOCAL_CAPACITY];

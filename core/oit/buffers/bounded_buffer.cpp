@@ -31,12 +31,17 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
                                      TechniqueStats& stats) {
     id_ = id;
     const std::optional<Shaders> lighter = lighterShaders(frame);
-    SceneProgram& storeProgram = lighter ? lighterStore_ : storeProgram_;
-    gl::Program& resolveProgram = lighter ? lighterResolve_ : resolveProgram_;
+    const Shaders s = lighter ? *lighter : shaders();
+    // A volumetric technique stays scalar on its lighter path too: one technique, one colour model
+    // (TechniqueInfo::rgbTransmittance).
+    const bool volumetric = shaders().storeDefines.count("VOLUME") > 0;
+    const ColorModel model = volumetric ? ColorModel::Scalar : colorModelFor(frame.scene);
+    current_ = &programs_[lighter ? 1 : 0][int(model)];
+    SceneProgram& storeProgram = current_->store;
+    gl::Program& resolveProgram = current_->resolve;
     if (!storeProgram.program) {
-        const Shaders s = lighter ? *lighter : shaders();
-        storeProgram = buildSceneProgram(s.store, s.storeDefines);
-        resolveProgram = gl::buildProgram(s.resolve, s.resolveDefines);
+        storeProgram = buildSceneProgram(s.store, withColorModel(s.storeDefines, model));
+        resolveProgram = gl::buildProgram(s.resolve, withColorModel(s.resolveDefines, model));
     }
     tailTargets_.setPrecision(bounds.tailPrecision);
     allocate(frame, bounds.capacity);

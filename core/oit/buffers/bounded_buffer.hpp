@@ -7,6 +7,7 @@
 #include "oit/buffers/buffer_support.hpp"
 
 #include "gl/shader_program.hpp"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 
 #include <array>
@@ -119,12 +120,19 @@ protected:
 
     void renderFrame(const FrameContext& frame, const std::string& id, const Bounds& bounds, TechniqueStats& stats);
 
-    SceneProgram storeProgram_;
-    gl::Program resolveProgram_;
+    // The frame's store program (renderFrame picks it; beginStorePass sets per-pass uniforms on it).
+    const SceneProgram& storeProgram() const { return current_->store; }
 
 private:
-    SceneProgram lighterStore_;
-    gl::Program lighterResolve_;
+    struct Programs {
+        SceneProgram store;
+        gl::Program resolve;
+    };
+    // Built on first use, by [lighter][ColorModel]: the volumetric builds stay scalar (their
+    // resolve reads the scalar layout), every other build composites coloured filters exactly
+    // in a scene that has them.
+    Programs programs_[2][kColorModels];
+    Programs* current_ = nullptr;
     std::string id_;
     Counters counters_;
     TailTargets tailTargets_;

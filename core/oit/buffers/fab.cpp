@@ -65,6 +65,7 @@ TechniqueEntry fabEntry() {
                        "fixed-size per-pixel arrays of K entries with an atomic per-pixel counter (r32ui image); keeps "
                        "the first K fragments to arrive, counts the rest (dropped, or blended approximately with tail=1); "
                        "resolve sorts by (depth, object, primitive)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<Fab>(info);
 }
 

@@ -58,7 +58,8 @@ private:
     int storePasses() const override { return 2; }
     std::string storePassName(int pass) const override { return pass == 0 ? "kbuffer depth keys" : "kbuffer attributes"; }
     void beginStorePass(int pass) override {
-        glProgramUniform1i(storeProgram_.id(), glGetUniformLocation(storeProgram_.id(), "uPass"), pass);
+        const GLuint program = storeProgram().id();
+        glProgramUniform1i(program, glGetUniformLocation(program, "uPass"), pass);
     }
     // The tail is written in the attribute pass only, where a fragment knows it was not kept.
     bool storePassWritesTail(int pass) const override { return pass == 1; }
@@ -83,6 +84,7 @@ TechniqueEntry kbufferEntry() {
                        "k-buffer of the K nearest fragments per pixel, no interlock: lock-free 32-bit atomicMax "
                        "insertion of depth keys, then slots claimed by atomicCompSwap; what does not fit is dropped "
                        "(or blended approximately with tail=1); K bounded (max 64), so not robust"};
+    info.rgbTransmittance = true;
     return techniqueEntry<KBuffer>(info);
 }
 

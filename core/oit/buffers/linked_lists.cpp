@@ -116,6 +116,7 @@ TechniqueEntry llEntry() {
                        "per-pixel linked lists: head-pointer image, one global atomic counter, a fixed node pool "
                        "(capacity nodes per pixel on average, never grown); overflow counted and dropped or blended "
                        "approximately (tail=1); resolve sorts by (depth, object, primitive)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<LinkedLists>(info, false);
 }
 

@@ -10,6 +10,7 @@
 
 #include "common/bindings.h"
 #include "gl/shader_program.hpp"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 
 #include <algorithm>
@@ -36,10 +37,12 @@ public:
     using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
-        if (!storeProgram_.program) {
-            storeProgram_ = buildSceneProgram("oit/buffers/sbuffer_store.frag.glsl");
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
-                                               {{"LAYOUT_SBUFFER", ""}});
+        const ColorModel model = colorModelFor(frame.scene);
+        programs_ = &programsFor_[int(model)];
+        if (!programs_->store.program) {
+            programs_->store = buildSceneProgram("oit/buffers/sbuffer_store.frag.glsl", withColorModel({}, model));
+            programs_->resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
+                                                  withColorModel({{"LAYOUT_SBUFFER", ""}}, model));
         }
         const auto pixels = std::uint64_t(frame.size.x) * frame.size.y;
         if (offsetsSize_ != pixels) {
@@ -47,7 +50,7 @@ public:
             offsetsSize_ = pixels;
         }
         stats_ = {};
-        const GLuint program = storeProgram_.id();
+        const GLuint program = programs_->store.id();
         glProgramUniform1ui(program, glGetUniformLocation(program, "uWidth"), GLuint(frame.size.x));
         const GLint passLocation = glGetUniformLocation(program, "uPass");
         {
@@ -61,7 +64,7 @@ public:
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             setTransparentDepthState(frame);
             glProgramUniform1i(program, passLocation, 0);
-            stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+            stats_.objectDraws += drawTransparent(frame, programs_->store, frame.transparentOrder);
             storeBarrier();
             ++stats_.passes;
         }
@@ -84,7 +87,7 @@ public:
                                "sbuffer entries");
             entriesSize_ = capacity;
         }
-        const GLuint resolve = resolveProgram_.id();
+        const GLuint resolve = programs_->resolve.id();
         for (const Band& band : bands) {
             const bool whole = bands.size() == 1;
             if (!whole) {
@@ -102,7 +105,7 @@ public:
                 glProgramUniform1ui(program, glGetUniformLocation(program, "uCapacity"), GLuint(capacity));
                 glProgramUniform1ui(program, glGetUniformLocation(program, "uBase"), GLuint(band.base));
                 glProgramUniform1i(program, passLocation, 1);
-                stats_.objectDraws += drawTransparent(frame, storeProgram_, frame.transparentOrder);
+                stats_.objectDraws += drawTransparent(frame, programs_->store, frame.transparentOrder);
                 glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                 storeBarrier();
                 ++stats_.passes;
@@ -158,8 +161,12 @@ private:
         return bands;
     }
 
-    SceneProgram storeProgram_;
-    gl::Program resolveProgram_;
+    struct Programs {
+        SceneProgram store;
+        gl::Program resolve;
+    };
+    Programs programsFor_[kColorModels];  // built on first use, per ColorModel (oit/color_model.hpp)
+    Programs* programs_ = nullptr;        // the frame's
     gl::Buffer offsets_, entries_;
     std::uint64_t offsetsSize_ = 0, entriesSize_ = 0;
     PrefixSum scan_;
@@ -175,6 +182,7 @@ TechniqueEntry sbufferEntry() {
                        "largest band of rows) + prefix-sum block totals + 16",
                        "S-buffer: counting pass, GPU prefix sum over pixels (work-efficient block scan), variable "
                        "contiguous region per pixel, store, resolve sorting by (depth, object, primitive)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<SBuffer>(info);
 }
 

@@ -8,6 +8,7 @@
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/fragment_lists.hpp"
 #include "oit/peeling/bucket_range.hpp"
@@ -46,15 +47,17 @@ public:
     explicit BucketLists(TechniqueInfo info) : TechniqueWithSettings(std::move(info)), lists_(info_.id) {}
 
     void render(const FrameContext& frame) override {
-        if (!storeProgram_.program) {
-            storeProgram_ = buildSceneProgram("oit/peeling/bun_ll_store.frag.glsl");
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_ll_resolve.frag.glsl"},
-                                               {{"MAX_BUCKETS", std::to_string(kMaxBuckets)}});
+        const ColorModel model = colorModelFor(frame.scene);
+        programs_ = &programsFor_[int(model)];
+        if (!programs_->store.program) {
+            programs_->store = buildSceneProgram("oit/peeling/bun_ll_store.frag.glsl", withColorModel({}, model));
+            programs_->resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_ll_resolve.frag.glsl"},
+                                                  withColorModel({{"MAX_BUCKETS", std::to_string(kMaxBuckets)}}, model));
         }
         stats_ = {};
         const int buckets = settings_.buckets;
         range_.render(frame, settings_.rangeFromGeometry, stats_);
-        const GLuint store = storeProgram_.id(), resolve = resolveProgram_.id();
+        const GLuint store = programs_->store.id(), resolve = programs_->resolve.id();
         glProgramUniform1i(store, glGetUniformLocation(store, "uBuckets"), buckets);
         glProgramUniform1f(store, glGetUniformLocation(store, "uDepthA"), frame.projection[2][2]);
         glProgramUniform1f(store, glGetUniformLocation(store, "uDepthB"), frame.projection[3][2]);
@@ -66,7 +69,7 @@ public:
         lists_.setHeadLayers(buckets);
         int resolves = 0;
         const FragmentLists::Run run =
-            lists_.render(frame, storeProgram_, std::uint64_t(settings_.initialNodes), settings_.maxBlockMiB,
+            lists_.render(frame, programs_->store, std::uint64_t(settings_.initialNodes), settings_.maxBlockMiB,
                           [&](const FragmentLists::Tile& tile) {
                               composite(frame, tile);
                               ++resolves;
@@ -88,11 +91,15 @@ private:
         glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
-        drawFullscreen(frame, resolveProgram_.id());
+        drawFullscreen(frame, programs_->resolve.id());
     }
 
-    SceneProgram storeProgram_;
-    gl::Program resolveProgram_;
+    struct Programs {
+        SceneProgram store;
+        gl::Program resolve;
+    };
+    Programs programsFor_[kColorModels];  // built on first use, per ColorModel (oit/color_model.hpp)
+    Programs* programs_ = nullptr;        // the frame's
     BucketRange range_;
     FragmentLists lists_;
 };
@@ -108,6 +115,7 @@ TechniqueEntry bunLlEntry() {
                        "Table 1: 3C(Zall)+8 to 15C(Zall)+8 words",
                        "BUN-LL: uniform depth buckets of linked lists in one pass, each bucket post-sorted; exact "
                        "ties by the project's rule, across bucket boundaries too"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::BucketLists>(info);
 }
 

@@ -6,6 +6,7 @@ layout(std430, binding = BIND_ENTRIES) coherent buffer FragmentEntries {
     FragmentEntry entries[];
 };
 
-FragmentEntry makeEntry(float depth, uint objectId, uint primitiveId, vec4 color) {
-    return FragmentEntry(depth, objectId, primitiveId, packHalf2x16(color.rg), packHalf2x16(color.ba));
+// `colorWords` from oit/fragment_color.glsl.
+FragmentEntry makeEntry(float depth, uint objectId, uint primitiveId, uvec2 colorWords) {
+    return FragmentEntry(depth, objectId, primitiveId, colorWords.x, colorWords.y);
 }

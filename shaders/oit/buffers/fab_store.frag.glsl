@@ -5,6 +5,7 @@
 // FIRST K fragments to arrive, not the nearest; what overflows is dropped or goes to the tail.
 #include "surface.glsl"
 #include "entry.glsl"
+#include "oit/fragment_color.glsl"
 #include "tail_store.glsl"
 
 layout(early_fragment_tests) in;
@@ -16,11 +17,12 @@ uniform uint uCapacity;
 
 void main() {
     vec4 c = surfaceColor();
+    uvec2 words = packSurfaceColor(c);
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint slot = imageAtomicAdd(uCounts, pixel, 1u);
     if (slot < uCapacity) {
         uint index = (uint(pixel.y) * uWidth + uint(pixel.x)) * uCapacity + slot;
-        entries[index] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c);
+        entries[index] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words);
         atomicCounterIncrement(uStored);
         tailNone();
     } else {

@@ -15,6 +15,7 @@
 // (a transparent fragment passing GL_GREATER against the opaque depth has depth > 0).
 #include "surface.glsl"
 #include "entry.glsl"
+#include "oit/fragment_color.glsl"
 #include "tail_store.glsl"
 
 layout(early_fragment_tests) in;
@@ -43,6 +44,7 @@ void main() {
         return;
     }
     vec4 c = surfaceColor();
+    uvec2 words = packSurfaceColor(c);
     bool stored = false;
     for (uint i = 0u; i < uCapacity && !stored; ++i) {
         uint k = depthKeys[first + i];
@@ -51,8 +53,8 @@ void main() {
         if (atomicCompSwap(entries[first + i].objectId, kUnclaimed, uObjectId) == kUnclaimed) {
             entries[first + i].depth = gl_FragCoord.z;
             entries[first + i].primitiveId = uint(gl_PrimitiveID);
-            entries[first + i].colorRG = packHalf2x16(c.rg);
-            entries[first + i].colorBA = packHalf2x16(c.ba);
+            entries[first + i].colorRG = words.x;
+            entries[first + i].colorBA = words.y;
             stored = true;
         }
     }

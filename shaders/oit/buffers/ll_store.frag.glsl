@@ -5,6 +5,7 @@
 // with the tail on, blended approximately.
 #include "surface.glsl"
 #include "oit/abuffer_storage.glsl"
+#include "oit/fragment_color.glsl"
 #include "buffer_bindings.h"
 #include "tail_store.glsl"
 
@@ -18,6 +19,7 @@ uniform uint uCapacity;  // nodes in the pool
 
 void main() {
     vec4 c = surfaceColor();
+    uvec2 words = packSurfaceColor(c);
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) { tailAdd(c); return; }
 #ifdef VOLUME
@@ -26,6 +28,6 @@ void main() {
     uint primitiveBits = uint(gl_PrimitiveID);
 #endif
     uint head = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
-    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, c, head);
+    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, words, head);
     tailNone();
 }

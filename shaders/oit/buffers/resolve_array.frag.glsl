@@ -51,7 +51,7 @@ float fragmentDepth(uint i) { return entries[i].depth; }
 uint fragmentObject(uint i) { return entries[i].objectId; }
 uint fragmentPrimitive(uint i) { return entries[i].primitiveId; }
 
-void compositeFragment(uint e, inout vec3 color, inout float transmittance) {
+void compositeFragment(uint e, inout vec3 color, inout Transmittance transmittance) {
     compositePacked(entries[e].colorRG, entries[e].colorBA, color, transmittance);
 }
 
@@ -67,7 +67,7 @@ void main() {
     pixelRange(pixel, gFirst, count);
     gEnd = gFirst + count;
     vec3 color = vec3(0.0);
-    float transmittance = 1.0;
+    Transmittance transmittance = Transmittance(1.0);
     compositeInDepthOrder(color, transmittance);
     compositeTail(pixel, color, transmittance);
     outColor = vec4(color + transmittance * opaque, 1.0);

@@ -11,6 +11,7 @@
 // fragments are counted, never written out of bounds.
 #include "surface.glsl"
 #include "entry.glsl"
+#include "oit/fragment_color.glsl"
 
 layout(early_fragment_tests) in;
 layout(std430, binding = BIND_PIXEL_OFFSETS) coherent buffer PixelOffsets { uint offsets[]; };
@@ -29,5 +30,5 @@ void main() {
     }
     uint slot = atomicAdd(offsets[index], 1u) - uBase;
     if (slot >= uCapacity) { atomicCounterIncrement(uDropped); return; }
-    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), surfaceColor());
+    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), packSurfaceColor(surfaceColor()));
 }

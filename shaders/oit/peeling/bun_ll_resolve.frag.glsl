@@ -23,7 +23,7 @@ uint gHeads[MAX_BUCKETS];  // the pixel's list heads as node indices, 0xFFFFFFFF
 float fragmentDepth(uint i) { return nodes[i].depth; }
 uint fragmentObject(uint i) { return nodes[i].objectId; }
 uint fragmentPrimitive(uint i) { return nodes[i].primitiveId; }
-void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
+void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
     compositePacked(nodes[i].colorRG, nodes[i].colorBA, color, transmittance);
 }
 
@@ -38,7 +38,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     for (int b = 0; b < uBuckets; ++b) gHeads[b] = imageLoad(uHeads, ivec3(pixel, b)).r - 1u;
     vec3 color = vec3(0.0);
-    float transmittance = 1.0;
+    Transmittance transmittance = Transmittance(1.0);
     compositeInDepthOrder(color, transmittance);
     outColor = vec4(color + transmittance * texelFetch(uOpaqueColor, pixel, 0).rgb, 1.0);
 }

@@ -8,6 +8,7 @@
 #include "surface.glsl"
 #include "bun_bucket.glsl"
 #include "oit/abuffer_storage.glsl"
+#include "oit/fragment_color.glsl"
 
 layout(early_fragment_tests) in;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
@@ -19,5 +20,5 @@ void main() {
     vec4 c = surfaceColor();
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint head = imageAtomicExchange(uHeads, ivec3(pixel, bucketOf(pixel, gl_FragCoord.z)), index + 1u);
-    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c, head);
+    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), packSurfaceColor(c), head);
 }

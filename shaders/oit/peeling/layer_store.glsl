@@ -6,6 +6,7 @@
 //  LAYER_FAB, LAYER_KB: [0] stored, [1] overflowed (the layer held more than K at the pixel).
 // Needs surface.glsl (uObjectId) before it.
 #include "layer_storage.glsl"
+#include "oit/fragment_color.glsl"
 
 #if defined(LAYER_LIST)
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uFrontCount;
@@ -18,6 +19,7 @@ layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uOverflowed;
 #endif
 
 void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
+    uvec2 words = packSurfaceColor(c);
 #if defined(LAYER_LIST)
     uint index;
     if (side == 0) {
@@ -29,11 +31,11 @@ void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
         index = uCapacity - 1u - fromEnd;
     }
     uint head = imageAtomicExchange(uHeads, sidePixel(pixel, side), index + 1u);
-    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c, head);
+    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words, head);
 #elif defined(LAYER_FAB)
     uint slot = imageAtomicAdd(uCounts, sidePixel(pixel, side), 1u);
     if (slot < uCapacity) {
-        entries[firstEntry(pixel, side) + slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), c);
+        entries[firstEntry(pixel, side) + slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words);
         atomicCounterIncrement(uStored);
     } else {
         atomicCounterIncrement(uOverflowed);
@@ -46,8 +48,8 @@ void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
         if (atomicCompSwap(entries[first + i].objectId, kUnclaimed, uObjectId) == kUnclaimed) {
             entries[first + i].depth = gl_FragCoord.z;
             entries[first + i].primitiveId = uint(gl_PrimitiveID);
-            entries[first + i].colorRG = packHalf2x16(c.rg);
-            entries[first + i].colorBA = packHalf2x16(c.ba);
+            entries[first + i].colorRG = words.x;
+            entries[first + i].colorBA = words.y;
             atomicCounterIncrement(uStored);
             return;
         }

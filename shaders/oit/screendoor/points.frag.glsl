@@ -17,5 +17,5 @@ layout(location = 0) out vec4 outColor;
 void main() {
     vec4 color = objectColors[vObjectId];  // alpha 0: unlit (core/oit/screendoor/point_samples.cpp)
     outColor = vec4(color.a == 0.0 ? color.rgb
-                                   : shadeLit(color.rgb, 0.0, 1.0, 1.0, vec3(0.0), vPointNormal, vPointPosition), 1.0);
+                                   : shadeLit(color.rgb, vec3(kDielectricF0), 1.0, 1.0, vec3(0.0), vPointNormal, vPointPosition), 1.0);
 }
