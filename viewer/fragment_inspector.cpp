@@ -158,9 +158,16 @@ void FragmentInspector::drawWindow(const GpuScene& scene) {
             ImGui::SameLine();
             ImGui::Text("%.2f %.2f %.2f", f.color.r, f.color.g, f.color.b);
             ImGui::TableNextColumn();
-            const AlphaParts parts = alphaParts(scene, f);
-            ImGui::Text("%.3f = %.3f x %.3f", f.alpha, parts.factor, parts.texel);
-            helpTooltip("the fragment's alpha = the material's alpha factor x the texture's (and COLOR_0's) alpha here");
+            if (f.coloredFilter) {
+                ImGui::Text("%.3f, passes %.2f %.2f %.2f", f.alpha, f.transmittance.r, f.transmittance.g,
+                            f.transmittance.b);
+                helpTooltip("transmissive glass: what passes behind it per channel (the rgb techniques composite "
+                            "that); alpha is its scalar form, 1 - mean, which the others composite");
+            } else {
+                const AlphaParts parts = alphaParts(scene, f);
+                ImGui::Text("%.3f = %.3f x %.3f", f.alpha, parts.factor, parts.texel);
+                helpTooltip("the fragment's alpha = the material's alpha factor x the texture's (and COLOR_0's) alpha here");
+            }
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(tied ? "tied" : "");
             helpTooltip(tied ? "same depth layer as the fragment above (the tie rule): coplanar" : "");
@@ -191,10 +198,11 @@ void FragmentInspector::printFigures(const GpuScene& scene) const {
     for (std::size_t i = 0; i < in.reference.fragments.size(); ++i) {
         const SurfaceFragment& f = in.reference.fragments[i];
         const AlphaParts parts = alphaParts(scene, f);
+        const glm::vec3 passes = f.passes();
         std::printf("fragment: %zu depth=%.6f object=%d (%s) primitive=%d rgb=%.4f,%.4f,%.4f alpha=%.4f "
-                    "alpha_factor=%.4f texel_alpha=%.4f kept=%s\n",
+                    "alpha_factor=%.4f texel_alpha=%.4f passes=%.4f,%.4f,%.4f kept=%s\n",
                     i, f.depth, f.object, objectName(scene, f.object).c_str(), f.primitive, f.color.r, f.color.g,
-                    f.color.b, f.alpha, parts.factor, parts.texel, keptName(in.kept[i]));
+                    f.color.b, f.alpha, parts.factor, parts.texel, passes.r, passes.g, passes.b, keptName(in.kept[i]));
     }
 }
 

@@ -147,8 +147,9 @@ glm::vec3 paletteColor(int i) {
 
 const std::vector<BuiltinSceneInfo>& builtinScenes() {
     static const std::vector<BuiltinSceneInfo> list = {
-        {"layers", "N[:textured] (1..4096, default 8)",
-         "N full-view parallel unlit quads, depth complexity exactly N; textured: through a white texture"},
+        {"layers", "N[:textured|lit|glass] (1..4096, default 8)",
+         "N full-view parallel unlit quads, depth complexity exactly N; textured: through a white texture; lit: "
+         "shaded, alpha 0.5; glass: shaded coloured glass (transmission 1), the same scene with coloured filters"},
         {"coplanar", "K (1..1024, default 4)", "K coincident full-view quads: one depth, K fragments"},
         {"shells", "K[:roundoff] (1..1024, default 2)",
          "K coincident transparent spheres; roundoff: the copies differ by float round-off only"},
@@ -158,8 +159,9 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
          "N full-view closed slabs of medium (tau, albedo), 0.1 thick: exactly 2N fragments per pixel"},
         {"field", "N[:transparent] (1..1000, default 100)",
          "N instances of one dense mesh (46080 triangles) on a grid over an opaque ground: the impostor LOD bench"},
-        {"default", "", "the demo room: interpenetrating glass, a decal on a transparent panel, a wireframe over its "
-                        "surface, volumes, dense opaque detail behind"},
+        {"default", "", "the demo room: interpenetrating glass, a decal on a transparent panel in front of coloured "
+                        "glass behind glass (transmission), a stained-glass pane, a foliage card, a wireframe over "
+                        "its surface, volumes, dense opaque detail behind"},
     };
     return list;
 }
@@ -186,6 +188,22 @@ Scene makeLayersScene(int layers, float alpha, bool textured) {
     }
     s.camera = CameraPose{};
     s.lightDirection = {0, 0, 1};
+    return s;
+}
+
+Scene makeLitLayersScene(int layers, bool glass) {
+    Scene s = emptyScene("layers:" + std::to_string(layers) + (glass ? ":glass" : ":lit"));
+    for (int i = 0; i < layers; ++i) {
+        float d = kFirstLayer + kLayerSpacing * float(i);
+        Material m = glass ? opaque("glass" + std::to_string(i), paletteColor(i))
+                           : transparent("layer" + std::to_string(i), paletteColor(i), 0.5f);
+        m.roughness = 0.5f;
+        if (glass) m.transmission = 1.0f;
+        placeMesh(s, s.addMesh(makeQuad(4.0f * d, 4.0f * d)), s.addMaterial(m), glm::translate(glm::mat4(1.0f), {0, 0, -d}),
+                  m.name);
+    }
+    s.camera = CameraPose{};
+    s.lightDirection = glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f));
     return s;
 }
 
@@ -344,6 +362,23 @@ Scene makeDefaultScene() {
     glassSphere.roughness = 0.3f;
     placeMesh(s, s.addMesh(makeSphere(0.45f, 32, 16)), s.addMaterial(glassSphere),
               glm::translate(identity, {-1.6f, 1.65f, -1.2f}), "glass sphere");
+    // Glass behind glass behind a BLEND decal: two thin panes of coloured transmissive glass
+    // (KHR_materials_transmission, OPAQUE) behind the decal's panel, overlapping. Where they
+    // overlap, the techniques that composite RGB transmittance pass the product of the tints
+    // (amber x cyan: green); the others pass a grey of the same brightness (`strata modes`).
+    Material amber = opaque("amber glass", {1.0f, 0.55f, 0.1f});
+    amber.transmission = 1.0f;
+    amber.roughness = 0.15f;
+    Material cyan = opaque("cyan glass", {0.1f, 0.8f, 1.0f});
+    cyan.transmission = 1.0f;
+    cyan.roughness = 0.15f;
+    const int pane = s.addMesh(makeQuad(1.6f, 1.3f));
+    placeMesh(s, pane, s.addMaterial(amber),
+              glm::rotate(glm::translate(identity, {-0.55f, 1.75f, -3.3f}), glm::radians(12.0f), glm::vec3(0, 1, 0)),
+              "amber glass");
+    placeMesh(s, pane, s.addMaterial(cyan),
+              glm::rotate(glm::translate(identity, {0.25f, 1.45f, -3.9f}), glm::radians(-10.0f), glm::vec3(0, 1, 0)),
+              "cyan glass");
     // Two intersecting volumes on the right pedestal (media for ll-volume / abuffer-volume).
     int sphere = s.addMesh(makeSphere(0.5f, 40, 20));
     Material red = transparent("red volume", {0.95f, 0.3f, 0.2f}, 0.4f);
@@ -463,9 +498,11 @@ Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
     if (name == "layers") {
         auto second = arg.find(':');
         std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
-        if (second != std::string::npos && option != "textured")
-            throw std::invalid_argument("builtin:" + spec + ": the only option of layers is 'textured'");
-        return makeLayersScene(parseCount(spec, arg.substr(0, second), 8, 1, 4096), 0.5f, option == "textured");
+        if (second != std::string::npos && option != "textured" && option != "lit" && option != "glass")
+            throw std::invalid_argument("builtin:" + spec + ": the options of layers are 'textured', 'lit' and 'glass'");
+        const int count = parseCount(spec, arg.substr(0, second), 8, 1, 4096);
+        if (option == "lit" || option == "glass") return makeLitLayersScene(count, option == "glass");
+        return makeLayersScene(count, 0.5f, option == "textured");
     }
     if (name == "coplanar") return makeCoplanarScene(parseCount(spec, arg, 4, 1, 1024));
     if (name == "shells") {

@@ -1,7 +1,8 @@
 #pragma once
 // Procedural scenes whose depth complexity and coplanarity are known by construction:
 //   builtin:layers:N     N parallel quads covering the view (depth complexity exactly N), nearest
-//                        first in submission order
+//                        first in submission order; :lit shaded at alpha 0.5, :glass as coloured
+//                        transmissive glass of the same tints (the colour-filter bench pair)
 //   builtin:coplanar:K   K coincident full-view quads with different colours (one depth, K fragments)
 //   builtin:shells:K[:roundoff]  K coincident transparent spheres (two fragments each per pixel);
 //                        with roundoff, copy i is scaled by 1 + i ulps and placed through another
@@ -44,6 +45,9 @@ Scene makeBuiltinScene(const std::string& spec);
 // (trilinear, mipmapped, UVs over the quad): the image is the untextured one's, and the bench's
 // difference between the two is what the texture fetch costs each technique.
 Scene makeLayersScene(int layers, float alpha = 0.5f, bool textured = false);
+// The same layers shaded (roughness 0.5, a light from the upper right): BLEND alpha 0.5, or with
+// `glass` coloured transmissive glass (transmission 1, OPAQUE) of the same tints.
+Scene makeLitLayersScene(int layers, bool glass);
 Scene makeCoplanarScene(int copies, float alpha = 0.5f);
 Scene makeShellsScene(int copies, bool roundoff);
 Scene makeCubesScene(bool separated);
