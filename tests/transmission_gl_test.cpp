@@ -10,6 +10,7 @@
 #include "material_test_scenes.hpp"
 
 #include "reference/raycast.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <doctest/doctest.h>
 
@@ -69,8 +70,8 @@ TEST_CASE("glass behind coloured glass: the RGB techniques pass the product of t
         rgbTechniques += t->info().rgbTransmittance;
         for (int c = 0; c < 3; ++c) CHECK(std::abs(through[c] - want[c]) <= kTolerance);
     }
-    // abuffer, ll, fab, kbuffer, sbuffer, bun-ll.
-    CHECK(rgbTechniques == 6);
+    // abuffer, ll, fab, kbuffer, sbuffer, bun-ll, f2b, dual.
+    CHECK(rgbTechniques == 8);
 }
 
 TEST_CASE("a BLEND decal over lit coloured glass behind glass matches the reference on the RGB techniques") {
@@ -127,5 +128,23 @@ TEST_CASE("every technique draws coloured glass: each build of the transmission 
             CHECK(c[k] >= 0.0f);
             CHECK(c[k] <= 1.5f);
         }
+    }
+}
+
+TEST_CASE("six panes of coloured glass: every RGB technique equals the reference, peeling over several passes") {
+    test::glContext();
+    Scene s = makeLitLayersScene(6, true);
+    const std::vector<Object> objects = flatten(s);
+    const Camera camera = defaultCamera(s, objects);
+    const Image cpu = raycastReference(s, objects, camera, kSize.x, kSize.y);
+    GpuScene gpu(std::move(s));
+    for (const std::string& id : exactIds()) {
+        auto t = exactTechnique(id);
+        if (!t->info().rgbTransmittance) continue;
+        CAPTURE(id);
+        if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=8");
+        test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
+        CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
+        CHECK_FALSE(r.result.stats.overflowed);
     }
 }

@@ -6,9 +6,12 @@
 // the back layer over the back accumulation. ceil(D/2) peel passes: the peel pass counts the
 // fragments strictly inside the range, and when there are none the next pass is not issued.
 // Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
+// In a scene with coloured filters (oit/color_model.hpp) the layers carry their filters and both
+// accumulations what they let through per channel, in four more targets (dual_blend.frag.glsl).
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
@@ -23,8 +26,9 @@ public:
     using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
-        ensurePrograms();
-        ensureTargets(frame.size);
+        const ColorModel model = colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, model);
         stats_ = {};
         skipper_.beginFrame(frame, settings_.skipPeeled);
         std::uint64_t total = initialise(frame);
@@ -32,6 +36,11 @@ public:
             const float clearAccum[4] = {0, 0, 0, 1};
             glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
             glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+            if (rgb()) {
+                const float nothingAbsorbed[4] = {1, 1, 1, 1};
+                glClearTexImage(frontAccumFilter_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+                glClearTexImage(backAccumFilter_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+            }
             for (int pass = 1;; ++pass) {
                 if (pass > settings_.maxPasses) {
                     stats_.overflowed = true;
@@ -50,26 +59,36 @@ public:
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Two RG32F min-max targets (8 B), front and back layers and front and back
         // accumulations (RGBA16F, 8 B, or RGBA32F, 16 B, each).
-        stats_.bytes = pixels * (2 * 8 + 4 * floatTexelBytes(settings_.precision, 4));
+        // With coloured filters, four more: the layers' filters and the accumulations'.
+        stats_.bytes = pixels * (2 * 8 + (rgb() ? 8 : 4) * floatTexelBytes(settings_.precision, 4));
     }
 
 private:
-    void ensurePrograms() {
+    bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programsFor_[int(model)];
+        programs_ = &p;
+        if (!p.peel.program) {
+            const gl::Defines defines = withColorModel({}, model);
+            p.peel = buildSceneProgram("oit/peeling/dual_peel.frag.glsl", defines);
+            p.blend = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_blend.frag.glsl"}, defines);
+            p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
+                                           withColorModel({{"DUAL", ""}}, model));
+        }
         if (initProgram_.program) return;
         initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
-        peelProgram_ = buildSceneProgram("oit/peeling/dual_peel.frag.glsl");
-        blendProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_blend.frag.glsl"});
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"}, {{"DUAL", ""}});
         frontLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
         backLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
         interiorLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
 
-    void ensureTargets(glm::ivec2 size) {
-        if (size != size_ || settings_.precision != allocatedPrecision_) {
+    void ensureTargets(glm::ivec2 size, ColorModel model) {
+        if (size != size_ || settings_.precision != allocatedPrecision_ || model != model_) {
             size_ = size;
             allocatedPrecision_ = settings_.precision;
+            model_ = model;
             // Depths stay 32-bit; colours (alpha + 1 in the layers: 1 to 2, steps of 2^-10 in
             // half float) follow the precision.
             const GLenum rgba = rgbaFloatFormat(settings_.precision);
@@ -81,8 +100,21 @@ private:
             blendFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT0, frontAccum_.id(), 0);
             glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT1, backAccum_.id(), 0);
-            const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-            glNamedFramebufferDrawBuffers(blendFbo_.id(), 2, two);
+            const GLenum four[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                    GL_COLOR_ATTACHMENT3};
+            frontFilter_ = {};
+            backFilter_ = {};
+            frontAccumFilter_ = {};
+            backAccumFilter_ = {};
+            if (rgb()) {
+                frontFilter_ = gl::createTexture2D(rgba, size.x, size.y);
+                backFilter_ = gl::createTexture2D(rgba, size.x, size.y);
+                frontAccumFilter_ = gl::createTexture2D(rgba, size.x, size.y);
+                backAccumFilter_ = gl::createTexture2D(rgba, size.x, size.y);
+                glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT2, frontAccumFilter_.id(), 0);
+                glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT3, backAccumFilter_.id(), 0);
+            }
+            glNamedFramebufferDrawBuffers(blendFbo_.id(), rgb() ? 4 : 2, four);
         }
     }
 
@@ -94,14 +126,22 @@ private:
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, minMax_[cur].id(), 0);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, withLayers ? front_.id() : 0, 0);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, withLayers ? back_.id() : 0, 0);
+        const bool filters = withLayers && rgb();
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, filters ? frontFilter_.id() : 0, 0);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT4, filters ? backFilter_.id() : 0, 0);
         glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
-        const GLenum three[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-        glNamedFramebufferDrawBuffers(fbo, withLayers ? 3 : 1, three);
+        const GLenum five[5] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
+                                GL_COLOR_ATTACHMENT4};
+        glNamedFramebufferDrawBuffers(fbo, filters ? 5 : withLayers ? 3 : 1, five);
         const float clearRange[4] = {-2, -2, 0, 0};
         glClearTexImage(minMax_[cur].id(), 0, GL_RGBA, GL_FLOAT, clearRange);
         if (withLayers) {
             glClearTexImage(front_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
             glClearTexImage(back_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        }
+        if (filters) {
+            glClearTexImage(frontFilter_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+            glClearTexImage(backFilter_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         setTransparentDepthState(frame);  // against the opaque depth, no writes
@@ -128,7 +168,7 @@ private:
         gl::ScopedPass pass(frame.timer, "dual peel");
         bindPeelTargets(frame, cur, true);
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
-        skipper_.draw(frame, peelProgram_, stats_);
+        skipper_.draw(frame, programs_->peel, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
@@ -145,16 +185,33 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
-        glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);           // under
-        glBlendFuncSeparatei(1, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
+        if (rgb()) {
+            glBlendFunci(0, GL_ONE, GL_ONE);         // front colour += T x layer colour
+            glDisablei(GL_BLEND, 1);                 // back: written whole by the shader
+            glBlendFunci(2, GL_ZERO, GL_SRC_COLOR);  // front T *= layer filter
+            glBlendFunci(3, GL_ZERO, GL_SRC_COLOR);  // back T *= layer filter
+            glBindTextureUnit(gpu::BIND_PEEL_LAYER_FILTER, frontFilter_.id());
+            glBindTextureUnit(gpu::BIND_PEEL_BACK_FILTER, backFilter_.id());
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, frontAccumFilter_.id());
+            glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
+        } else {
+            glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);                  // under
+            glBlendFuncSeparatei(1, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
+        }
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, front_.id());
         glBindTextureUnit(gpu::BIND_PEEL_BACK, back_.id());
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[cur].id());
-        const GLuint program = blendProgram_.id();
+        const GLuint program = programs_->blend.id();
         const GLint step = glGetUniformLocation(program, "uStep");
         auto drawStep = [&](int s, bool front, bool back, GLenum target, GLuint query) {
             glColorMaski(0, front, front, front, front);
             glColorMaski(1, back, back, back, back);
+            if (rgb()) {
+                glColorMaski(2, front, front, front, front);
+                glColorMaski(3, back, back, back, back);
+                // Steps 0 and 1 read the accumulation texels they write (ARB_texture_barrier).
+                glTextureBarrier();
+            }
             glProgramUniform1i(program, step, s);
             glBeginQuery(target, query);
             drawFullscreen(frame, program);
@@ -184,16 +241,29 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, frontAccum_.id());
         glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
-        drawFullscreen(frame, compositeProgram_.id());
+        if (rgb()) {
+            glTextureBarrier();
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, frontAccumFilter_.id());
+            glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM_FILTER, backAccumFilter_.id());
+        }
+        drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }
 
+    struct Programs {
+        SceneProgram peel;
+        gl::Program blend, composite;
+    };
     int allocatedPrecision_ = 0;
-    SceneProgram initProgram_, peelProgram_;
-    gl::Program blendProgram_, compositeProgram_;
+    ColorModel model_ = ColorModel::Scalar;  // the targets'
+    SceneProgram initProgram_;
+    Programs programsFor_[kColorModels];  // built on first use, per ColorModel
+    Programs* programs_ = nullptr;        // the frame's
     gl::Query samples_, frontLayers_, backLayers_, interiorLeft_;
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
+    // The RGB build's: what the layers and the accumulations let through, per channel.
+    gl::Texture frontFilter_, backFilter_, frontAccumFilter_, backAccumFilter_;
     gl::Framebuffer peelFbo_, blendFbo_;
     ObjectSkipper skipper_;
 };
@@ -206,8 +276,10 @@ namespace strata {
 TechniqueEntry dualEntry() {
     TechniqueInfo info{"dual", "peeling", true, false, "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many blends + composite)",
                        "w*h*48 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
-                       "(8 each); w*h*80 B at 32 (RGBA32F, 16 each); Table 1: 6 words",
+                       "(8 each); w*h*80 B at 32 (RGBA32F, 16 each); + four more RGBA targets in a scene with coloured "
+                       "filters; Table 1: 6 words",
                        "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::DualPeeling>(info);
 }
 

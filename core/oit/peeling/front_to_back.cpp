@@ -10,9 +10,16 @@
 // lies behind this layer and no further pass is issued, so D layers cost exactly D peels; a
 // pass that finds nothing (only coincident leftovers, which a strict test never peels) stops
 // it too. max_passes bounds the loop; hitting it is reported as an overflow.
+//
+// In a scene with coloured filters (oit/color_model.hpp) f2b composites them per channel: the
+// layer target and the accumulation each gain a second target, what lets light through per
+// channel, and the layer pass reads the accumulated one (f2b_layer_blend.frag.glsl). f2b2
+// shades straight into the accumulation, where no fixed-function blend can reach a second
+// target's value, and composites the filters' scalar form.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
@@ -27,12 +34,17 @@ public:
     FrontToBack(TechniqueInfo info, bool twoPass) : TechniqueWithSettings(std::move(info)), twoPass_(twoPass) {}
 
     void render(const FrameContext& frame) override {
-        ensurePrograms();
-        ensureTargets(frame.size);
+        const ColorModel model = twoPass_ ? ColorModel::Scalar : colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, model);
         stats_ = {};
         skipper_.beginFrame(frame, settings_.skipPeeled);
         const float clearAccum[4] = {0, 0, 0, 1};
         glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+        if (rgb()) {
+            const float nothingAbsorbed[4] = {1, 1, 1, 1};
+            glClearTexImage(accumFilter_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+        }
 
         std::uint64_t firstRemaining = 0, remaining = 0;
         for (int layer = 0;; ++layer) {
@@ -64,36 +76,55 @@ public:
         // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's layer colour and the
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each).
         const std::uint64_t rgba = floatTexelBytes(settings_.precision, 4);
-        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + rgba : 2 * 4 + 2 * rgba) + sizeof(GLuint);
+        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + rgba : 2 * 4 + (rgb() ? 4 : 2) * rgba) + sizeof(GLuint);
     }
 
 private:
-    void ensurePrograms() {
-        if (peelProgram_.program) return;
-        gl::Defines defines;
-        if (twoPass_) defines["DEPTH_ONLY"] = "";
-        peelProgram_ = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
-        firstLayerLocation_ = glGetUniformLocation(peelProgram_.id(), "uFirstLayer");
-        if (twoPass_)
-            shadeProgram_ = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl");
-        else
-            blendProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/f2b_layer_blend.frag.glsl"});
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"});
+    bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programsFor_[int(model)];
+        programs_ = &p;
+        if (!p.peel.program) {
+            gl::Defines defines = withColorModel({}, model);
+            if (twoPass_) defines["DEPTH_ONLY"] = "";
+            p.peel = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
+            p.firstLayer = glGetUniformLocation(p.peel.id(), "uFirstLayer");
+            if (twoPass_)
+                p.shade = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl");
+            else
+                p.blend = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/f2b_layer_blend.frag.glsl"},
+                                           withColorModel({}, model));
+            p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
+                                           withColorModel({}, model));
+        }
+        if (counter_) return;
         counter_ = gl::Buffer::create();
         glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         anyLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
 
-    void ensureTargets(glm::ivec2 size) {
-        if (size == size_ && settings_.precision == allocatedPrecision_) return;
+    void ensureTargets(glm::ivec2 size, ColorModel model) {
+        if (size == size_ && settings_.precision == allocatedPrecision_ && model == model_) return;
         size_ = size;
         allocatedPrecision_ = settings_.precision;
-        accum_ = gl::createTexture2D(rgbaFloatFormat(settings_.precision), size.x, size.y);
+        model_ = model;
+        const GLenum format = rgbaFloatFormat(settings_.precision);
+        accum_ = gl::createTexture2D(format, size.x, size.y);
+        const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
         if (!twoPass_) {
-            layerColor_ = gl::createTexture2D(rgbaFloatFormat(settings_.precision), size.x, size.y);
+            layerColor_ = gl::createTexture2D(format, size.x, size.y);
             accumFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
+            layerFilter_ = {};
+            accumFilter_ = {};
+            if (rgb()) {
+                layerFilter_ = gl::createTexture2D(format, size.x, size.y);
+                accumFilter_ = gl::createTexture2D(format, size.x, size.y);
+                glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT1, accumFilter_.id(), 0);
+                glNamedFramebufferDrawBuffers(accumFbo_.id(), 2, both);
+            }
         }
         for (int i = 0; i < 2; ++i) {
             depth_[i] = gl::createTexture2D(twoPass_ ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F, size.x, size.y);
@@ -102,6 +133,10 @@ private:
             glNamedFramebufferTexture(fbo_[i].id(), GL_COLOR_ATTACHMENT0, twoPass_ ? accum_.id() : layerColor_.id(), 0);
             glNamedFramebufferTexture(fbo_[i].id(), twoPass_ ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                                       depth_[i].id(), 0);
+            if (rgb()) {
+                glNamedFramebufferTexture(fbo_[i].id(), GL_COLOR_ATTACHMENT1, layerFilter_.id(), 0);
+                glNamedFramebufferDrawBuffers(fbo_[i].id(), 2, both);
+            }
         }
     }
 
@@ -133,9 +168,9 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[1 - cur].id());
         glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
-        glProgramUniform1i(peelProgram_.id(), firstLayerLocation_, layer == 0 ? 1 : 0);
+        glProgramUniform1i(programs_->peel.id(), programs_->firstLayer, layer == 0 ? 1 : 0);
         glBeginQuery(GL_ANY_SAMPLES_PASSED, anyLeft_.id());
-        skipper_.draw(frame, peelProgram_, stats_);
+        skipper_.draw(frame, programs_->peel, stats_);
         glEndQuery(GL_ANY_SAMPLES_PASSED);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_FALSE);
@@ -160,12 +195,25 @@ private:
     std::uint64_t blendLayer(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "f2b blend");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
-        underBlending();
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[cur].id());
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, layerColor_.id());
+        if (rgb()) {
+            // The pass reads the accumulated filter it writes: each pixel its own texel, once,
+            // which GL allows when a texture barrier separates the draws (ARB_texture_barrier).
+            glTextureBarrier();
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunci(0, GL_ONE, GL_ONE);         // colour += T x layer colour
+            glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);  // T *= layer filter
+            glBindTextureUnit(gpu::BIND_PEEL_LAYER_FILTER, layerFilter_.id());
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
+        } else {
+            underBlending();
+        }
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        drawFullscreen(frame, blendProgram_.id());
+        drawFullscreen(frame, programs_->blend.id());
         glEndQuery(GL_SAMPLES_PASSED);
+        if (rgb()) glTextureBarrier();
         glDisable(GL_BLEND);
         ++stats_.passes;
         const std::uint64_t captured = gl::queryResult(samples_);
@@ -182,7 +230,7 @@ private:
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
         underBlending();
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        skipper_.draw(frame, shadeProgram_, stats_);
+        skipper_.draw(frame, programs_->shade, stats_);
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
         glDisable(GL_STENCIL_TEST);
@@ -198,19 +246,26 @@ private:
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
-        drawFullscreen(frame, compositeProgram_.id());
+        if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
+        drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }
 
+    struct Programs {
+        SceneProgram peel, shade;
+        gl::Program blend, composite;
+        GLint firstLayer = -1;
+    };
     bool twoPass_;
     int allocatedPrecision_ = 0;
-    SceneProgram peelProgram_, shadeProgram_;
-    gl::Program blendProgram_, compositeProgram_;
-    GLint firstLayerLocation_ = -1;
+    ColorModel model_ = ColorModel::Scalar;  // the targets'
+    Programs programsFor_[kColorModels];      // built on first use, per ColorModel
+    Programs* programs_ = nullptr;            // the frame's
     gl::Buffer counter_;
     gl::Query samples_, anyLeft_;
     glm::ivec2 size_{0, 0};
     gl::Texture accum_, layerColor_, depth_[2];
+    gl::Texture layerFilter_, accumFilter_;  // the RGB build's (what passes, per channel)
     gl::Framebuffer accumFbo_, fbo_[2];
     ObjectSkipper skipper_;
 };
@@ -223,8 +278,10 @@ namespace strata {
 TechniqueEntry f2bEntry() {
     TechniqueInfo info{"f2b", "peeling", true, false, "2D+1 (D peels + D layer blends + composite)",
                        "w*h*24 B at precision=16: 2 depth (4) + layer and accumulation RGBA16F (8 each); "
-                       "w*h*40 B at 32 (RGBA32F, 16 each); Table 1: 3 words",
+                       "w*h*40 B at 32 (RGBA32F, 16 each); + two more RGBA targets in a scene with coloured filters; "
+                       "Table 1: 3 words",
                        "front-to-back depth peeling, one layer per pass, strict depth test; skips peeled objects"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::FrontToBack>(info, false);
 }
 

@@ -16,6 +16,12 @@ layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;
 layout(location = 0) out vec2 outMinMax;
 layout(location = 1) out vec4 outFront;
 layout(location = 2) out vec4 outBack;
+#ifdef STRATA_RGB_TRANSMITTANCE
+// What the front and back layers let through per channel; 0 is neutral under MAX, and the
+// colour targets' alpha says whether a layer is present.
+layout(location = 3) out vec4 outFrontFilter;
+layout(location = 4) out vec4 outBackFilter;
+#endif
 
 void main() {
     vec2 range = texelFetch(uMinMax, ivec2(gl_FragCoord.xy), 0).rg;
@@ -26,10 +32,26 @@ void main() {
     outMinMax = vec2(-2.0);
     outFront = vec4(0.0);
     outBack = vec4(0.0);
+#ifdef STRATA_RGB_TRANSMITTANCE
+    outFrontFilter = vec4(0.0);
+    outBackFilter = vec4(0.0);
+#endif
     if (z < nearest && z > farthest) {
         outMinMax = vec2(z, -z);
         return;
     }
+#ifdef STRATA_RGB_TRANSMITTANCE
+    // Premultiplied colour, presence marked by alpha 2.
+    SurfaceOptics o = surfaceOptics();
+    if (z == nearest) {
+        outFront = vec4(o.premultiplied, 2.0);
+        outFrontFilter = vec4(o.transmittance, 0.0);
+    } else {
+        outBack = vec4(o.premultiplied, 2.0);
+        outBackFilter = vec4(o.transmittance, 0.0);
+    }
+    return;
+#endif
     vec4 c = surfaceColor();
     if (z == nearest)
         outFront = vec4(c.rgb, c.a + 1.0);

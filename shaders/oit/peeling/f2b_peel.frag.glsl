@@ -17,6 +17,10 @@ uniform bool uFirstLayer;
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
 #endif
+#ifdef STRATA_RGB_TRANSMITTANCE
+// A coloured filter's layer: premultiplied colour and what it lets through, per channel.
+layout(location = 1) out vec4 outFilter;
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -24,7 +28,11 @@ void main() {
     if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
     if (!uFirstLayer && z >= texelFetch(uPreviousDepth, pixel, 0).r) discard;
     if (uFirstLayer) atomicCounterIncrement(uRemaining);
-#ifndef DEPTH_ONLY
+#if defined(STRATA_RGB_TRANSMITTANCE)
+    SurfaceOptics o = surfaceOptics();
+    outColor = vec4(o.premultiplied, 1.0);
+    outFilter = vec4(o.transmittance, 1.0);
+#elif !defined(DEPTH_ONLY)
     outColor = surfaceColor();
 #endif
 }

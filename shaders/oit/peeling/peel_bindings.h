@@ -11,6 +11,13 @@ GPU_CONST uint BIND_PEEL_BACK = 4u;        // dual: back layer
 GPU_CONST uint BIND_PEEL_ACCUM = 5u;       // accumulated (colour, transmittance)
 GPU_CONST uint BIND_PEEL_BACK_ACCUM = 6u;  // dual: back accumulation
 GPU_CONST uint BIND_BUCKET_COLORS = 1u;    // bun: image unit of the per-slot colours
+// f2b's and dual's STRATA_RGB_TRANSMITTANCE builds: what the (front) layer, the (front)
+// accumulation, and dual's back layer and back accumulation let through per channel (units the
+// coplanarity variants below use for their own targets).
+GPU_CONST uint BIND_PEEL_LAYER_FILTER = 7u;
+GPU_CONST uint BIND_PEEL_ACCUM_FILTER = 8u;
+GPU_CONST uint BIND_PEEL_BACK_FILTER = 9u;
+GPU_CONST uint BIND_PEEL_BACK_ACCUM_FILTER = 10u;
 
 // The coplanarity-aware variants (f2b-2p, f2b-3p, dual-2p; coplanar_layer.glsl). Front side
 // units; dual-2p's back side uses the same unit + BIND_COPLANAR_BACK_OFFSET.
