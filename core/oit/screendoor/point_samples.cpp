@@ -3,6 +3,7 @@
 #include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/screendoor/screendoor_bindings.h"
+#include "render/shading.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -15,7 +16,17 @@ namespace strata::screendoor {
 
 namespace {
 constexpr std::uint64_t kInitialPoints = 1u << 16;
+
+// The probability a point is kept: the factor alpha, or for transmissive glass its scalar form
+// (common/shading_model.h's scalarOpacityForm) seen head on: the points have one alpha per
+// object, so the Fresnel rise at grazing angles and the filter's tint are not drawn.
+float keepProbability(const Material& m) {
+    if (!m.transmissive()) return m.alpha;
+    const float coverage = m.alphaMode == AlphaMode::Blend ? m.alpha : 1.0f;
+    const glm::vec3 through = gpu::transmissionFilter(m.baseColor, m.metallic, m.transmission, m.ior, 1.0f);
+    return gpu::scalarOpacityForm(gpu::surfaceOpticsOf(glm::vec3(0.0f), coverage, through)).a;
 }
+}  // namespace
 
 std::uint64_t PointSamples::run(const FrameContext& frame, const PassParameters& parameters, double maxTriangleSamples,
                                 std::uint64_t& trianglesBounded) {
@@ -43,7 +54,7 @@ std::uint64_t PointSamples::run(const FrameContext& frame, const PassParameters&
         glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uNormalMatrix"), 1, GL_FALSE, glm::value_ptr(normalMatrix));
         glProgramUniform1ui(p, glGetUniformLocation(p, "uTriangleCount"), triangles);
         glProgramUniform1ui(p, glGetUniformLocation(p, "uObjectId"), GLuint(o.id));
-        glProgramUniform1f(p, glGetUniformLocation(p, "uAlpha"), m.alpha);
+        glProgramUniform1f(p, glGetUniformLocation(p, "uAlpha"), keepProbability(m));
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_MESH_VERTICES, mesh.vertices.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_MESH_INDICES, mesh.indices.id());
         glDispatchCompute((triangles + gpu::POINT_SAMPLES_GROUP_SIZE - 1) / gpu::POINT_SAMPLES_GROUP_SIZE, chunks, 1);
