@@ -1,10 +1,13 @@
 // Small equivalents of the Khronos glTF sample assets that define what a renderer must do with
-// materials (AlphaBlendModeTest, VertexColorTest, TextureSettingsTest), written as glTF files
-// by the tests' own writer (gltf_test_builder.hpp), loaded by the loader (which must warn about
-// nothing in them), and drawn by every exact technique against the CPU reference and against
-// values stated per pixel. The materials are unlit (KHR_materials_unlit: the colour is the base
-// colour), so each expected value is the texel or vertex colour itself, composited by its
-// alpha mode over the unlit backdrop; the 16 x 16 view sees exactly [-1, 1]^2 at z = 0.
+// materials (AlphaBlendModeTest, VertexColorTest, TextureSettingsTest, TransmissionTest,
+// GlassVaseFlowers), written as glTF files by the tests' own writer (gltf_test_builder.hpp),
+// loaded by the loader (which must warn about nothing in them), and drawn by every exact
+// technique against the CPU reference and against values stated per pixel. The first three are
+// unlit (KHR_materials_unlit: the colour is the base colour), so each expected value is the
+// texel or vertex colour itself, composited by its alpha mode over the unlit backdrop; the glass
+// ones are lit, and state what passes through them (the image over a white backdrop less the
+// image over a black one): per channel on the techniques that composite RGB transmittance, its
+// mean on the others. The 16 x 16 view sees exactly [-1, 1]^2 at z = 0.
 #include "gltf_test_builder.hpp"
 #include "material_test_scenes.hpp"
 
@@ -24,11 +27,11 @@ namespace {
 const glm::vec3 kBackdrop(0.25f, 0.5f, 0.75f);
 
 // A builder holding the unlit backdrop quad at z = -1 (material 0) and the extension list.
-GltfBuilder unlitDocument() {
+GltfBuilder unlitDocument(glm::vec3 backdrop = kBackdrop) {
     GltfBuilder b;
     b.doc["extensionsUsed"] = {"KHR_materials_unlit"};
     b.material({{"name", "backdrop"},
-                {"pbrMetallicRoughness", {{"baseColorFactor", {kBackdrop.r, kBackdrop.g, kBackdrop.b, 1.0}}}},
+                {"pbrMetallicRoughness", {{"baseColorFactor", {backdrop.r, backdrop.g, backdrop.b, 1.0}}}},
                 {"extensions", {{"KHR_materials_unlit", json::object()}}}});
     const std::vector<float> back = {-4, -4, -1, 4, -4, -1, 4, 4, -1, -4, -4, -1, 4, 4, -1, -4, 4, -1};
     b.meshNode(json::array({{{"attributes", {{"POSITION", b.positions(back)}}}, {"material", 0}}}));
@@ -74,6 +77,9 @@ glm::vec2 planeHit(const Camera& camera, int x, int y) {
     return glm::vec2(origin + t * direction);
 }
 
+void checkImagesStated(const std::vector<std::pair<std::string, Image>>& images, const Camera& camera,
+                       const std::function<std::optional<glm::vec3>(glm::vec2)>& expected);
+
 // Renders `scene` with every exact technique and the CPU reference; each image must match
 // `expected(hit)` (nullopt: a pixel too near an edge to state) within 2/255.
 void checkStated(Scene scene, const std::function<std::optional<glm::vec3>(glm::vec2)>& expected) {
@@ -87,6 +93,12 @@ void checkStated(Scene scene, const std::function<std::optional<glm::vec3>(glm::
         auto t = exactTechnique(id);
         images.push_back({id, test::renderWith(gpu, camera, kSize, *t).image});
     }
+    checkImagesStated(images, camera, expected);
+}
+
+// Each of `images` against `expected(hit)` per pixel, within 2/255 (nullopt: not stated).
+void checkImagesStated(const std::vector<std::pair<std::string, Image>>& images, const Camera& camera,
+                       const std::function<std::optional<glm::vec3>(glm::vec2)>& expected) {
     int stated = 0;
     for (int y = 0; y < kSize.y; ++y)
         for (int x = 0; x < kSize.x; ++x) {
@@ -203,4 +215,134 @@ TEST_CASE("TextureSettingsTest, small: REPEAT, MIRRORED_REPEAT and CLAMP_TO_EDGE
         else shown = std::clamp(texel, 0, 1);                            // CLAMP_TO_EDGE
         return shown == 0 ? dark : light;
     });
+}
+
+namespace {
+
+// What passes through the scene at each pixel, per technique: the image over a white unlit
+// backdrop less the image over a black one (whatever the glass reflects cancels). `build`
+// writes the document's objects after the backdrop (material 0).
+struct PassedThrough {
+    Camera camera;
+    std::vector<std::pair<std::string, Image>> rgb, scalar;  // by TechniqueInfo::rgbTransmittance
+};
+
+PassedThrough passedThrough(const std::vector<std::string>& extensions, const std::function<void(GltfBuilder&)>& build,
+                            const std::string& name) {
+    test::glContext();
+    std::vector<std::pair<std::string, Image>> images[2];  // white, black
+    PassedThrough out;
+    for (int k = 0; k < 2; ++k) {
+        GltfBuilder b = unlitDocument(glm::vec3(k == 0 ? 1.0f : 0.0f));
+        for (const std::string& e : extensions) b.doc["extensionsUsed"].push_back(e);
+        build(b);
+        Scene s = loadFramed(b.writeGltf(name + (k == 0 ? "-white" : "-black")));
+        const std::vector<Object> objects = flatten(s);
+        out.camera = defaultCamera(s, objects);
+        images[k].push_back({"cpu reference", raycastReference(s, objects, out.camera, kSize.x, kSize.y)});
+        GpuScene gpu(std::move(s));
+        for (const std::string& id : exactIds()) {
+            auto t = exactTechnique(id);
+            images[k].push_back({id, test::renderWith(gpu, out.camera, kSize, *t).image});
+        }
+    }
+    for (std::size_t i = 0; i < images[0].size(); ++i) {
+        Image d = images[0][i].second;
+        for (std::size_t v = 0; v < d.rgba.size(); ++v) d.rgba[v] -= images[1][i].second.rgba[v];
+        const std::string& id = images[0][i].first;
+        const bool rgb = id == "cpu reference" || findTechnique(id)->info.rgbTransmittance;
+        (rgb ? out.rgb : out.scalar).push_back({id, std::move(d)});
+    }
+    return out;
+}
+
+// The cosine between the view ray through the point of z = 0 at `p` and the plane's normal +z.
+float facingAt(const Camera& camera, glm::vec2 p) {
+    const glm::vec3 toEye = glm::normalize(camera.position - glm::vec3(p, 0.0f));
+    return toEye.z;
+}
+
+float mean(glm::vec3 v) { return (v.r + v.g + v.b) / 3.0f; }
+
+}  // namespace
+
+TEST_CASE("TransmissionTest, small: transmission 0, 0.5 and 1, a BLEND pane and ior 1 pass what they state") {
+    // Five vertical bands of lit glass (roughness 0.4) over the backdrop: transmission 0 (opaque),
+    // 0.5, 1, 1 at BLEND alpha 0.5, and 1 at ior 1 (no reflection, so the base colour itself).
+    const glm::vec3 tint(0.9f, 0.6f, 0.3f);
+    struct Band {
+        float transmission, alpha, ior;
+        bool blend;
+    };
+    const Band bands[5] = {{0.0f, 1.0f, 1.5f, false}, {0.5f, 1.0f, 1.5f, false}, {1.0f, 1.0f, 1.5f, false},
+                           {1.0f, 0.5f, 1.5f, true}, {1.0f, 1.0f, 1.0f, false}};
+    const PassedThrough passed = passedThrough(
+        {"KHR_materials_transmission", "KHR_materials_ior"},
+        [&](GltfBuilder& b) {
+            json primitives = json::array();
+            for (int i = 0; i < 5; ++i) {
+                json m = {{"pbrMetallicRoughness",
+                           {{"baseColorFactor", {tint.r, tint.g, tint.b, bands[i].alpha}}, {"metallicFactor", 0.0},
+                            {"roughnessFactor", 0.4}}},
+                          {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", bands[i].transmission}}},
+                                          {"KHR_materials_ior", {{"ior", bands[i].ior}}}}}};
+                if (bands[i].blend) m["alphaMode"] = "BLEND";
+                const float x0 = -1.0f + 0.4f * float(i);
+                primitives.push_back(quadPrimitive(b, x0, x0 + 0.4f, -1, 1, 0, b.material(m)));
+            }
+            b.meshNode(primitives);
+        },
+        "transmission-test");
+    auto expected = [&](bool rgb) {
+        return [&, rgb](glm::vec2 p) -> std::optional<glm::vec3> {
+            if (nearAny(p.x, {-0.6f, -0.2f, 0.2f, 0.6f})) return std::nullopt;
+            const Band& band = bands[std::clamp(int((p.x + 1.0f) / 0.4f), 0, 4)];
+            const glm::vec3 through =
+                gpu::transmissionFilter(tint, 0.0f, band.transmission, band.ior, facingAt(passed.camera, p));
+            const float coverage = band.blend ? band.alpha : 1.0f;
+            const glm::vec3 t = glm::vec3(1.0f - coverage) + coverage * through;
+            return rgb ? t : glm::vec3(mean(t));
+        };
+    };
+    checkImagesStated(passed.rgb, passed.camera, expected(true));
+    checkImagesStated(passed.scalar, passed.camera, expected(false));
+}
+
+TEST_CASE("GlassVaseFlowers, small: a MASK card behind a pane of glass with a medium, over the backdrop") {
+    // A pane of glass 0.5 thick (KHR_materials_volume, attenuation colour c over distance 1:
+    // c^0.5 through it) in front of a MASK leaf card whose left half is cut out (alpha 0 texels):
+    // through the cut the backdrop shows, filtered; behind the leaf nothing passes.
+    const glm::vec3 tint(0.95f, 0.9f, 0.85f), attenuation(0.5f, 0.8f, 1.0f);
+    const std::vector<std::uint8_t> texels = {60, 160, 60, 0, 60, 160, 60, 255};  // cut | leaf
+    const PassedThrough passed = passedThrough(
+        {"KHR_materials_transmission", "KHR_materials_volume"},
+        [&](GltfBuilder& b) {
+            b.imageDataUri(encodeImage("leaf.png", 2, 1, 4, OIIO::TypeDesc::UINT8, texels.data()));
+            b.doc["samplers"] = {{{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33071}}};
+            b.doc["textures"] = {{{"source", 0}, {"sampler", 0}}};
+            const int leaf = b.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+                                         {"alphaMode", "MASK"}});
+            const int glass = b.material(
+                {{"pbrMetallicRoughness", {{"baseColorFactor", {tint.r, tint.g, tint.b, 1.0}}, {"metallicFactor", 0.0},
+                                           {"roughnessFactor", 0.2}}},
+                 {"extensions",
+                  {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                   {"KHR_materials_volume", {{"thicknessFactor", 0.5}, {"attenuationDistance", 1.0},
+                                             {"attenuationColor", {attenuation.r, attenuation.g, attenuation.b}}}}}}});
+            b.meshNode(json::array({quadPrimitive(b, -1, 1, -1, 1, 0, glass), quadPrimitive(b, -2, 2, -2, 2, -0.5f, leaf)}));
+        },
+        "glass-vase-flowers");
+    auto expected = [&](bool rgb) {
+        return [&, rgb](glm::vec2 p) -> std::optional<glm::vec3> {
+            // The card (4 x 4 at z = -0.5, clamped u from -0.5 to 1.5) covers the view; its cut
+            // at u = 0.5 is at x = 0, which the eye on the axis sees at x = 0 too.
+            if (nearAny(p.x, {0.0f})) return std::nullopt;
+            if (p.x > 0.0f) return glm::vec3(0.0f);  // behind the leaf
+            const glm::vec3 t = gpu::transmissionFilter(tint, 0.0f, 1.0f, gpu::kDefaultIor, facingAt(passed.camera, p)) *
+                                glm::pow(attenuation, glm::vec3(0.5f));
+            return rgb ? t : glm::vec3(mean(t));
+        };
+    };
+    checkImagesStated(passed.rgb, passed.camera, expected(true));
+    checkImagesStated(passed.scalar, passed.camera, expected(false));
 }

@@ -52,8 +52,10 @@ void drawTechnique(const PanelState& state, PanelSettings& settings, PanelReques
         const TechniqueInfo& info = current->info;
         ImGui::TextWrapped("%s", info.description.c_str());
         ImGui::TextWrapped("passes %s   memory %s", info.passes.c_str(), info.memoryModel.c_str());
-        ImGui::Text("robust: %s   coplanarity-aware: %s", info.robust ? "yes" : "no",
-                    info.handlesCoplanarity ? "yes" : "no");
+        ImGui::Text("robust: %s   coplanarity-aware: %s   glass: %s", info.robust ? "yes" : "no",
+                    info.handlesCoplanarity ? "yes" : "no", info.rgbTransmittance ? "rgb" : "scalar");
+        helpTooltip("glass: how a transmissive material's coloured filter composites. rgb: per channel, exact; "
+                    "scalar: one alpha (1 - mean transmittance), the tint lost (`strata modes`)");
     }
     if (current) drawSettings(current->settings, settings.technique);
 }
