@@ -11,11 +11,10 @@
 // pass that finds nothing (only coincident leftovers, which a strict test never peels) stops
 // it too. max_passes bounds the loop; hitting it is reported as an overflow.
 //
-// In a scene with coloured filters (oit/color_model.hpp) f2b composites them per channel: the
-// layer target and the accumulation each gain a second target, what lets light through per
-// channel, and the layer pass reads the accumulated one (f2b_layer_blend.frag.glsl). f2b2
-// shades straight into the accumulation, where no fixed-function blend can reach a second
-// target's value, and composites the filters' scalar form.
+// In a scene with coloured filters (oit/color_model.hpp) both composite them per channel: the
+// accumulation (and f2b's layer target) gains a second target, what lets light through per
+// channel, which f2b's layer pass and f2b2's shading pass read at their own pixel
+// (f2b_layer_blend.frag.glsl, f2b2_shade.frag.glsl) between texture barriers.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
@@ -34,7 +33,7 @@ public:
     FrontToBack(TechniqueInfo info, bool twoPass) : TechniqueWithSettings(std::move(info)), twoPass_(twoPass) {}
 
     void render(const FrameContext& frame) override {
-        const ColorModel model = twoPass_ ? ColorModel::Scalar : colorModelFor(frame.scene);
+        const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, model);
         stats_ = {};
@@ -76,7 +75,9 @@ public:
         // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's layer colour and the
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each).
         const std::uint64_t rgba = floatTexelBytes(settings_.precision, 4);
-        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + rgba : 2 * 4 + (rgb() ? 4 : 2) * rgba) + sizeof(GLuint);
+        // With coloured filters, the accumulated filter (and f2b's layer filter) besides.
+        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + (rgb() ? 2 : 1) * rgba : 2 * 4 + (rgb() ? 4 : 2) * rgba) +
+                       sizeof(GLuint);
     }
 
 private:
@@ -91,7 +92,7 @@ private:
             p.peel = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
             p.firstLayer = glGetUniformLocation(p.peel.id(), "uFirstLayer");
             if (twoPass_)
-                p.shade = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl");
+                p.shade = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl", withColorModel({}, model));
             else
                 p.blend = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/f2b_layer_blend.frag.glsl"},
                                            withColorModel({}, model));
@@ -113,15 +114,15 @@ private:
         const GLenum format = rgbaFloatFormat(settings_.precision);
         accum_ = gl::createTexture2D(format, size.x, size.y);
         const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        layerFilter_ = {};
+        accumFilter_ = {};
+        if (rgb()) accumFilter_ = gl::createTexture2D(format, size.x, size.y);
         if (!twoPass_) {
             layerColor_ = gl::createTexture2D(format, size.x, size.y);
             accumFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
-            layerFilter_ = {};
-            accumFilter_ = {};
             if (rgb()) {
                 layerFilter_ = gl::createTexture2D(format, size.x, size.y);
-                accumFilter_ = gl::createTexture2D(format, size.x, size.y);
                 glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT1, accumFilter_.id(), 0);
                 glNamedFramebufferDrawBuffers(accumFbo_.id(), 2, both);
             }
@@ -134,7 +135,9 @@ private:
             glNamedFramebufferTexture(fbo_[i].id(), twoPass_ ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
                                       depth_[i].id(), 0);
             if (rgb()) {
-                glNamedFramebufferTexture(fbo_[i].id(), GL_COLOR_ATTACHMENT1, layerFilter_.id(), 0);
+                // f2b: the layer's filter; f2b2: the accumulated one, which its shading pass blends.
+                glNamedFramebufferTexture(fbo_[i].id(), GL_COLOR_ATTACHMENT1,
+                                          twoPass_ ? accumFilter_.id() : layerFilter_.id(), 0);
                 glNamedFramebufferDrawBuffers(fbo_[i].id(), 2, both);
             }
         }
@@ -228,10 +231,21 @@ private:
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        underBlending();
+        if (rgb()) {
+            // As f2b's layer pass: the fragment reads the accumulated filter at its own pixel.
+            glTextureBarrier();
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunci(0, GL_ONE, GL_ONE);
+            glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
+        } else {
+            underBlending();
+        }
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         skipper_.draw(frame, programs_->shade, stats_);
         glEndQuery(GL_SAMPLES_PASSED);
+        if (rgb()) glTextureBarrier();
         glDisable(GL_BLEND);
         glDisable(GL_STENCIL_TEST);
         ++stats_.passes;
@@ -288,8 +302,9 @@ TechniqueEntry f2bEntry() {
 TechniqueEntry f2b2Entry() {
     TechniqueInfo info{"f2b2", "peeling", true, false, "2D+1 (D depth pre-passes + D EQUAL shading passes + composite)",
                        "w*h*24 B at precision=16: 2 depth-stencil (8) + accumulation RGBA16F (8); w*h*32 B at 32 "
-                       "(RGBA32F accumulation, 16)",
+                       "(RGBA32F accumulation, 16); + one more RGBA target in a scene with coloured filters",
                        "front-to-back peeling with a depth-only pre-pass and early-z GL_EQUAL shading per layer"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::FrontToBack>(info, true);
 }
 

@@ -17,7 +17,7 @@ uniform bool uFirstLayer;
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
 #endif
-#ifdef STRATA_RGB_TRANSMITTANCE
+#if defined(STRATA_RGB_TRANSMITTANCE) && !defined(DEPTH_ONLY)
 // A coloured filter's layer: premultiplied colour and what it lets through, per channel.
 layout(location = 1) out vec4 outFilter;
 #endif
@@ -28,7 +28,7 @@ void main() {
     if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
     if (!uFirstLayer && z >= texelFetch(uPreviousDepth, pixel, 0).r) discard;
     if (uFirstLayer) atomicCounterIncrement(uRemaining);
-#if defined(STRATA_RGB_TRANSMITTANCE)
+#if defined(STRATA_RGB_TRANSMITTANCE) && !defined(DEPTH_ONLY)
     SurfaceOptics o = surfaceOptics();
     outColor = vec4(o.premultiplied, 1.0);
     outFilter = vec4(o.transmittance, 1.0);
