@@ -12,6 +12,7 @@
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/bucket_range.hpp"
 #include "oit/peeling/peel_bindings.h"
@@ -57,8 +58,9 @@ public:
         if (targets > maxDrawBuffers)
             throw std::runtime_error("bun: " + std::to_string(buckets) + " buckets need " + std::to_string(targets) +
                                      " render targets, the device has " + std::to_string(maxDrawBuffers));
-        ensurePrograms();
-        ensureTargets(frame.size, buckets);
+        const ColorModel model = colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, buckets, model);
         stats_ = {};
         const GLuint zeros[2] = {0, 0};
         glNamedBufferSubData(counters_.id(), 0, sizeof(zeros), zeros);
@@ -80,28 +82,38 @@ public:
         stats_.overflowed = stats_.fragmentsDropped > 0;
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Range RG32F (8 B), ceil(B/2) RGBA32F bucket depths (16 B), 2B colours (RGBA16F, 8 B, or
-        // RGBA32F, 16 B).
+        // RGBA32F, 16 B), and 2B filters besides with coloured filters.
         stats_.bytes = pixels * (8 + std::uint64_t(targets) * 16 +
-                                 std::uint64_t(buckets) * 2 * floatTexelBytes(settings_.precision, 4)) +
+                                 std::uint64_t(buckets) * colorSlotsPerBucket() * floatTexelBytes(settings_.precision, 4)) +
                        sizeof(zeros);
     }
 
 private:
-    void ensurePrograms() {
+    int colorSlotsPerBucket() const { return model_ == ColorModel::RgbTransmittance ? 4 : 2; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programsFor_[int(model)];
+        programs_ = &p;
+        if (!p.composite) {
+            p.color16 = buildSceneProgram("oit/peeling/bun_color.frag.glsl", withColorModel({{"COLOR_FORMAT", "rgba16f"}}, model));
+            p.color32 = buildSceneProgram("oit/peeling/bun_color.frag.glsl", withColorModel({{"COLOR_FORMAT", "rgba32f"}}, model));
+            p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_composite.frag.glsl"},
+                                           withColorModel({}, model));
+        }
         if (captureProgram_.program) return;
         captureProgram_ = buildSceneProgram("oit/peeling/bun_capture.frag.glsl", {{"MAX_TARGETS", std::to_string(kMaxTargets)}});
-        colorProgram_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl", {{"COLOR_FORMAT", "rgba16f"}});
-        colorProgram32_ = buildSceneProgram("oit/peeling/bun_color.frag.glsl", {{"COLOR_FORMAT", "rgba32f"}});
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_composite.frag.glsl"});
         counters_ = gl::Buffer::create();
         glNamedBufferStorage(counters_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
     }
 
-    void ensureTargets(glm::ivec2 size, int buckets) {
-        if (size == size_ && buckets == allocatedBuckets_ && settings_.precision == allocatedPrecision_) return;
+    void ensureTargets(glm::ivec2 size, int buckets, ColorModel model) {
+        if (size == size_ && buckets == allocatedBuckets_ && settings_.precision == allocatedPrecision_ &&
+            model == model_)
+            return;
         size_ = size;
         allocatedBuckets_ = buckets;
         allocatedPrecision_ = settings_.precision;
+        model_ = model;
         int targets = (buckets + 1) / 2;
         auto array = [&](GLenum format, int layers) {
             gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
@@ -111,7 +123,7 @@ private:
             return t;
         };
         bucketDepths_ = array(GL_RGBA32F, targets);
-        colors_ = array(rgbaFloatFormat(settings_.precision), 2 * buckets);
+        colors_ = array(rgbaFloatFormat(settings_.precision), colorSlotsPerBucket() * buckets);
         captureFbo_ = gl::Framebuffer::create();
         std::vector<GLenum> drawBuffers;
         for (int i = 0; i < targets; ++i) {
@@ -163,7 +175,7 @@ private:
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         glDisable(GL_BLEND);
-        GLuint p = compositeProgram_.id();
+        GLuint p = programs_->composite.id();
         glProgramUniform1i(p, glGetUniformLocation(p, "uBuckets"), buckets);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, bucketDepths_.id());
@@ -172,11 +184,19 @@ private:
         ++stats_.passes;
     }
 
-    const SceneProgram& colorProgram() const { return isHalf(settings_.precision) ? colorProgram_ : colorProgram32_; }
+    const SceneProgram& colorProgram() const {
+        return isHalf(settings_.precision) ? programs_->color16 : programs_->color32;
+    }
 
+    struct Programs {
+        SceneProgram color16, color32;  // by the colours' precision
+        gl::Program composite;
+    };
     int allocatedPrecision_ = 0;
-    SceneProgram captureProgram_, colorProgram_, colorProgram32_;
-    gl::Program compositeProgram_;
+    ColorModel model_ = ColorModel::Scalar;  // the colour slots'
+    SceneProgram captureProgram_;
+    Programs programsFor_[kColorModels];  // built on first use, per ColorModel (oit/color_model.hpp)
+    Programs* programs_ = nullptr;        // the frame's
     gl::Buffer counters_;
     glm::ivec2 size_{0, 0};
     int allocatedBuckets_ = 0;
@@ -193,8 +213,10 @@ namespace strata {
 TechniqueEntry bunEntry() {
     TechniqueInfo info{"bun", "peeling", false, false, "4 (range + capture + colour + composite)",
                        "w*h*(8 + 16*ceil(B/2) + 16*B) B at precision=16: range, bucket depths, two RGBA16F colours "
-                       "per bucket; w*h*(8 + 16*ceil(B/2) + 32*B) B at 32 (RGBA32F colours)",
+                       "per bucket; w*h*(8 + 16*ceil(B/2) + 32*B) B at 32 (RGBA32F colours); twice the colours in a scene "
+                       "with coloured filters",
                        "uniform bucket peeling: B depth buckets keep their nearest and farthest fragment in one pass"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::BucketPeeling>(info);
 }
 

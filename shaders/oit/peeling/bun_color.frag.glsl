@@ -1,6 +1,8 @@
 #version 450 core
 // Bucket colour pass: a fragment whose depth is its bucket's nearest (farthest) captured depth
 // stores its colour in the bucket's first (second) slot. Coincident fragments race for a slot.
+// STRATA_RGB_TRANSMITTANCE: the slot holds the premultiplied colour, and the slot 2 uBuckets
+// further on what the fragment lets through per channel.
 #include "surface.glsl"
 #include "bun_bucket.glsl"
 
@@ -25,5 +27,11 @@ void main() {
         slot = 2 * bucket + 1;
     else
         return;
+#ifdef STRATA_RGB_TRANSMITTANCE
+    SurfaceOptics o = surfaceOptics();
+    imageStore(uColors, ivec3(pixel, slot), vec4(o.premultiplied, 1.0));
+    imageStore(uColors, ivec3(pixel, slot + 2 * uBuckets), vec4(o.transmittance, 1.0));
+#else
     imageStore(uColors, ivec3(pixel, slot), surfaceColor());
+#endif
 }
