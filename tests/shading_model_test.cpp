@@ -301,4 +301,7 @@ TEST_CASE("transmission: the filter is the base colour less Fresnel, and its sca
     const glm::vec4 clear = gpu::scalarOpacityForm(gpu::surfaceOpticsOf(glm::vec3(0.05f), 1.0f, glm::vec3(1.0f)));
     CHECK(clear.a == gpu::kMinScalarAlpha);
     CHECK(std::isfinite(clear.r));
+    // A coverage-0 texel of BLEND glass lets everything through and shows nothing: (0, 0).
+    const glm::vec4 none = gpu::scalarOpacityForm(gpu::surfaceOpticsOf(glm::vec3(0.5f), 0.0f, headOn));
+    CHECK(none == glm::vec4(0.0f));
 }

@@ -12,7 +12,11 @@
 #include "reference/raycast.hpp"
 #include "scene/builtin_scenes.hpp"
 
+#include <glm/gtc/packing.hpp>
+
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 using namespace strata;
 using namespace strata::test::material;
@@ -149,5 +153,36 @@ TEST_CASE("six panes of coloured glass: every RGB technique equals the reference
         test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
         CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
         CHECK_FALSE(r.result.stats.overflowed);
+    }
+}
+
+TEST_CASE("in a scene with glass, the buffers keep every other fragment at the scalar layout's precision") {
+    // Sixteen black BLEND layers of alpha 0.05 over a white unlit backdrop, and a small pane of
+    // glass in a corner, which makes the scene's buffers store coloured filters. The centre sees
+    // the layers only: white x (1 - a)^16 with a as a half stores it (0.4402). A 10-bit
+    // transmittance would give 0.4412 there (0.95 rounds to 972 / 1023).
+    test::glContext();
+    Scene s = framedScene();
+    s.materials[1].baseColor = glm::vec3(1.0f);
+    s.materials[1].unlit = true;
+    for (int i = 0; i < 16; ++i) {
+        Material layer = blend({0.0f, 0.0f, 0.0f, 0.05f});
+        layer.unlit = true;
+        addObject(s, quad(-1, 1, 0.5f - 0.05f * float(i)), layer);
+    }
+    Mesh corner = quad(0.8f, 1.0f, 0.6f);
+    addObject(s, std::move(corner), glass(kFrontTint, 1.0f, 0.5f));
+    const std::vector<Object> objects = flatten(s);
+    const Camera camera = defaultCamera(s, objects);
+    GpuScene gpu(std::move(s));
+    REQUIRE(gpu.hasColoredFilters());
+    const float a = glm::unpackHalf1x16(glm::packHalf1x16(0.05f));
+    const float want = std::pow(1.0f - a, 16.0f);
+    for (const std::string& id : {"abuffer", "ll", "sbuffer", "bun-ll"}) {
+        CAPTURE(id);
+        auto t = createTechnique(id);
+        if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=20");
+        const glm::vec3 c = centre(test::renderWith(gpu, camera, kSize, *t).image);
+        CHECK(std::abs(c.g - want) <= 2e-5f);
     }
 }

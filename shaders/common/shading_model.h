@@ -235,12 +235,18 @@ GPU_FN SurfaceOptics surfaceOpticsOf(vec3 shaded, float alpha, vec3 transmitted)
 // The same fragment as one colour and one alpha, for the techniques that composite a scalar
 // transmittance (the approximate ones, peeling): alpha = 1 - mean(transmittance), colour the
 // premultiplied colour over it, so that alpha * colour is exact and only the filter's tint
-// is lost. Where almost nothing is absorbed (clear glass: a highlight on a filter of ~1) the
-// alpha is held at kMinScalarAlpha, and the colour at most 1 / kMinScalarAlpha times the light.
+// is lost. Where almost nothing is absorbed but light is reflected (clear glass: a highlight on
+// a filter of ~1) the alpha is held at kMinScalarAlpha, and the colour at most
+// 1 / kMinScalarAlpha times the light; where nothing is reflected either (a coverage-0 texel)
+// the fragment is (0, alpha): it lets everything through.
 GPU_CONST float kMinScalarAlpha = 1.0f / 256.0f;
 GPU_FN vec4 scalarOpacityForm(SurfaceOptics o) {
-    float alpha = 1.0f - (o.transmittance.x + o.transmittance.y + o.transmittance.z) / 3.0f;
-    alpha = min(max(alpha, kMinScalarAlpha), 1.0f);
+    float alpha = min(max(1.0f - (o.transmittance.x + o.transmittance.y + o.transmittance.z) / 3.0f, 0.0f), 1.0f);
+    if (alpha < kMinScalarAlpha) {
+        if (!(max(o.premultiplied.x, max(o.premultiplied.y, o.premultiplied.z)) > 0.0f))
+            return vec4(0.0f, 0.0f, 0.0f, alpha);
+        alpha = kMinScalarAlpha;
+    }
     return vec4(o.premultiplied / alpha, alpha);
 }
 

@@ -32,14 +32,14 @@ SurfaceOptics surfaceOptics() {
 }
 
 // The shaded colour and the alpha of the fragment (common/material.glsl); for a transmissive
-// material the scalar form of its optics (shading_model.h's scalarOpacityForm).
+// material the scalar form of its optics (shading_model.h's scalarOpacityForm). A material in the
+// transmission build for its ior alone (transmission 0) filters nothing: its usual pair.
 vec4 surfaceColor() {
 #ifdef STRATA_TRANSMISSION
-    return scalarOpacityForm(surfaceOptics());
-#else
+    if (uTransmission > 0.0) return scalarOpacityForm(surfaceOptics());
+#endif
     vec4 base = materialBaseColor();
     return vec4(shadeMaterial(base.rgb, surfaceNormal(), vWorldPosition), base.a);
-#endif
 }
 
 // What `distance` metres of this object's medium let through, per channel: exp(-tau d). Finite,

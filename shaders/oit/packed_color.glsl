@@ -1,15 +1,20 @@
 // A stored fragment's colour in two words, the layout of the A-buffer's nodes and the buffers'
 // entries, and its front-to-back "under" composite.
 //  - Scalar (the default): half2 (r, g) and half2 (b, alpha), colour not premultiplied.
-//  - STRATA_RGB_TRANSMITTANCE: the premultiplied colour in RGB9E5 (GL's shared-exponent format:
-//    nine mantissa bits each, so each channel is within 2^-10 of the largest, HDR highlights
-//    included) and the transmittance per channel as three 10-bit unorms (within 1/2046). The
-//    same 8 bytes as the scalar layout: a scene with coloured filters costs no memory more.
+//  - STRATA_RGB_TRANSMITTANCE adds a coloured filter's layout, flagged by bit 31 of word 1 (the
+//    scalar layout's alpha, a half in [0, 1], never sets it): the premultiplied colour in RGB9E5
+//    (GL's shared-exponent format: nine mantissa bits each, so each channel is within 2^-10 of
+//    the largest, HDR highlights included) and the transmittance per channel as three 10-bit
+//    unorms (within 1/2046). Every other fragment of such a scene keeps the scalar layout and its
+//    precision (a 10-bit transmittance would shift 16 layers of one alpha by up to 0.8 %). The
+//    same 8 bytes either way: a scene with coloured filters costs no memory more.
 #ifndef STRATA_PACKED_COLOR_GLSL
 #define STRATA_PACKED_COLOR_GLSL
 #include "oit/transmittance.glsl"
 
 #ifdef STRATA_RGB_TRANSMITTANCE
+const uint kColoredFilter = 0x80000000u;  // word 1's flag
+
 // GL 4.5 specification 8.5.2 (the RGB9_E5 encoding), with the exponent from frexp, which is
 // exact where floor(log2(x)) can round up.
 uint packRgb9e5(vec3 rgb) {
@@ -45,13 +50,15 @@ vec3 unpackUnorm3x10(uint word) {
 
 void compositePacked(uint word0, uint word1, inout vec3 color, inout Transmittance transmittance) {
 #ifdef STRATA_RGB_TRANSMITTANCE
-    color += transmittance * unpackRgb9e5(word0);
-    transmittance *= unpackUnorm3x10(word1);
-#else
+    if ((word1 & kColoredFilter) != 0u) {
+        color += transmittance * unpackRgb9e5(word0);
+        transmittance *= unpackUnorm3x10(word1);
+        return;
+    }
+#endif
     vec2 rg = unpackHalf2x16(word0);
     vec2 ba = unpackHalf2x16(word1);
     color += transmittance * ba.y * vec3(rg, ba.x);
     transmittance *= 1.0 - ba.y;
-#endif
 }
 #endif

@@ -88,7 +88,9 @@ PointSampling PointSamples::sample(const FrameContext& frame, const PassParamete
     // Alpha 0 marks an unlit material (shaders/oit/screendoor/points.frag.glsl).
     for (const Object& o : objects) {
         const Material& m = frame.scene.scene().materials[o.material];
-        colors[std::size_t(o.id)] = glm::vec4(m.baseColor, m.unlit ? 0.0f : 1.0f);
+        // Glass scatters only what it does not transmit (shading_model.h's diffuseAlbedo).
+        const float diffuse = m.transmissive() ? 1.0f - m.transmission : 1.0f;
+        colors[std::size_t(o.id)] = glm::vec4(m.baseColor * diffuse, m.unlit ? 0.0f : 1.0f);
     }
     gl::allocateBuffer(colors_, colors.size() * sizeof(glm::vec4), GL_DYNAMIC_DRAW, "screendoor-object-sw colours");
     glNamedBufferSubData(colors_.id(), 0, GLsizeiptr(colors.size() * sizeof(glm::vec4)), colors.data());

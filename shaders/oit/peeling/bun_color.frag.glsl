@@ -2,7 +2,8 @@
 // Bucket colour pass: a fragment whose depth is its bucket's nearest (farthest) captured depth
 // stores its colour in the bucket's first (second) slot. Coincident fragments race for a slot.
 // STRATA_RGB_TRANSMITTANCE: the slot holds the premultiplied colour, and the slot 2 uBuckets
-// further on what the fragment lets through per channel.
+// further on what the fragment lets through per channel; coincident fragments racing for one
+// slot may then leave one's colour with the other's filter (bun is not coplanarity-aware).
 #include "surface.glsl"
 #include "bun_bucket.glsl"
 
