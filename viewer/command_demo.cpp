@@ -49,9 +49,12 @@ void writeReport(const DemoArgs& a) {
     outputs.addText(dir / "bench.json", benchToJson(report).dump(2) + "\n");
     outputs.addText(dir / "bench.csv", benchToCsv(report));
 
-    std::string md = "# Strata demo report\n\nScene `builtin:default` (interpenetrating glass, a decal on a transparent "
-                     "panel, a wireframe over its own surface, volumes, dense opaque detail behind), every technique against the exact "
-                     "reference `abuffer`. Produced by `strata demo` without a display.\n\n```\n" + table + "```\n\n";
+    std::string md =
+        "# Strata demo report\n\nScene `builtin:default` (interpenetrating glass, a decal on a transparent panel in "
+        "front of coloured glass behind glass, a stained-glass pane, a foliage card, a wireframe over its own surface, "
+        "volumes, dense opaque detail behind), every technique against the exact reference `abuffer`. The techniques "
+        "whose `strata modes` filters column says `scalar` draw the coloured glass grey (its tint lost): part of their "
+        "error here. Produced by `strata demo` without a display.\n\n```\n" + table + "```\n\n";
     for (const auto& m : report.modes) md += "![" + m.id + "](images/" + m.id + ".png)\n";
     outputs.addText(dir / "README.md", md);
     outputs.commit();
