@@ -22,25 +22,6 @@ namespace {
 // Two linear texels (metallic-roughness, normal and occlusion textures are not sRGB).
 TextureImage linearTexels(glm::u8vec4 left, glm::u8vec4 right) { return twoTexels(left, right); }
 
-// Renders `scene` with every exact technique and checks each against the CPU reference; returns
-// the reference image.
-Image checkAgainstReference(Scene scene) {
-    test::glContext();
-    deriveMissingTangents(scene);
-    const std::vector<Object> objects = flatten(scene);
-    const Camera camera = defaultCamera(scene, objects);
-    const Image cpu = raycastReference(scene, objects, camera, kSize.x, kSize.y);
-    GpuScene gpu(std::move(scene));
-    for (const std::string& id : exactIds()) {
-        CAPTURE(id);
-        auto t = exactTechnique(id);
-        test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
-        CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
-        CHECK_FALSE(r.result.stats.overflowed);
-    }
-    return cpu;
-}
-
 // `a` and `b` render alike on the CPU reference, and each GPU image matches its reference.
 void checkPair(Scene a, Scene b) {
     const Image ia = checkAgainstReference(std::move(a));

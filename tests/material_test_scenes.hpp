@@ -4,10 +4,15 @@
 // across them, two-texel images, and the techniques that are exact given enough memory.
 #include "gl_test_support.hpp"
 
+#include <doctest/doctest.h>
+
+#include "reference/raycast.hpp"
 #include "render/shading.hpp"
 #include "scene/mesh_builders.hpp"
+#include "scene/tangents.hpp"
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -98,10 +103,32 @@ inline std::vector<std::string> exactIds() {
     return ids;
 }
 
-inline std::unique_ptr<Technique> exactTechnique(const std::string& id) {
+inline std::unique_ptr<Technique> exactTechnique(const std::string& id, int capacity = 4) {
     auto t = createTechnique(id);
-    if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=4");
+    if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=" + std::to_string(capacity));
     return t;
+}
+
+// Renders `scene` with every exact technique that `which` accepts (all when empty), a bounded
+// one at `capacity`, and checks each against the CPU reference within kTolerance with nothing
+// overflowed; returns the reference image.
+inline Image checkAgainstReference(Scene scene, const std::function<bool(const TechniqueInfo&)>& which = {},
+                                   int capacity = 4) {
+    test::glContext();
+    deriveMissingTangents(scene);
+    const std::vector<Object> objects = flatten(scene);
+    const Camera camera = defaultCamera(scene, objects);
+    const Image cpu = raycastReference(scene, objects, camera, kSize.x, kSize.y);
+    GpuScene gpu(std::move(scene));
+    for (const std::string& id : exactIds()) {
+        auto t = exactTechnique(id, capacity);
+        if (which && !which(t->info())) continue;
+        CAPTURE(id);
+        test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
+        CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
+        CHECK_FALSE(r.result.stats.overflowed);
+    }
+    return cpu;
 }
 
 }  // namespace strata::test::material

@@ -49,6 +49,8 @@ glm::vec3 centre(const Image& image) { return glm::vec3(image.at(kSize.x / 2, kS
 
 float mean(glm::vec3 v) { return (v.r + v.g + v.b) / 3.0f; }
 
+bool rgbOnly(const TechniqueInfo& info) { return info.rgbTransmittance; }
+
 }  // namespace
 
 TEST_CASE("glass behind coloured glass: the RGB techniques pass the product of the filters per channel") {
@@ -88,18 +90,7 @@ TEST_CASE("a BLEND decal over lit coloured glass behind glass matches the refere
     addObject(s, quad(-1, 0, 0.5f), blend({0.2f, 0.4f, 1.0f, 0.5f}));
     addObject(s, quad(-1, 1, 0.3f), glass(kFrontTint, 1.0f, 0.3f));
     addObject(s, quad(-0.5f, 1, 0.0f), glass(kBackTint, 0.7f, 0.6f));
-    const std::vector<Object> objects = flatten(s);
-    const Camera camera = defaultCamera(s, objects);
-    const Image cpu = raycastReference(s, objects, camera, kSize.x, kSize.y);
-    GpuScene gpu(std::move(s));
-    for (const std::string& id : exactIds()) {
-        auto t = exactTechnique(id);
-        if (!t->info().rgbTransmittance) continue;
-        CAPTURE(id);
-        test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
-        CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
-        CHECK_FALSE(r.result.stats.overflowed);
-    }
+    checkAgainstReference(std::move(s), rgbOnly);
 }
 
 TEST_CASE("neutral glass composites exactly on every exact technique, in its scalar form too") {
@@ -109,16 +100,7 @@ TEST_CASE("neutral glass composites exactly on every exact technique, in its sca
     addObject(s, quad(-1, 0, 0.5f), blend({0.2f, 0.4f, 1.0f, 0.5f}));
     addObject(s, quad(-1, 1, 0.3f), glass(glm::vec3(0.8f), 1.0f, 0.3f));
     addObject(s, quad(-0.5f, 1, 0.0f), glass(glm::vec3(0.5f), 0.6f, 0.6f));
-    const std::vector<Object> objects = flatten(s);
-    const Camera camera = defaultCamera(s, objects);
-    const Image cpu = raycastReference(s, objects, camera, kSize.x, kSize.y);
-    GpuScene gpu(std::move(s));
-    for (const std::string& id : exactIds()) {
-        CAPTURE(id);
-        auto t = exactTechnique(id);
-        test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
-        CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
-    }
+    checkAgainstReference(std::move(s));
 }
 
 TEST_CASE("every technique draws coloured glass: each build of the transmission variant compiles, output finite") {
@@ -139,21 +121,7 @@ TEST_CASE("every technique draws coloured glass: each build of the transmission 
 }
 
 TEST_CASE("six panes of coloured glass: every RGB technique equals the reference, peeling over several passes") {
-    test::glContext();
-    Scene s = makeLitLayersScene(6, true);
-    const std::vector<Object> objects = flatten(s);
-    const Camera camera = defaultCamera(s, objects);
-    const Image cpu = raycastReference(s, objects, camera, kSize.x, kSize.y);
-    GpuScene gpu(std::move(s));
-    for (const std::string& id : exactIds()) {
-        auto t = exactTechnique(id);
-        if (!t->info().rgbTransmittance) continue;
-        CAPTURE(id);
-        if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=8");
-        test::Rendered r = test::renderWith(gpu, camera, kSize, *t);
-        CHECK(compareImages(r.image, cpu).maxAbsError <= kTolerance);
-        CHECK_FALSE(r.result.stats.overflowed);
-    }
+    checkAgainstReference(makeLitLayersScene(6, true), rgbOnly, 8);
 }
 
 TEST_CASE("in a scene with glass, the buffers keep every other fragment at the scalar layout's precision") {

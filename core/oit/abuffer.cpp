@@ -49,7 +49,7 @@ public:
     void render(const FrameContext& frame) override {
         // The volumetric resolve reads the scalar layout (oit/volume/volume_list.glsl).
         const ColorModel model = volume_ ? ColorModel::Scalar : colorModelFor(frame.scene);
-        programs_ = &programsFor_[int(model)];
+        programs_.use(model);
         if (!programs_->store.program) {
             const gl::Defines defines = withColorModel(volume_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{}, model);
             programs_->store = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
@@ -116,8 +116,7 @@ private:
         SceneProgram store;
         gl::Program resolve, computeResolve;
     };
-    Programs programsFor_[kColorModels];  // built on first use, per ColorModel
-    Programs* programs_ = nullptr;        // the frame's
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     FragmentLists lists_;
     std::unique_ptr<VolumeResolve> volume_;  // abuffer-volume only
 };

@@ -23,4 +23,20 @@ inline gl::Defines withColorModel(gl::Defines defines, ColorModel model) {
     return defines;
 }
 
+// A technique's program set for each colour model, each built on its first use: `use` picks
+// the frame's and returns it (empty until built), `->` reaches the one picked last.
+template <class Programs>
+class ProgramsPerColorModel {
+public:
+    Programs& use(ColorModel model) {
+        current_ = &sets_[int(model)];
+        return *current_;
+    }
+    Programs* operator->() const { return current_; }
+
+private:
+    Programs sets_[kColorModels];
+    Programs* current_ = nullptr;
+};
+
 }  // namespace strata

@@ -279,7 +279,7 @@ glm::vec3 interpolatedPosition(const PreparedObject& o, const std::uint32_t* idx
 }
 
 // What a hit shows: its shaded colour and, for a transmissive material, what it lets through
-// (common/shade_material.glsl's materialTransmitted); zero otherwise.
+// (common/shade_material.glsl's shadeTransmissive); zero otherwise.
 struct ShadedHit {
     glm::vec3 color{0.0f};
     glm::vec3 transmitted{0.0f};

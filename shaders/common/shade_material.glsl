@@ -21,15 +21,21 @@ vec3 shadeMaterial(vec3 baseColor, vec3 normal, vec3 worldPosition) {
 #endif
 }
 
-#ifdef STRATA_TRANSMISSION
-// What a transmissive material lets through at a point, per channel (shading_model.h's
-// transmissionFilter), times its medium's attenuation where the view ray enters it (the
-// interpolated normal faces the eye): KHR_materials_volume's thickness, render/gpu_scene.cpp.
-vec3 materialTransmitted(vec3 baseColor, vec3 normal, vec3 worldPosition) {
+#if defined(STRATA_TRANSMISSION) && !defined(STRATA_UNLIT)
+// A transmissive material at a point, each input fetched once: its shaded colour, as
+// shadeMaterial, and what it lets through per channel (shading_model.h's transmissionFilter)
+// times its medium's attenuation where the view ray enters it (the interpolated normal faces the
+// eye; KHR_materials_volume's thickness, render/gpu_scene.cpp), for a coverage `coverage`.
+SurfaceOptics shadeTransmissive(vec3 baseColor, float coverage, vec3 normal, vec3 worldPosition) {
+    vec2 metallicRoughness = materialMetallicRoughness();
+    float metallic = metallicRoughness.x;
+    vec3 mapped = materialNormal(normal);
+    vec3 shaded = shadeLit(diffuseAlbedo(baseColor, metallic, uTransmission), specularF0(baseColor, metallic, uIor),
+                           metallicRoughness.y, materialOcclusion(), materialEmissive(), mapped, worldPosition);
     vec3 toEye = directionToEye(worldPosition);
-    vec3 n = normalFacingEye(materialNormal(normal), toEye);
-    vec3 through = transmissionFilter(baseColor, materialMetallicRoughness().x, uTransmission, uIor, dot(n, toEye));
-    return dot(normal, toEye) > 0.0 ? through * uVolumeFilter : through;
+    vec3 through = transmissionFilter(baseColor, metallic, uTransmission, uIor, dot(normalFacingEye(mapped, toEye), toEye));
+    if (dot(normal, toEye) > 0.0) through *= uVolumeFilter;
+    return surfaceOpticsOf(shaded, coverage, through);
 }
 #endif
 

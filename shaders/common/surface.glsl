@@ -22,12 +22,11 @@ vec3 surfaceNormal() {
 // The techniques that composite RGB transmittance store this (oit/fragment_color.glsl).
 SurfaceOptics surfaceOptics() {
     vec4 base = materialBaseColor();
-    vec3 shaded = shadeMaterial(base.rgb, surfaceNormal(), vWorldPosition);
-#ifdef STRATA_TRANSMISSION
-    float coverage = uAlphaBlend ? base.a : 1.0;
-    return surfaceOpticsOf(shaded, coverage, materialTransmitted(base.rgb, surfaceNormal(), vWorldPosition));
+#if defined(STRATA_TRANSMISSION) && !defined(STRATA_UNLIT)
+    // BLEND glass covers by its alpha; OPAQUE glass covers its whole surface.
+    return shadeTransmissive(base.rgb, uAlphaBlend ? base.a : 1.0, surfaceNormal(), vWorldPosition);
 #else
-    return surfaceOpticsOf(shaded, base.a, vec3(0.0));
+    return surfaceOpticsOf(shadeMaterial(base.rgb, surfaceNormal(), vWorldPosition), base.a, vec3(0.0));
 #endif
 }
 

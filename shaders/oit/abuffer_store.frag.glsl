@@ -17,12 +17,12 @@ uniform uint uCapacity;
 void main() {
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
-    vec4 c = surfaceColor();
+    uvec2 words = storedSurfaceColor().words;
 #ifdef VOLUME
     uint primitiveBits = uint(gl_PrimitiveID) | volumeFlags();
 #else
     uint primitiveBits = uint(gl_PrimitiveID);
 #endif
     uint head = imageAtomicExchange(uHeads, ivec2(gl_FragCoord.xy), index + 1u);
-    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, packSurfaceColor(c), head);
+    writeNode(index, gl_FragCoord.z, uObjectId, primitiveBits, words, head);
 }

@@ -38,7 +38,7 @@ public:
 
     void render(const FrameContext& frame) override {
         const ColorModel model = colorModelFor(frame.scene);
-        programs_ = &programsFor_[int(model)];
+        programs_.use(model);
         if (!programs_->store.program) {
             programs_->store = buildSceneProgram("oit/buffers/sbuffer_store.frag.glsl", withColorModel({}, model));
             programs_->resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/buffers/resolve_array.frag.glsl"},
@@ -165,8 +165,7 @@ private:
         SceneProgram store;
         gl::Program resolve;
     };
-    Programs programsFor_[kColorModels];  // built on first use, per ColorModel (oit/color_model.hpp)
-    Programs* programs_ = nullptr;        // the frame's
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Buffer offsets_, entries_;
     std::uint64_t offsetsSize_ = 0, entriesSize_ = 0;
     PrefixSum scan_;

@@ -48,7 +48,7 @@ public:
 
     void render(const FrameContext& frame) override {
         const ColorModel model = colorModelFor(frame.scene);
-        programs_ = &programsFor_[int(model)];
+        programs_.use(model);
         if (!programs_->store.program) {
             programs_->store = buildSceneProgram("oit/peeling/bun_ll_store.frag.glsl", withColorModel({}, model));
             programs_->resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bun_ll_resolve.frag.glsl"},
@@ -98,8 +98,7 @@ private:
         SceneProgram store;
         gl::Program resolve;
     };
-    Programs programsFor_[kColorModels];  // built on first use, per ColorModel (oit/color_model.hpp)
-    Programs* programs_ = nullptr;        // the frame's
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     BucketRange range_;
     FragmentLists lists_;
 };

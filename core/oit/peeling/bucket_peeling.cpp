@@ -92,8 +92,7 @@ private:
     int colorSlotsPerBucket() const { return model_ == ColorModel::RgbTransmittance ? 4 : 2; }
 
     void ensurePrograms(ColorModel model) {
-        Programs& p = programsFor_[int(model)];
-        programs_ = &p;
+        Programs& p = programs_.use(model);
         if (!p.composite) {
             p.color16 = buildSceneProgram("oit/peeling/bun_color.frag.glsl", withColorModel({{"COLOR_FORMAT", "rgba16f"}}, model));
             p.color32 = buildSceneProgram("oit/peeling/bun_color.frag.glsl", withColorModel({{"COLOR_FORMAT", "rgba32f"}}, model));
@@ -195,8 +194,7 @@ private:
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the colour slots'
     SceneProgram captureProgram_;
-    Programs programsFor_[kColorModels];  // built on first use, per ColorModel (oit/color_model.hpp)
-    Programs* programs_ = nullptr;        // the frame's
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Buffer counters_;
     glm::ivec2 size_{0, 0};
     int allocatedBuckets_ = 0;

@@ -67,8 +67,7 @@ private:
     bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
 
     void ensurePrograms(ColorModel model) {
-        Programs& p = programsFor_[int(model)];
-        programs_ = &p;
+        Programs& p = programs_.use(model);
         if (!p.peel.program) {
             const gl::Defines defines = withColorModel({}, model);
             p.peel = buildSceneProgram("oit/peeling/dual_peel.frag.glsl", defines);
@@ -257,8 +256,7 @@ private:
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     SceneProgram initProgram_;
-    Programs programsFor_[kColorModels];  // built on first use, per ColorModel
-    Programs* programs_ = nullptr;        // the frame's
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_, frontLayers_, backLayers_, interiorLeft_;
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;

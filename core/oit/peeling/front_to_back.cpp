@@ -84,8 +84,7 @@ private:
     bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
 
     void ensurePrograms(ColorModel model) {
-        Programs& p = programsFor_[int(model)];
-        programs_ = &p;
+        Programs& p = programs_.use(model);
         if (!p.peel.program) {
             gl::Defines defines = withColorModel({}, model);
             if (twoPass_) defines["DEPTH_ONLY"] = "";
@@ -189,10 +188,20 @@ private:
         return gl::readUint(counter_);
     }
 
-    static void underBlending() {
+    // The "under" blend of f2b's layer pass and f2b2's shading pass. Per channel, the pass reads
+    // the accumulated filter it writes: each pixel its own texel, once, which GL allows when a
+    // texture barrier separates the draws (ARB_texture_barrier; the caller ends with another).
+    void underBlending() const {
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
-        glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+        if (!rgb()) {
+            glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            return;
+        }
+        glTextureBarrier();
+        glBlendFunci(0, GL_ONE, GL_ONE);         // colour += T x layer colour
+        glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);  // T *= layer filter
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
     }
 
     std::uint64_t blendLayer(const FrameContext& frame, int cur) {
@@ -200,19 +209,8 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[cur].id());
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, layerColor_.id());
-        if (rgb()) {
-            // The pass reads the accumulated filter it writes: each pixel its own texel, once,
-            // which GL allows when a texture barrier separates the draws (ARB_texture_barrier).
-            glTextureBarrier();
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunci(0, GL_ONE, GL_ONE);         // colour += T x layer colour
-            glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);  // T *= layer filter
-            glBindTextureUnit(gpu::BIND_PEEL_LAYER_FILTER, layerFilter_.id());
-            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
-        } else {
-            underBlending();
-        }
+        if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_LAYER_FILTER, layerFilter_.id());
+        underBlending();
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         drawFullscreen(frame, programs_->blend.id());
         glEndQuery(GL_SAMPLES_PASSED);
@@ -231,17 +229,7 @@ private:
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        if (rgb()) {
-            // As f2b's layer pass: the fragment reads the accumulated filter at its own pixel.
-            glTextureBarrier();
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunci(0, GL_ONE, GL_ONE);
-            glBlendFunci(1, GL_ZERO, GL_SRC_COLOR);
-            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
-        } else {
-            underBlending();
-        }
+        underBlending();
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         skipper_.draw(frame, programs_->shade, stats_);
         glEndQuery(GL_SAMPLES_PASSED);
@@ -273,8 +261,7 @@ private:
     bool twoPass_;
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
-    Programs programsFor_[kColorModels];      // built on first use, per ColorModel
-    Programs* programs_ = nullptr;            // the frame's
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Buffer counter_;
     gl::Query samples_, anyLeft_;
     glm::ivec2 size_{0, 0};

@@ -16,8 +16,9 @@ uniform uint uWidth;
 uniform uint uCapacity;
 
 void main() {
-    vec4 c = surfaceColor();
-    uvec2 words = packSurfaceColor(c);
+    StoredColor fragmentColor = storedSurfaceColor();
+    vec4 c = fragmentColor.scalar;
+    uvec2 words = fragmentColor.words;
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint slot = imageAtomicAdd(uCounts, pixel, 1u);
     if (slot < uCapacity) {

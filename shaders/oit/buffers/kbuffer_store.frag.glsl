@@ -43,8 +43,9 @@ void main() {
         if (carried != 0u) atomicCounterIncrement(uDropped);
         return;
     }
-    vec4 c = surfaceColor();
-    uvec2 words = packSurfaceColor(c);
+    StoredColor fragmentColor = storedSurfaceColor();
+    vec4 c = fragmentColor.scalar;
+    uvec2 words = fragmentColor.words;
     bool stored = false;
     for (uint i = 0u; i < uCapacity && !stored; ++i) {
         uint k = depthKeys[first + i];

@@ -18,8 +18,9 @@ layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
 uniform uint uCapacity;  // nodes in the pool
 
 void main() {
-    vec4 c = surfaceColor();
-    uvec2 words = packSurfaceColor(c);
+    StoredColor fragmentColor = storedSurfaceColor();
+    vec4 c = fragmentColor.scalar;
+    uvec2 words = fragmentColor.words;
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) { tailAdd(c); return; }
 #ifdef VOLUME

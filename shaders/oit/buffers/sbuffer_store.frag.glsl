@@ -30,5 +30,5 @@ void main() {
     }
     uint slot = atomicAdd(offsets[index], 1u) - uBase;
     if (slot >= uCapacity) { atomicCounterIncrement(uDropped); return; }
-    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), packSurfaceColor(surfaceColor()));
+    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), storedSurfaceColor().words);
 }

@@ -17,8 +17,8 @@ uniform uint uCapacity;
 void main() {
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
-    vec4 c = surfaceColor();
+    uvec2 words = storedSurfaceColor().words;
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint head = imageAtomicExchange(uHeads, ivec3(pixel, bucketOf(pixel, gl_FragCoord.z)), index + 1u);
-    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), packSurfaceColor(c), head);
+    writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words, head);
 }

@@ -19,7 +19,7 @@ layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uOverflowed;
 #endif
 
 void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
-    uvec2 words = packSurfaceColor(c);
+    uvec2 words = packScalarColor(c);
 #if defined(LAYER_LIST)
     uint index;
     if (side == 0) {
