@@ -79,8 +79,9 @@ TEST_CASE("glass behind coloured glass: the RGB techniques pass the product of t
         rgbTechniques += t->info().rgbTransmittance;
         for (int c = 0; c < 3; ++c) CHECK(std::abs(through[c] - want[c]) <= kTolerance);
     }
-    // abuffer, ll, fab, kbuffer, sbuffer, bun-ll, f2b, f2b2, dual, bun.
-    CHECK(rgbTechniques == 10);
+    // abuffer, ll, fab, kbuffer, sbuffer, bun-ll, f2b, f2b2, dual, bun; the coplanarity-aware
+    // f2b-2p, f2b-3p, dual-2p, f2b-ll, f2b-fab, f2b-kb, dual-ll, dual-fab.
+    CHECK(rgbTechniques == 18);
 }
 
 TEST_CASE("a BLEND decal over lit coloured glass behind glass matches the reference on the RGB techniques") {
@@ -118,6 +119,21 @@ TEST_CASE("every technique draws coloured glass: each build of the transmission 
             CHECK(c[k] <= 1.5f);
         }
     }
+}
+
+TEST_CASE("coplanar coloured glass: the coplanarity-aware RGB techniques composite it in the tie order") {
+    // Two panes of differently tinted glass and a BLEND decal in one plane, over a third pane
+    // behind: the coplanar three filter and reflect in (object, primitive) order, which the
+    // colours added show (glass reflects, so the order is visible although the filters commute).
+    test::glContext();
+    Scene s = framedScene();
+    s.lightDirection = glm::normalize(glm::vec3(0.4f, 0.5f, 1.0f));
+    addObject(s, quad(-1, 1, 0.3f), glass(kFrontTint, 1.0f, 0.3f));
+    addObject(s, quad(-1, 1, 0.3f), glass(kBackTint, 0.8f, 0.5f));
+    addObject(s, quad(-0.5f, 1, 0.3f), blend({0.2f, 0.4f, 1.0f, 0.5f}));
+    addObject(s, quad(-1, 1, 0.0f), glass(glm::vec3(0.6f, 0.6f, 1.0f), 1.0f, 0.4f));
+    checkAgainstReference(std::move(s),
+                          [](const TechniqueInfo& info) { return info.rgbTransmittance && info.handlesCoplanarity; });
 }
 
 TEST_CASE("six panes of coloured glass: every RGB technique equals the reference, peeling over several passes") {

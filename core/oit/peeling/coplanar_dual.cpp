@@ -9,9 +9,14 @@
 // targets) + extraction (geometry, only where a side holds two or more) + resolve (full
 // screen). Starts with an initialisation pass (MAX/MIN blending: nearest and farthest, the
 // total by GL_SAMPLES_PASSED) and ends with peel_composite (DUAL).
+//
+// In a scene with coloured filters (oit/color_model.hpp) every colour target gains a second
+// one (coplanar_layer.glsl), and the resolve draws the two sides apart (twelve targets in all,
+// more than GL guarantees one draw: coplanar_dual_resolve.frag.glsl).
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/coplanar_ids.hpp"
 #include "oit/peeling/object_skipper.hpp"
@@ -25,6 +30,7 @@ namespace {
 // One side's targets: the units of peel_bindings.h, plus BIND_COPLANAR_BACK_OFFSET at the back.
 struct Side {
     gl::Texture state, count, minColor, maxColor, layer, accum;
+    gl::Texture minOpacity, maxOpacity, layerPasses, accumPasses;  // the RGB build's second texels
 };
 
 class CoplanarDual final : public TechniqueWithSettings<PeelingSettings> {
@@ -32,8 +38,9 @@ public:
     using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
-        ensurePrograms();
-        ensureTargets(frame.size);
+        const ColorModel model = colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, model);
         stats_ = {};
         if (!ids_.bind(frame)) stats_.overflowed = true;
         skipper_.beginFrame(frame, settings_.skipPeeled);
@@ -45,13 +52,17 @@ public:
         const float nothingLeft[4] = {-1.0f, -2.0f, 0.0f, 0.0f};
         glClearTexImage(side_[0].state.id(), 0, GL_RGBA, GL_FLOAT, frontClear);
         glClearTexImage(side_[1].state.id(), 0, GL_RGBA, GL_FLOAT, backClear);
+        const float nothingAbsorbed[4] = {1, 1, 1, 1};
         for (Side& s : side_) {
             glClearTexImage(s.accum.id(), 0, GL_RGBA, GL_FLOAT, empty);
             glClearTexImage(s.layer.id(), 0, GL_RGBA, GL_FLOAT, empty);
+            if (!rgb()) continue;
+            glClearTexImage(s.accumPasses.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+            glClearTexImage(s.layerPasses.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
         }
         glClearTexImage(bound_.id(), 0, GL_RGBA, GL_FLOAT, nothingLeft);
-        setDepthOrderUniforms(frame, countProgram_.id());
-        setDepthOrderUniforms(frame, extractProgram_.id());
+        setDepthOrderUniforms(frame, programs_->count.id());
+        setDepthOrderUniforms(frame, programs_->extract.id());
 
         const std::uint64_t total = initialise(frame);
         for (int iteration = 0; total > 0; ++iteration) {
@@ -73,8 +84,10 @@ public:
         stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Per side: state and count RGBA32F (16 B each), min and max colour, layer part and
-        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each); the skip bound RG32F (8 B).
-        stats_.bytes = pixels * (2 * (2 * 16 + 4 * floatTexelBytes(settings_.precision, 4)) + 8);
+        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), as many again with coloured
+        // filters; the skip bound RG32F (8 B).
+        stats_.bytes =
+            pixels * (2 * (2 * 16 + (rgb() ? 8 : 4) * floatTexelBytes(settings_.precision, 4)) + 8);
     }
 
 private:
@@ -83,18 +96,28 @@ private:
         std::uint64_t coplanar = 0;  // pixel-sides with two or more
     };
 
-    void ensurePrograms() {
-        if (initProgram_.program) return;
-        initProgram_ = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
-        countProgram_ = buildSceneProgram("oit/peeling/coplanar_dual_count.frag.glsl");
-        extractProgram_ = buildSceneProgram("oit/peeling/coplanar_dual_extract.frag.glsl");
-        checkProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_dual_check.frag.glsl"});
-        resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_dual_resolve.frag.glsl"});
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
-                                             {{"DUAL", ""}});
-        sideLocation_ = glGetUniformLocation(checkProgram_.id(), "uSide");
-        minCountLocation_ = glGetUniformLocation(checkProgram_.id(), "uMinCount");
-        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+    bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programs_.use(model);
+        if (p.init.program) return;
+        auto fullscreen = [model](const char* fragment, gl::Defines defines = {}) {
+            return gl::buildProgram({"common/fullscreen.vert.glsl", fragment}, withColorModel(std::move(defines), model));
+        };
+        p.init = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
+        p.count = buildSceneProgram("oit/peeling/coplanar_dual_count.frag.glsl", withColorModel({}, model));
+        p.extract = buildSceneProgram("oit/peeling/coplanar_dual_extract.frag.glsl", withColorModel({}, model));
+        p.check = fullscreen("oit/peeling/coplanar_dual_check.frag.glsl");
+        if (model == ColorModel::RgbTransmittance) {
+            p.resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", {{"RESOLVE_FRONT", ""}});
+            p.resolve[1] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", {{"RESOLVE_BACK", ""}});
+        } else {
+            p.resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl");
+        }
+        p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl", {{"DUAL", ""}});
+        p.side = glGetUniformLocation(p.check.id(), "uSide");
+        p.minCount = glGetUniformLocation(p.check.id(), "uMinCount");
+        if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
     static gl::Framebuffer framebuffer(const std::vector<GLuint>& colors) {
@@ -108,10 +131,11 @@ private:
         return fbo;
     }
 
-    void ensureTargets(glm::ivec2 size) {
-        if (size == size_ && settings_.precision == allocatedPrecision_) return;
+    void ensureTargets(glm::ivec2 size, ColorModel model) {
+        if (size == size_ && settings_.precision == allocatedPrecision_ && model == model_) return;
         size_ = size;
         allocatedPrecision_ = settings_.precision;
+        model_ = model;
         const GLenum rgba = rgbaFloatFormat(settings_.precision);
         for (Side& s : side_) {
             s.state = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
@@ -120,14 +144,33 @@ private:
             s.maxColor = gl::createTexture2D(rgba, size.x, size.y);
             s.layer = gl::createTexture2D(rgba, size.x, size.y);
             s.accum = gl::createTexture2D(rgba, size.x, size.y);
+            for (gl::Texture* t : {&s.minOpacity, &s.maxOpacity, &s.layerPasses, &s.accumPasses}) *t = {};
+            if (!rgb()) continue;
+            s.minOpacity = gl::createTexture2D(rgba, size.x, size.y);
+            s.maxOpacity = gl::createTexture2D(rgba, size.x, size.y);
+            s.layerPasses = gl::createTexture2D(rgba, size.x, size.y);
+            s.accumPasses = gl::createTexture2D(rgba, size.x, size.y);
         }
         bound_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
         const Side &f = side_[0], &b = side_[1];
         initFbo_ = framebuffer({f.state.id(), b.state.id()});
-        countFbo_ = framebuffer({f.count.id(), b.count.id(), f.minColor.id(), b.minColor.id()});
-        extractFbo_ = framebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id()});
-        resolveFbo_ = framebuffer({f.accum.id(), f.layer.id(), b.accum.id(), b.layer.id(), f.state.id(), b.state.id(),
-                                   bound_.id()});
+        // The RGB build's second texels follow the first ones, in the shaders' output locations.
+        if (!rgb()) {
+            countFbo_ = framebuffer({f.count.id(), b.count.id(), f.minColor.id(), b.minColor.id()});
+            extractFbo_ = framebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id()});
+            resolveFbo_[0] = framebuffer({f.accum.id(), f.layer.id(), b.accum.id(), b.layer.id(), f.state.id(),
+                                          b.state.id(), bound_.id()});
+            resolveFbo_[1] = {};
+            return;
+        }
+        countFbo_ = framebuffer(
+            {f.count.id(), b.count.id(), f.minColor.id(), b.minColor.id(), f.minOpacity.id(), b.minOpacity.id()});
+        extractFbo_ = framebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id(),
+                                   f.minOpacity.id(), f.maxOpacity.id(), b.minOpacity.id(), b.maxOpacity.id()});
+        resolveFbo_[0] =
+            framebuffer({f.accum.id(), f.layer.id(), f.state.id(), f.accumPasses.id(), f.layerPasses.id()});
+        resolveFbo_[1] = framebuffer(
+            {b.accum.id(), b.layer.id(), b.state.id(), b.accumPasses.id(), b.layerPasses.id(), bound_.id()});
     }
 
     void bindTextures() {
@@ -140,6 +183,11 @@ private:
             glBindTextureUnit(gpu::BIND_COPLANAR_MAX_COLOR + offset, s.maxColor.id());
             glBindTextureUnit(gpu::BIND_COPLANAR_LAYER + offset, s.layer.id());
             glBindTextureUnit(gpu::BIND_COPLANAR_ACCUM + offset, s.accum.id());
+            if (!rgb()) continue;
+            glBindTextureUnit(gpu::BIND_COPLANAR_MIN_OPACITY + offset, s.minOpacity.id());
+            glBindTextureUnit(gpu::BIND_COPLANAR_MAX_OPACITY + offset, s.maxOpacity.id());
+            glBindTextureUnit(gpu::BIND_COPLANAR_LAYER_PASSES + offset, s.layerPasses.id());
+            glBindTextureUnit(gpu::BIND_COPLANAR_ACCUM_PASSES + offset, s.accumPasses.id());
         }
     }
 
@@ -152,7 +200,7 @@ private:
         glBlendEquationi(1, GL_MIN);
         glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        skipper_.draw(frame, initProgram_, stats_);
+        skipper_.draw(frame, programs_->init, stats_);
         glEndQuery(GL_SAMPLES_PASSED);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glBlendEquation(GL_FUNC_ADD);
@@ -167,6 +215,7 @@ private:
         for (Side& s : side_) {
             glClearTexImage(s.count.id(), 0, GL_RGBA, GL_FLOAT, countClear);
             glClearTexImage(s.minColor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+            if (rgb()) glClearTexImage(s.minOpacity.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, countFbo_.id());
         setTransparentDepthState(frame);
@@ -175,9 +224,8 @@ private:
         glBlendFunc(GL_ONE, GL_ONE);
         glBlendEquationSeparatei(0, GL_MAX, GL_FUNC_ADD);
         glBlendEquationSeparatei(1, GL_MAX, GL_FUNC_ADD);
-        glBlendEquationi(2, GL_FUNC_ADD);
-        glBlendEquationi(3, GL_FUNC_ADD);
-        skipper_.draw(frame, countProgram_, stats_);
+        for (GLuint sum = 2; sum < 6; ++sum) glBlendEquationi(sum, GL_FUNC_ADD);  // colour (and opacity) sums
+        skipper_.draw(frame, programs_->count, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ZERO);
         glDisable(GL_BLEND);
@@ -190,17 +238,18 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
         bindTextures();
-        const GLuint program = checkProgram_.id();
+        const GLuint program = programs_->check.id();
         Checked c;
         for (int side = 0; side < 2; ++side) {
             for (int minCount : {2, 1}) {
-                // Two or more: zero this side's two colour targets there. One or more: count only.
-                for (GLuint buffer = 0; buffer < 4; ++buffer) {
-                    const GLboolean write = minCount == 2 && int(buffer / 2) == side;
+                // Two or more: zero this side's two colour targets (and opacity targets) there.
+                // One or more: count only. Targets: front pair, back pair (, the same in opacity).
+                for (GLuint buffer = 0; buffer < (rgb() ? 8u : 4u); ++buffer) {
+                    const GLboolean write = minCount == 2 && int(buffer % 4 / 2) == side;
                     glColorMaski(buffer, write, write, write, write);
                 }
-                glProgramUniform1i(program, sideLocation_, side);
-                glProgramUniform1f(program, minCountLocation_, float(minCount));
+                glProgramUniform1i(program, programs_->side, side);
+                glProgramUniform1f(program, programs_->minCount, float(minCount));
                 glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
                 drawFullscreen(frame, program);
                 glEndQuery(GL_SAMPLES_PASSED);
@@ -219,7 +268,7 @@ private:
         bindTextures();
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
-        skipper_.draw(frame, extractProgram_, stats_);
+        skipper_.draw(frame, programs_->extract, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
@@ -227,12 +276,16 @@ private:
 
     void resolve(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, "dual-2p resolve");
-        glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
         bindTextures();
-        glTextureBarrier();  // it reads its own texel of six of its attachments
-        drawFullscreen(frame, resolveProgram_.id());
+        // Each draw reads its own texel of its attachments; the RGB build's back draw, the
+        // state its front draw wrote.
+        for (int draw = 0; draw < (rgb() ? 2 : 1); ++draw) {
+            glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_[draw].id());
+            glTextureBarrier();
+            drawFullscreen(frame, programs_->resolve[draw].id());
+        }
         ++stats_.passes;
     }
 
@@ -243,19 +296,27 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, side_[0].accum.id());
         glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, side_[1].accum.id());
-        drawFullscreen(frame, compositeProgram_.id());
+        if (rgb()) {
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, side_[0].accumPasses.id());
+            glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM_FILTER, side_[1].accumPasses.id());
+        }
+        drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }
 
+    struct Programs {
+        SceneProgram init, count, extract;
+        gl::Program check, resolve[2], composite;  // resolve[1]: the RGB build's back-side draw
+        GLint side = -1, minCount = -1;
+    };
     int allocatedPrecision_ = 0;
-    SceneProgram initProgram_, countProgram_, extractProgram_;
-    gl::Program checkProgram_, resolveProgram_, compositeProgram_;
-    GLint sideLocation_ = -1, minCountLocation_ = -1;
+    ColorModel model_ = ColorModel::Scalar;  // the targets'
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
     glm::ivec2 size_{0, 0};
     Side side_[2];
     gl::Texture bound_;
-    gl::Framebuffer initFbo_, countFbo_, extractFbo_, resolveFbo_;
+    gl::Framebuffer initFbo_, countFbo_, extractFbo_, resolveFbo_[2];
     CoplanarIds ids_;
     ObjectSkipper skipper_;
 };
@@ -270,10 +331,11 @@ TechniqueEntry dual2pEntry() {
                        "1 + iterations x (count, check, resolve; +1 extraction where a side holds C >= 2) + 1, "
                        "a layer from each end per iteration; no coplanarity: 3*ceil(D/2)+2; Table 1: C(Zall)/2+1",
                        "w*h*136 B at precision=16: per side state and count RGBA32F (16 each) + min, max, layer "
-                       "and accumulation RGBA16F (8 each), skip bound RG32F (8); w*h*200 B at 32; Table 1: 24 "
-                       "words (20 modern)",
+                       "and accumulation RGBA16F (8 each), skip bound RG32F (8); w*h*200 B at 32; + four more "
+                       "RGBA targets per side in a scene with coloured filters; Table 1: 24 words (20 modern)",
                        "coplanarity-aware dual peeling: Algorithm 1 from both ends, up to four fragments per "
                        "iteration in tie order"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::CoplanarDual>(info);
 }
 

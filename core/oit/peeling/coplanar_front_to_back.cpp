@@ -16,9 +16,14 @@
 // and end with peel_composite. The loop stops once every fragment is captured (the captured
 // count comes from occlusion queries, no atomics), when an iteration captures nothing, or at
 // max_passes (an overflow).
+//
+// In a scene with coloured filters (oit/color_model.hpp) every colour target gains a second
+// one (coplanar_layer.glsl): each fragment's opacity and each partial's transmittance per
+// channel, written beside the first by the same passes.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/coplanar_ids.hpp"
 #include "oit/peeling/object_skipper.hpp"
@@ -35,8 +40,9 @@ public:
         : TechniqueWithSettings(std::move(info)), threePass_(threePass) {}
 
     void render(const FrameContext& frame) override {
-        ensurePrograms();
-        ensureTargets(frame.size);
+        const ColorModel model = colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, model);
         stats_ = {};
         if (!ids_.bind(frame)) stats_.overflowed = true;
         skipper_.beginFrame(frame, settings_.skipPeeled);
@@ -46,7 +52,12 @@ public:
         glClearTexImage(state_.id(), 0, GL_RGBA, GL_FLOAT, noLayer);
         glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, empty);
         glClearTexImage(layer_.id(), 0, GL_RGBA, GL_FLOAT, empty);
-        for (GLuint p : {countProgram_.id(), extractProgram_.id(), nextProgram_.id()})
+        if (rgb()) {
+            const float nothingAbsorbed[4] = {1, 1, 1, 1};
+            glClearTexImage(accumPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+            glClearTexImage(layerPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+        }
+        for (GLuint p : {programs_->count.id(), programs_->extract.id(), programs_->next.id()})
             if (p) setDepthOrderUniforms(frame, p);
 
         const std::uint64_t total = initialise(frame);
@@ -75,35 +86,45 @@ public:
         stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // State and count RGBA32F (16 B each), min and max colour, layer far part and
-        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each); f2b-3p's next-anchor depth (4 B).
-        stats_.bytes = pixels * (2 * 16 + 4 * floatTexelBytes(settings_.precision, 4) + (threePass_ ? 4 : 0));
+        // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), as many again with coloured
+        // filters; f2b-3p's next-anchor depth (4 B).
+        stats_.bytes = pixels * (2 * 16 + (rgb() ? 8 : 4) * floatTexelBytes(settings_.precision, 4) +
+                                 (threePass_ ? 4 : 0));
     }
 
 private:
-    void ensurePrograms() {
-        if (initProgram_.program) return;
-        initProgram_ = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
+    bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programs_.use(model);
+        if (p.init.program) return;
+        auto fullscreen = [model](const char* fragment, gl::Defines defines = {}) {
+            return gl::buildProgram({"common/fullscreen.vert.glsl", fragment}, withColorModel(std::move(defines), model));
+        };
+        auto scene = [model](const char* fragment, gl::Defines defines = {}) {
+            return buildSceneProgram(fragment, withColorModel(std::move(defines), model));
+        };
+        p.init = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
         if (threePass_) {
-            nextProgram_ = buildSceneProgram("oit/peeling/coplanar_next.frag.glsl");
-            countProgram_ = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl");
-            extractProgram_ = buildSceneProgram("oit/peeling/coplanar_extract.frag.glsl");
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_resolve.frag.glsl"},
-                                               {{"NEXT_FROM_DEPTH", ""}});
+            p.next = buildSceneProgram("oit/peeling/coplanar_next.frag.glsl");
+            p.count = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl");
+            p.extract = scene("oit/peeling/coplanar_extract.frag.glsl");
+            p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"NEXT_FROM_DEPTH", ""}});
         } else {
-            countProgram_ = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl",
-                                              {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
-            extractProgram_ = buildSceneProgram("oit/peeling/coplanar_extract.frag.glsl", {{"COPLANAR_ONLY", ""}});
-            checkProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_check.frag.glsl"});
-            resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_resolve.frag.glsl"});
+            p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
+            p.extract = scene("oit/peeling/coplanar_extract.frag.glsl", {{"COPLANAR_ONLY", ""}});
+            p.check = fullscreen("oit/peeling/coplanar_check.frag.glsl");
+            p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl");
         }
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"});
-        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+        p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl");
+        if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
-    void ensureTargets(glm::ivec2 size) {
-        if (size == size_ && settings_.precision == allocatedPrecision_) return;
+    void ensureTargets(glm::ivec2 size, ColorModel model) {
+        if (size == size_ && settings_.precision == allocatedPrecision_ && model == model_) return;
         size_ = size;
         allocatedPrecision_ = settings_.precision;
+        model_ = model;
         const GLenum rgba = rgbaFloatFormat(settings_.precision);
         state_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
         count_ = gl::createTexture2D(GL_RGBA32F, size.x, size.y);
@@ -111,10 +132,24 @@ private:
         maxColor_ = gl::createTexture2D(rgba, size.x, size.y);
         layer_ = gl::createTexture2D(rgba, size.x, size.y);
         accum_ = gl::createTexture2D(rgba, size.x, size.y);
+        for (gl::Texture* t : {&minOpacity_, &maxOpacity_, &layerPasses_, &accumPasses_}) *t = {};
+        if (rgb()) {
+            minOpacity_ = gl::createTexture2D(rgba, size.x, size.y);
+            maxOpacity_ = gl::createTexture2D(rgba, size.x, size.y);
+            layerPasses_ = gl::createTexture2D(rgba, size.x, size.y);
+            accumPasses_ = gl::createTexture2D(rgba, size.x, size.y);
+        }
+        // The RGB build's second texels follow the first ones' attachments, in the shaders'
+        // output locations.
+        auto withRgb = [this](std::vector<GLuint> colors, std::initializer_list<GLuint> rgbColors) {
+            if (rgb()) colors.insert(colors.end(), rgbColors);
+            return framebuffer(colors);
+        };
         initFbo_ = framebuffer({state_.id()});
-        countFbo_ = framebuffer(threePass_ ? std::vector<GLuint>{count_.id()} : std::vector<GLuint>{count_.id(), minColor_.id()});
-        extractFbo_ = framebuffer({minColor_.id(), maxColor_.id()});
-        resolveFbo_ = framebuffer({accum_.id(), layer_.id(), state_.id()});
+        countFbo_ = threePass_ ? framebuffer({count_.id()})
+                               : withRgb({count_.id(), minColor_.id()}, {minOpacity_.id()});
+        extractFbo_ = withRgb({minColor_.id(), maxColor_.id()}, {minOpacity_.id(), maxOpacity_.id()});
+        resolveFbo_ = withRgb({accum_.id(), layer_.id(), state_.id()}, {accumPasses_.id(), layerPasses_.id()});
         if (threePass_) {
             nextDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
             nextFbo_ = gl::Framebuffer::create();
@@ -150,6 +185,19 @@ private:
         glBindTextureUnit(gpu::BIND_COPLANAR_LAYER, layer_.id());
         glBindTextureUnit(gpu::BIND_COPLANAR_ACCUM, accum_.id());
         if (threePass_) glBindTextureUnit(gpu::BIND_COPLANAR_NEXT_DEPTH, nextDepth_.id());
+        if (!rgb()) return;
+        glBindTextureUnit(gpu::BIND_COPLANAR_MIN_OPACITY, minOpacity_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_MAX_OPACITY, maxOpacity_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_LAYER_PASSES, layerPasses_.id());
+        glBindTextureUnit(gpu::BIND_COPLANAR_ACCUM_PASSES, accumPasses_.id());
+    }
+
+    // Zeroes the id-min fragment's texels (and the id-max one's): "none" for ADD and MAX.
+    void clearFragments(bool max) {
+        for (const gl::Texture* t : {&minColor_, &minOpacity_, &maxColor_, &maxOpacity_}) {
+            const bool isMax = t == &maxColor_ || t == &maxOpacity_;
+            if (*t && isMax == max) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        }
     }
 
     // MAX of the depth into the state's r (the other channels masked): the first anchors.
@@ -161,7 +209,7 @@ private:
         glBlendEquation(GL_MAX);
         glColorMask(GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        skipper_.draw(frame, initProgram_, stats_);
+        skipper_.draw(frame, programs_->init, stats_);
         glEndQuery(GL_SAMPLES_PASSED);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glBlendEquation(GL_FUNC_ADD);
@@ -181,7 +229,7 @@ private:
         glDepthMask(GL_TRUE);
         bindTextures(frame);
         glBindTextureUnit(gpu::BIND_COPLANAR_NEXT_DEPTH, 0);  // the attachment is not also sampled
-        skipper_.draw(frame, nextProgram_, stats_);
+        skipper_.draw(frame, programs_->next, stats_);
         glDepthMask(GL_FALSE);
         ++stats_.passes;
     }
@@ -190,7 +238,7 @@ private:
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p count" : "f2b-2p count");
         const float countClear[4] = {kNoId, kNoId, kNoId, 0.0f};
         glClearTexImage(count_.id(), 0, GL_RGBA, GL_FLOAT, countClear);
-        if (!threePass_) glClearTexImage(minColor_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        if (!threePass_) clearFragments(false);
         glBindFramebuffer(GL_FRAMEBUFFER, countFbo_.id());
         setTransparentDepthState(frame);
         bindTextures(frame);
@@ -198,7 +246,8 @@ private:
         glBlendFunc(GL_ONE, GL_ONE);
         glBlendEquationSeparatei(0, GL_MAX, GL_FUNC_ADD);  // ids and anchor: MAX; count: ADD
         glBlendEquationi(1, GL_FUNC_ADD);                  // f2b-2p: colour sum
-        skipper_.draw(frame, countProgram_, stats_);
+        glBlendEquationi(2, GL_FUNC_ADD);                  // and opacity sum (rgb)
+        skipper_.draw(frame, programs_->count, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ZERO);
         glDisable(GL_BLEND);
@@ -212,7 +261,7 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         bindTextures(frame);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        drawFullscreen(frame, checkProgram_.id());
+        drawFullscreen(frame, programs_->check.id());
         glEndQuery(GL_SAMPLES_PASSED);
         ++stats_.passes;
         return gl::queryResult(samples_);
@@ -222,15 +271,15 @@ private:
     // tests; f2b-2p's count comes from the check and resolve instead).
     std::uint64_t extract(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p shade" : "f2b-2p extract");
-        if (threePass_) glClearTexImage(minColor_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-        glClearTexImage(maxColor_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        if (threePass_) clearFragments(false);
+        clearFragments(true);
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
         setTransparentDepthState(frame);
         bindTextures(frame);
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
         if (threePass_) glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        skipper_.draw(frame, extractProgram_, stats_);
+        skipper_.draw(frame, programs_->extract, stats_);
         if (threePass_) glEndQuery(GL_SAMPLES_PASSED);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
@@ -245,9 +294,9 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
         bindTextures(frame);
-        glTextureBarrier();  // it reads its own texel of three of its attachments
+        glTextureBarrier();  // it reads its own texel of three (rgb: five) of its attachments
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        drawFullscreen(frame, resolveProgram_.id());
+        drawFullscreen(frame, programs_->resolve.id());
         glEndQuery(GL_SAMPLES_PASSED);
         ++stats_.passes;
         return gl::queryResult(samples_);
@@ -259,17 +308,23 @@ private:
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
-        drawFullscreen(frame, compositeProgram_.id());
+        if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumPasses_.id());
+        drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }
 
+    struct Programs {
+        SceneProgram init, next, count, extract;
+        gl::Program check, resolve, composite;
+    };
     bool threePass_;
     int allocatedPrecision_ = 0;
-    SceneProgram initProgram_, nextProgram_, countProgram_, extractProgram_;
-    gl::Program checkProgram_, resolveProgram_, compositeProgram_;
+    ColorModel model_ = ColorModel::Scalar;  // the targets'
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
     glm::ivec2 size_{0, 0};
     gl::Texture state_, count_, minColor_, maxColor_, layer_, accum_, nextDepth_;
+    gl::Texture minOpacity_, maxOpacity_, layerPasses_, accumPasses_;  // the RGB build's second texels
     gl::Framebuffer initFbo_, countFbo_, extractFbo_, resolveFbo_, nextFbo_;
     CoplanarIds ids_;
     ObjectSkipper skipper_;
@@ -285,9 +340,11 @@ TechniqueEntry f2b2pEntry() {
                        "1 + sum over layers of 3*ceil(C/2) (+1 extraction per iteration with C >= 2 left) + 1; "
                        "no coplanarity: 3D+2 (init + D x (count, check, resolve) + composite); Table 1: 2C(Zall)",
                        "w*h*64 B at precision=16: state and count RGBA32F (16 each) + min, max, layer and "
-                       "accumulation RGBA16F (8 each); w*h*96 B at 32; Table 1: 12 words (10 modern)",
+                       "accumulation RGBA16F (8 each); w*h*96 B at 32; + four more RGBA targets in a scene with "
+                       "coloured filters; Table 1: 12 words (10 modern)",
                        "coplanarity-aware f2b (Algorithm 1): per layer id-min/id-max/count by MAX/ADD blending, "
                        "two coplanar fragments extracted per iteration in tie order"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::CoplanarFrontToBack>(info, false);
 }
 
@@ -295,9 +352,11 @@ TechniqueEntry f2b3pEntry() {
     TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
                        "2 + sum over layers of 4*ceil(C/2) (depth, tie-test count, shading, resolve per "
                        "iteration); no coplanarity: 4D+2; Table 1: 3C(Zall)/2",
-                       "w*h*68 B at precision=16: as f2b-2p + next-anchor depth (4); w*h*100 B at 32",
+                       "w*h*68 B at precision=16: as f2b-2p + next-anchor depth (4); w*h*100 B at 32; + four "
+                       "more RGBA targets in a scene with coloured filters",
                        "coplanarity-aware f2b with a depth pass, a tie-test counting pass and a shading pass "
                        "per iteration"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::CoplanarFrontToBack>(info, true);
 }
 

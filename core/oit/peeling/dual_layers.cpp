@@ -8,15 +8,22 @@
 // the rest; a full-screen resolve composites each layer in object order, the front under the
 // front accumulation and the back over the back accumulation. The loop ends on the iteration
 // whose layers hold the last of the fragments counted by the initialisation.
+//
+// In a scene with coloured filters (oit/color_model.hpp) the storage keeps a glass fragment's
+// coloured filter (oit/packed_color.glsl) and each accumulation gains a second target, what it
+// lets through per channel, which the resolve reads and writes at its own texel.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/layer_settings.hpp"
 #include "oit/peeling/layer_storage.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
 #include "oit/precision.hpp"
+
+#include <vector>
 
 namespace strata::peeling {
 namespace {
@@ -26,18 +33,24 @@ public:
     DualLayers(const std::string& id, LayerStore kind) : id_(id), storage_(kind, id) {}
 
     void render(const FrameContext& frame, const LayerPeelingSettings& s, TechniqueStats& stats) {
-        ensurePrograms();
-        ensureTargets(frame.size, s.precision);
+        const ColorModel model = colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, s.precision, model);
         stats = {};
         skipper_.beginFrame(frame, s.skipPeeled);
         storage_.prepare(frame.size, 2, s.capacity, s.maxBlockMiB);
-        setDepthOrderUniforms(frame, peelProgram_.id());
+        setDepthOrderUniforms(frame, programs_->peel.id());
         const std::uint64_t total = initialise(frame, stats);
         std::uint64_t remaining = total, overflow = 0;
         if (total > 0) {
             const float clearAccum[4] = {0, 0, 0, 1};
             glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
             glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
+            if (rgb()) {
+                const float nothingAbsorbed[4] = {1, 1, 1, 1};
+                glClearTexImage(frontPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+                glClearTexImage(backPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+            }
             for (int iteration = 1;; ++iteration) {
                 if (iteration > s.maxPasses) {
                     stats.overflowed = true;
@@ -61,37 +74,52 @@ public:
         stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
         if (overflow > 0) stats.overflowed = true;
         // Two RG32F min-max targets (8 B each), front and back accumulations (RGBA16F, 8 B, or
-        // RGBA32F, 16 B, each) and the layer storage of both sides.
+        // RGBA32F, 16 B, each; twice with coloured filters) and the layer storage of both sides.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
-        stats.bytes = pixels * (2 * 8 + 2 * floatTexelBytes(s.precision, 4)) + storage_.bytes();
+        stats.bytes = pixels * (2 * 8 + (rgb() ? 4 : 2) * floatTexelBytes(s.precision, 4)) + storage_.bytes();
     }
 
 private:
-    void ensurePrograms() {
-        if (initProgram_.program) return;
-        initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
-        peelProgram_ = buildSceneProgram("oit/peeling/dual_layer_peel.frag.glsl", storage_.defines());
-        gl::Defines dual = storage_.defines();
+    bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programs_.use(model);
+        if (p.init.program) return;
+        p.init = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
+        p.peel = buildSceneProgram("oit/peeling/dual_layer_peel.frag.glsl", withColorModel(storage_.defines(), model));
+        gl::Defines dual = withColorModel(storage_.defines(), model);
         dual["DUAL"] = "";
-        resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, dual);
-        compositeProgram_ =
-            gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"}, {{"DUAL", ""}});
-        samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+        p.resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, dual);
+        p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
+                                       withColorModel({{"DUAL", ""}}, model));
+        if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
-    void ensureTargets(glm::ivec2 size, int precision) {
-        if (size == size_ && precision == precision_) return;
+    void ensureTargets(glm::ivec2 size, int precision, ColorModel model) {
+        if (size == size_ && precision == precision_ && model == model_) return;
         size_ = size;
         precision_ = precision;
+        model_ = model;
         const GLenum rgba = rgbaFloatFormat(precision);
         for (auto& t : minMax_) t = gl::createTexture2D(GL_RG32F, size.x, size.y);
         frontAccum_ = gl::createTexture2D(rgba, size.x, size.y);
         backAccum_ = gl::createTexture2D(rgba, size.x, size.y);
+        std::vector<GLuint> targets = {frontAccum_.id(), backAccum_.id()};
+        frontPasses_ = {};
+        backPasses_ = {};
+        if (rgb()) {
+            // layer_resolve.frag.glsl's outputs: front, its passes, back, its passes.
+            frontPasses_ = gl::createTexture2D(rgba, size.x, size.y);
+            backPasses_ = gl::createTexture2D(rgba, size.x, size.y);
+            targets = {frontAccum_.id(), frontPasses_.id(), backAccum_.id(), backPasses_.id()};
+        }
         resolveFbo_ = gl::Framebuffer::create();
-        glNamedFramebufferTexture(resolveFbo_.id(), GL_COLOR_ATTACHMENT0, frontAccum_.id(), 0);
-        glNamedFramebufferTexture(resolveFbo_.id(), GL_COLOR_ATTACHMENT1, backAccum_.id(), 0);
-        const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glNamedFramebufferDrawBuffers(resolveFbo_.id(), 2, two);
+        std::vector<GLenum> buffers;
+        for (std::size_t i = 0; i < targets.size(); ++i) {
+            glNamedFramebufferTexture(resolveFbo_.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), targets[i], 0);
+            buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+        }
+        glNamedFramebufferDrawBuffers(resolveFbo_.id(), GLsizei(buffers.size()), buffers.data());
     }
 
     // minMax_[target] (cleared to the empty range) with the frame's opaque depth, MAX blending.
@@ -112,7 +140,7 @@ private:
         gl::ScopedPass pass(frame.timer, id_ + " init");
         bindRangeTarget(frame, 0);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        skipper_.draw(frame, initProgram_, stats);
+        skipper_.draw(frame, programs_->init, stats);
         glEndQuery(GL_SAMPLES_PASSED);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
@@ -129,8 +157,8 @@ private:
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
             bindRangeTarget(frame, cur);
             glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
-            storage_.beginPass(peelProgram_.id());
-            skipper_.draw(frame, peelProgram_, stats);
+            storage_.beginPass(programs_->peel.id());
+            skipper_.draw(frame, programs_->peel, stats);
             glBlendEquation(GL_FUNC_ADD);
             glDisable(GL_BLEND);
             ++stats.passes;
@@ -144,12 +172,18 @@ private:
         gl::ScopedPass pass(frame.timer, id_ + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);            // under
-        glBlendFuncSeparatei(1, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
-        storage_.bindForResolve(resolveProgram_.id());
-        drawFullscreen(frame, resolveProgram_.id());
+        if (rgb()) {
+            // The resolve reads and writes its own texel of all four targets (layer_resolve.frag.glsl).
+            bindAccumulations();
+            glTextureBarrier();
+        } else {
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);            // under
+            glBlendFuncSeparatei(1, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
+        }
+        storage_.bindForResolve(programs_->resolve.id());
+        drawFullscreen(frame, programs_->resolve.id());
         glDisable(GL_BLEND);
         ++stats.passes;
     }
@@ -160,20 +194,32 @@ private:
         glDisable(GL_BLEND);
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
-        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, frontAccum_.id());
-        glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
-        drawFullscreen(frame, compositeProgram_.id());
+        bindAccumulations();
+        drawFullscreen(frame, programs_->composite.id());
         ++stats.passes;
     }
 
+    void bindAccumulations() const {
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM, frontAccum_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
+        if (!rgb()) return;
+        glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, frontPasses_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM_FILTER, backPasses_.id());
+    }
+
+    struct Programs {
+        SceneProgram init, peel;
+        gl::Program resolve, composite;
+    };
     std::string id_;
     LayerStorage storage_;
-    SceneProgram initProgram_, peelProgram_;
-    gl::Program resolveProgram_, compositeProgram_;
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
     glm::ivec2 size_{0, 0};
     int precision_ = 0;
+    ColorModel model_ = ColorModel::Scalar;  // the targets'
     gl::Texture minMax_[2], frontAccum_, backAccum_;
+    gl::Texture frontPasses_, backPasses_;  // the RGB build's: what each accumulation lets through
     gl::Framebuffer peelFbo_, resolveFbo_;
     ObjectSkipper skipper_;
 };
@@ -189,9 +235,10 @@ TechniqueEntry dualLlEntry() {
                        "regrow); Table 1: D",
                        "w*h*48 B at precision=32 (2 RG32F min-max + 2 RGBA32F accumulations) + w*h*8 heads + 24 B "
                        "per fragment of the largest front+back layer pair (pool grown to it); Table 1: "
-                       "2C(Zf,Zb)+6 words",
+                       "2C(Zf,Zb)+6 words; + two RGBA targets in a scene with coloured filters",
                        "DUAL-LL: dual peeling whose front and back layers link every fragment within the tie "
                        "tolerance into per-pixel lists (front nodes from the pool's start, back from its end)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerListSettings, peeling::DualLayers>>(
         info, peeling::LayerStore::List);
 }
@@ -200,9 +247,10 @@ TechniqueEntry dualFabEntry() {
     TechniqueInfo info{"dual-fab", "coplanarity", false, true,
                        "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many resolves + composite); Table 1: D",
                        "w*h*(48 + 2*(20K + 4)) B at precision=32 (2 RG32F min-max + 2 RGBA32F accumulations, "
-                       "K entries + counter per side); Table 1: K+6 words",
+                       "K entries + counter per side; + two RGBA targets with coloured filters); Table 1: K+6 words",
                        "DUAL-FAB (DUAL-B): dual peeling keeping up to K coincident fragments per pixel of the front "
                        "and of the back layer in fixed arrays; the rest counted as overflow"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerBufferSettings, peeling::DualLayers>>(
         info, peeling::LayerStore::Fab);
 }

@@ -19,9 +19,14 @@
 //   stores nothing, so a layer costs f2b's peel and blend plus two cheap passes.
 // Then one composite over the opaque colour. Each capture counts the layer's fragments beside
 // its anchors (stored or not), so the loop ends on the layer that leaves nothing.
+//
+// In a scene with coloured filters (oit/color_model.hpp) the anchors and the storage keep a
+// glass fragment's coloured filter (oit/packed_color.glsl) and the accumulation gains a second
+// target, what it lets through per channel, which the resolve reads and writes at its own texel.
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/layer_settings.hpp"
 #include "oit/peeling/layer_bindings.h"
@@ -38,15 +43,21 @@ public:
     FrontToBackLayers(const std::string& id, LayerStore kind) : id_(id), storage_(kind, id) {}
 
     void render(const FrameContext& frame, const LayerPeelingSettings& s, TechniqueStats& stats) {
-        ensurePrograms();
-        ensureTargets(frame.size, s.precision);
+        const ColorModel model = colorModelFor(frame.scene);
+        ensurePrograms(model);
+        ensureTargets(frame.size, s.precision, model);
         stats = {};
         skipper_.beginFrame(frame, s.skipPeeled);
         // The anchor is one of the K a bounded layer keeps.
         storage_.prepare(frame.size, 1, s.capacity - 1, s.maxBlockMiB);
         const float clearAccum[4] = {0, 0, 0, 1};
         glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-        for (GLuint p : {anchorProgram_.id(), captureProgram_.id(), bandProgram_.id()}) setDepthOrderUniforms(frame, p);
+        if (rgb()) {
+            const float nothingAbsorbed[4] = {1, 1, 1, 1};
+            glClearTexImage(accumPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+        }
+        for (GLuint p : {programs_->anchor.id(), programs_->capture.id(), programs_->band.id()})
+            setDepthOrderUniforms(frame, p);
 
         std::uint64_t overflow = 0;
         const std::uint64_t total = firstDepthPass(frame, stats);
@@ -81,35 +92,48 @@ public:
         stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
         if (overflow > 0) stats.overflowed = true;
         // Four depth buffers (3 anchors, 1 band edge; 4 B each), two anchors (RGBA32UI, 16 B each), the accumulation
-        // (RGBA16F, 8 B, or RGBA32F, 16 B), the layer storage and the total counter.
+        // (RGBA16F, 8 B, or RGBA32F, 16 B; twice with coloured filters), the layer storage and the total counter.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
-        stats.bytes =
-            pixels * (4 * 4 + 2 * 16 + floatTexelBytes(s.precision, 4)) + storage_.bytes() + sizeof(GLuint);
+        stats.bytes = pixels * (4 * 4 + 2 * 16 + (rgb() ? 2 : 1) * floatTexelBytes(s.precision, 4)) +
+                      storage_.bytes() + sizeof(GLuint);
     }
 
 private:
-    void ensurePrograms() {
-        if (depthProgram_.program) return;
-        depthProgram_ = buildSceneProgram("oit/peeling/next_layer.frag.glsl");
-        captureProgram_ = buildSceneProgram("oit/peeling/layer_capture.frag.glsl", storage_.defines());
-        anchorProgram_ = buildSceneProgram("oit/peeling/layer_peel.frag.glsl");
-        bandProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_band.frag.glsl"});
-        gl::Defines anchored = storage_.defines();
+    bool rgb() const { return model_ == ColorModel::RgbTransmittance; }
+
+    void ensurePrograms(ColorModel model) {
+        Programs& p = programs_.use(model);
+        if (p.depth.program) return;
+        p.depth = buildSceneProgram("oit/peeling/next_layer.frag.glsl", withColorModel({}, model));
+        p.capture = buildSceneProgram("oit/peeling/layer_capture.frag.glsl", withColorModel(storage_.defines(), model));
+        p.anchor = buildSceneProgram("oit/peeling/layer_peel.frag.glsl", withColorModel({}, model));
+        p.band = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_band.frag.glsl"});
+        gl::Defines anchored = withColorModel(storage_.defines(), model);
         anchored["ANCHOR"] = "";
-        resolveProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
+        p.resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
+        p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
+                                       withColorModel({}, model));
+        if (total_) return;
         anchors_ = gl::createQuery(GL_SAMPLES_PASSED);
-        compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"});
         total_ = gl::Buffer::create();
         glNamedBufferStorage(total_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
     }
 
-    void ensureTargets(glm::ivec2 size, int precision) {
-        if (size == size_ && precision == precision_) return;
+    void ensureTargets(glm::ivec2 size, int precision, ColorModel model) {
+        if (size == size_ && precision == precision_ && model == model_) return;
         size_ = size;
         precision_ = precision;
+        model_ = model;
         accum_ = gl::createTexture2D(rgbaFloatFormat(precision), size.x, size.y);
         accumFbo_ = gl::Framebuffer::create();
         glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT0, accum_.id(), 0);
+        accumPasses_ = {};
+        if (rgb()) {
+            accumPasses_ = gl::createTexture2D(rgbaFloatFormat(precision), size.x, size.y);
+            glNamedFramebufferTexture(accumFbo_.id(), GL_COLOR_ATTACHMENT1, accumPasses_.id(), 0);
+            const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            glNamedFramebufferDrawBuffers(accumFbo_.id(), 2, both);
+        }
         for (auto& d : depth_) d = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
         for (auto& a : anchor_) a = gl::createTexture2D(GL_RGBA32UI, size.x, size.y);
         anchorFbo_ = gl::Framebuffer::create();
@@ -143,7 +167,7 @@ private:
         glNamedBufferSubData(total_.id(), 0, sizeof(GLuint), &zero);
         bindAnchorTarget(frame, 0, 0);
         glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, total_.id());
-        skipper_.draw(frame, depthProgram_, stats);
+        skipper_.draw(frame, programs_->depth, stats);
         glDepthMask(GL_FALSE);
         ++stats.passes;
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -157,7 +181,7 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
-        glUseProgram(bandProgram_.id());
+        glUseProgram(programs_->band.id());
         glBindVertexArray(frame.targets.emptyVertexArray());
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_ALWAYS);
@@ -171,7 +195,7 @@ private:
     // Stores the coincident fragments of the layer anchored in depth_[cur] and anchor_[set of
     // the layer]; repeated when the list pool had to grow.
     LayerCounts capture(const FrameContext& frame, int layer, int previous, int cur, TechniqueStats& stats) {
-        const GLuint program = captureProgram_.id();
+        const GLuint program = programs_->capture.id();
         glProgramUniform1i(program, glGetUniformLocation(program, "uFirstLayer"), layer == 0);
         for (;;) {
             gl::ScopedPass pass(frame.timer, id_ + " capture");
@@ -183,7 +207,7 @@ private:
             glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
             glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[layer % 2].id());
             storage_.beginPass(program);
-            skipper_.draw(frame, captureProgram_, stats);
+            skipper_.draw(frame, programs_->capture, stats);
             ++stats.passes;
             const LayerCounts c = storage_.endPass();
             if (!c.repeat) return c;
@@ -197,7 +221,7 @@ private:
         gl::ScopedPass pass(frame.timer, id_ + " anchor");
         bindAnchorTarget(frame, next, set);
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
-        skipper_.draw(frame, anchorProgram_, stats);
+        skipper_.draw(frame, programs_->anchor, stats);
         glDepthMask(GL_FALSE);
         ++stats.passes;
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -207,14 +231,22 @@ private:
     std::uint64_t resolve(const FrameContext& frame, int set, bool anyStored, TechniqueStats& stats) {
         gl::ScopedPass pass(frame.timer, id_ + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
-        glEnable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
-        glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // under
-        storage_.bindForResolve(resolveProgram_.id());
-        glProgramUniform1i(resolveProgram_.id(), glGetUniformLocation(resolveProgram_.id(), "uAnyStored"), anyStored);
+        const GLuint program = programs_->resolve.id();
+        if (rgb()) {
+            // The resolve reads and writes its own texel of both targets (layer_resolve.frag.glsl).
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
+            glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumPasses_.id());
+            glTextureBarrier();
+        } else {
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // under
+        }
+        storage_.bindForResolve(program);
+        glProgramUniform1i(program, glGetUniformLocation(program, "uAnyStored"), anyStored);
         glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[set].id());
         glBeginQuery(GL_SAMPLES_PASSED, anchors_.id());
-        drawFullscreen(frame, resolveProgram_.id());
+        drawFullscreen(frame, program);
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
         ++stats.passes;
@@ -229,19 +261,25 @@ private:
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
-        drawFullscreen(frame, compositeProgram_.id());
+        if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumPasses_.id());
+        drawFullscreen(frame, programs_->composite.id());
         ++stats.passes;
     }
 
+    struct Programs {
+        SceneProgram depth, capture, anchor;
+        gl::Program band, resolve, composite;
+    };
     std::string id_;
     LayerStorage storage_;
-    SceneProgram depthProgram_, captureProgram_, anchorProgram_;
-    gl::Program bandProgram_, resolveProgram_, compositeProgram_;
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Buffer total_;
     gl::Query anchors_;
     glm::ivec2 size_{0, 0};
     int precision_ = 0;
+    ColorModel model_ = ColorModel::Scalar;  // the targets'
     gl::Texture accum_, depth_[3], anchor_[2], bandDepth_;
+    gl::Texture accumPasses_;  // the RGB build's: what the accumulation lets through per channel
     gl::Framebuffer accumFbo_, anchorFbo_, bandFbo_;
     ObjectSkipper skipper_;
 };
@@ -257,10 +295,11 @@ TechniqueEntry f2bLlEntry() {
                        "capture per pool regrow); Table 1: 2 per iteration, 2D",
                        "w*h*64 B at precision=32 (4 depth 4 B, 2 anchors RGBA32UI (packed colour, ids), RGBA32F "
                        "accumulation) + w*h*4 heads + 24 B per coincident fragment beside the anchors of the largest "
-                       "layer (pool grown to it); Table 1: 2C(Z)+4 words",
+                       "layer (pool grown to it); + one RGBA target in a scene with coloured filters; Table 1: 2C(Z)+4 words",
                        "F2B-LL (Algorithm 2): f2b's peel under the tie rule anchors each layer; a capture pass, "
                        "depth-tested early against the layer's band, links its coincident fragments into per-pixel "
                        "lists, resolved with the anchor in object order"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerListSettings, peeling::FrontToBackLayers>>(
         info, peeling::LayerStore::List);
 }
@@ -269,10 +308,12 @@ TechniqueEntry f2bFabEntry() {
     TechniqueInfo info{"f2b-fab", "coplanarity", false, true,
                        "4D+1 (depth + D band edges + D captures + D resolves + D-1 anchor passes + composite); Table 1: "
                        "2 per iteration, 2D",
-                       "w*h*(64 + 20(K-1) + 4) B at precision=32 (4 depth, 2 anchors, + RGBA32F accumulation, K-1 entries + counter beside the anchor); "
+                       "w*h*(64 + 20(K-1) + 4) B at precision=32 (4 depth, 2 anchors, + RGBA32F accumulation, K-1 entries + counter beside the anchor; "
+                       "+ one RGBA target with coloured filters); "
                        "Table 1: K+4 words",
                        "F2B-FAB (Algorithm 3): per layer, up to K coincident fragments per pixel in a fixed array "
                        "with a per-pixel counter; R_h = sum min(K, C(Z_i)) / total, the rest counted as overflow"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerBufferSettings, peeling::FrontToBackLayers>>(
         info, peeling::LayerStore::Fab);
 }
@@ -281,10 +322,12 @@ TechniqueEntry f2bKbEntry() {
     TechniqueInfo info{"f2b-kb", "coplanarity", false, true,
                        "4D+1 (depth + D band edges + D captures + D resolves + D-1 anchor passes + composite); Table 1: "
                        "2 per iteration, 2D",
-                       "w*h*(64 + 20(K-1)) B at precision=32 (4 depth, 2 anchors, + RGBA32F accumulation, K-1 slots beside the anchor); Table 1: K+3 "
+                       "w*h*(64 + 20(K-1)) B at precision=32 (4 depth, 2 anchors, + RGBA32F accumulation, K-1 slots beside the anchor; + one "
+                       "RGBA target with coloured filters); Table 1: K+3 "
                        "words",
                        "F2B-KB (Algorithm 3): per layer, up to K coincident fragments per pixel in k-buffer slots "
                        "claimed in order by compare-and-swap (no counter); the rest counted as overflow"};
+    info.rgbTransmittance = true;
     return techniqueEntry<peeling::LayerPeelingTechnique<peeling::LayerBufferSettings, peeling::FrontToBackLayers>>(
         info, peeling::LayerStore::KBuffer);
 }

@@ -5,17 +5,29 @@
 // largest id (MAX) and how many (ADD, alpha).
 // NEXT_ANCHOR (f2b-2p): fragments beyond the layer put their depth in b (MAX: the nearest one),
 //   the anchor of the next layer, so f2b-2p needs no depth pass.
-// SUM_COLOR (f2b-2p): the layer's fragments add their colour into target 1. Where the count is
-//   1, that sum is the fragment: the pixel needs no extraction pass (no coplanarity, no cost).
+// SUM_COLOR (f2b-2p): the layer's fragments add their colour into target 1 (with
+//   STRATA_RGB_TRANSMITTANCE their opacity into target 2, coplanar_fragment.glsl). Where the
+//   count is 1, that sum is the fragment: the pixel needs no extraction pass (no coplanarity,
+//   no cost).
 #include "surface.glsl"
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"
+#include "coplanar_fragment.glsl"
 
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(location = 0) out vec4 outCount;
 #ifdef SUM_COLOR
 layout(location = 1) out vec4 outColor;
+#ifdef STRATA_RGB_TRANSMITTANCE
+layout(location = 2) out vec4 outOpacity;
+#endif
+void sumFragment(FragmentTexels f) {
+    outColor = f.color;
+#ifdef STRATA_RGB_TRANSMITTANCE
+    outOpacity = f.opacity;
+#endif
+}
 #endif
 
 void main() {
@@ -26,7 +38,7 @@ void main() {
 #ifdef NEXT_ANCHOR
         outCount = vec4(kNoId, kNoId, z, 0.0);
 #ifdef SUM_COLOR
-        outColor = vec4(0.0);
+        sumFragment(kNoFragment);
 #endif
         return;
 #else
@@ -37,6 +49,6 @@ void main() {
     if (!(id > state.g && id < state.b)) discard;  // extracted by an earlier pass of this layer
     outCount = vec4(-id, id, kNoId, 1.0);
 #ifdef SUM_COLOR
-    outColor = surfaceColor();
+    sumFragment(fragmentTexels());
 #endif
 }

@@ -1,9 +1,11 @@
 #version 450 core
 // dual-2p extraction: where a side's layer holds two or more, its id-min and id-max fragments'
-// colours (MAX blending over targets the check zeroed; one fragment per pixel writes each).
+// colours (MAX blending over targets the check zeroed; one fragment per pixel writes each),
+// with STRATA_RGB_TRANSMITTANCE their opacities too (coplanar_fragment.glsl).
 #include "surface.glsl"
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"
+#include "coplanar_fragment.glsl"
 
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uFrontState;
@@ -14,6 +16,12 @@ layout(location = 0) out vec4 outFrontMin;
 layout(location = 1) out vec4 outFrontMax;
 layout(location = 2) out vec4 outBackMin;
 layout(location = 3) out vec4 outBackMax;
+#ifdef STRATA_RGB_TRANSMITTANCE
+layout(location = 4) out vec4 outFrontMinOpacity;
+layout(location = 5) out vec4 outFrontMaxOpacity;
+layout(location = 6) out vec4 outBackMinOpacity;
+layout(location = 7) out vec4 outBackMaxOpacity;
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -25,10 +33,17 @@ void main() {
     bool isMin = id == -count.r;
     bool isMax = id == count.g && !isMin;
     if (!isMin && !isMax) discard;
-    vec4 c = surfaceColor();
+    FragmentTexels f = fragmentTexels();
+    FragmentTexels none = kNoFragment;
     bool front = part == kFrontLayer;
-    outFrontMin = front && isMin ? c : vec4(0.0);
-    outFrontMax = front && isMax ? c : vec4(0.0);
-    outBackMin = !front && isMin ? c : vec4(0.0);
-    outBackMax = !front && isMax ? c : vec4(0.0);
+    outFrontMin = front && isMin ? f.color : none.color;
+    outFrontMax = front && isMax ? f.color : none.color;
+    outBackMin = !front && isMin ? f.color : none.color;
+    outBackMax = !front && isMax ? f.color : none.color;
+#ifdef STRATA_RGB_TRANSMITTANCE
+    outFrontMinOpacity = front && isMin ? f.opacity : none.opacity;
+    outFrontMaxOpacity = front && isMax ? f.opacity : none.opacity;
+    outBackMinOpacity = !front && isMin ? f.opacity : none.opacity;
+    outBackMaxOpacity = !front && isMax ? f.opacity : none.opacity;
+#endif
 }

@@ -7,7 +7,17 @@
 // for the object skipper (r: nearest left, g: minus farthest left; -1 and -2 when nothing is).
 // Own-texel reads of its attachments after glTextureBarrier; pixels with nothing counted on
 // either side are discarded.
+// One draw resolves both sides (seven targets). With STRATA_RGB_TRANSMITTANCE a partial takes
+// two texels (coplanar_layer.glsl), more targets than the eight draw buffers GL guarantees, so
+// the host draws the sides apart: RESOLVE_FRONT, then RESOLVE_BACK, which writes the bound from
+// the front state the first draw left.
 #include "coplanar_layer.glsl"
+
+#if !defined(RESOLVE_FRONT) && !defined(RESOLVE_BACK)
+#define RESOLVE_FRONT
+#define RESOLVE_BACK
+#define BOTH_SIDES
+#endif
 
 #define BACK(unit) ((unit) + BIND_COPLANAR_BACK_OFFSET)
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uFrontState;
@@ -22,6 +32,18 @@ layout(binding = BIND_COPLANAR_LAYER) uniform sampler2D uFrontLayer;
 layout(binding = BACK(BIND_COPLANAR_LAYER)) uniform sampler2D uBackLayer;
 layout(binding = BIND_COPLANAR_ACCUM) uniform sampler2D uFrontAccum;
 layout(binding = BACK(BIND_COPLANAR_ACCUM)) uniform sampler2D uBackAccum;
+#ifdef STRATA_RGB_TRANSMITTANCE
+layout(binding = BIND_COPLANAR_MIN_OPACITY) uniform sampler2D uFrontMinOpacity;
+layout(binding = BACK(BIND_COPLANAR_MIN_OPACITY)) uniform sampler2D uBackMinOpacity;
+layout(binding = BIND_COPLANAR_MAX_OPACITY) uniform sampler2D uFrontMaxOpacity;
+layout(binding = BACK(BIND_COPLANAR_MAX_OPACITY)) uniform sampler2D uBackMaxOpacity;
+layout(binding = BIND_COPLANAR_LAYER_PASSES) uniform sampler2D uFrontLayerPasses;
+layout(binding = BACK(BIND_COPLANAR_LAYER_PASSES)) uniform sampler2D uBackLayerPasses;
+layout(binding = BIND_COPLANAR_ACCUM_PASSES) uniform sampler2D uFrontAccumPasses;
+layout(binding = BACK(BIND_COPLANAR_ACCUM_PASSES)) uniform sampler2D uBackAccumPasses;
+#endif
+
+#ifdef BOTH_SIDES
 layout(location = 0) out vec4 outFrontAccum;
 layout(location = 1) out vec4 outFrontLayer;
 layout(location = 2) out vec4 outBackAccum;
@@ -29,49 +51,89 @@ layout(location = 3) out vec4 outBackLayer;
 layout(location = 4) out vec4 outFrontState;
 layout(location = 5) out vec4 outBackState;
 layout(location = 6) out vec2 outBound;
+#else
+layout(location = 0) out vec4 outAccum;
+layout(location = 1) out vec4 outLayer;
+layout(location = 2) out vec4 outState;
+layout(location = 3) out vec4 outAccumPasses;  // the split draws are the RGB build's
+layout(location = 4) out vec4 outLayerPasses;
+#ifdef RESOLVE_BACK
+layout(location = 5) out vec2 outBound;
+#endif
+#endif
+
+struct Side {
+    Partial accum;
+    Partial layer;  // the open layer's far (front side) or near (back side) part
+    vec4 state;
+};
+
+Side resolveFront(ivec2 pixel, vec4 count) {
+    Side s = Side(FETCH_PARTIAL(uFrontAccum, uFrontAccumPasses, pixel),
+                  FETCH_PARTIAL(uFrontLayer, uFrontLayerPasses, pixel), texelFetch(uFrontState, pixel, 0));
+    if (count.a > 0.5) s.accum = merged(s.accum, FETCH_FRAGMENT(uFrontMin, uFrontMinOpacity, pixel));
+    if (count.a > 1.5) s.layer = merged(FETCH_FRAGMENT(uFrontMax, uFrontMaxOpacity, pixel), s.layer);
+    if (count.a < 2.5) {
+        s.accum = merged(s.accum, s.layer);
+        s.layer = kEmptyPartial;
+        s.state = vec4(hasAnchor(count.b) ? count.b : kNoAnchor, 0.0, kAllIds, 0.0);
+    } else {
+        s.state = vec4(s.state.r, -count.r, count.g, 0.0);
+    }
+    return s;
+}
+
+Side resolveBack(ivec2 pixel, vec4 count) {
+    Side s = Side(FETCH_PARTIAL(uBackAccum, uBackAccumPasses, pixel),
+                  FETCH_PARTIAL(uBackLayer, uBackLayerPasses, pixel), texelFetch(uBackState, pixel, 0));
+    if (count.a > 1.5) {
+        s.accum = merged(FETCH_FRAGMENT(uBackMax, uBackMaxOpacity, pixel), s.accum);
+        s.layer = merged(s.layer, FETCH_FRAGMENT(uBackMin, uBackMinOpacity, pixel));
+    } else if (count.a > 0.5) {
+        // The only one: its colour sum.
+        s.accum = merged(FETCH_FRAGMENT(uBackMin, uBackMinOpacity, pixel), s.accum);
+    }
+    if (count.a < 2.5) {
+        s.accum = merged(s.layer, s.accum);
+        s.layer = kEmptyPartial;
+        s.state = vec4(hasAnchor(-count.b) ? -count.b : kNoAnchor, 0.0, kAllIds, 0.0);
+    } else {
+        s.state = vec4(s.state.r, -count.r, count.g, 0.0);
+    }
+    return s;
+}
+
+vec2 boundOfWhatIsLeft(vec4 frontState, vec4 backState) {
+    bool front = hasAnchor(frontState.r), back = hasAnchor(backState.r);
+    return vec2(front ? frontState.r : (back ? 1.0 : -1.0), back ? -backState.r : (front ? 0.0 : -2.0));
+}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 frontCount = texelFetch(uFrontCount, pixel, 0);
     vec4 backCount = texelFetch(uBackCount, pixel, 0);
     if (frontCount.a < 0.5 && backCount.a < 0.5) discard;
-    vec4 frontState = texelFetch(uFrontState, pixel, 0);
-    vec4 backState = texelFetch(uBackState, pixel, 0);
-
-    vec4 frontAccum = texelFetch(uFrontAccum, pixel, 0);
-    vec4 frontLayer = texelFetch(uFrontLayer, pixel, 0);
-    if (frontCount.a > 0.5) frontAccum = merged(frontAccum, asPartial(texelFetch(uFrontMin, pixel, 0)));
-    if (frontCount.a > 1.5) frontLayer = merged(asPartial(texelFetch(uFrontMax, pixel, 0)), frontLayer);
-    if (frontCount.a < 2.5) {
-        frontAccum = merged(frontAccum, frontLayer);
-        frontLayer = kEmptyPartial;
-        frontState = vec4(hasAnchor(frontCount.b) ? frontCount.b : kNoAnchor, 0.0, kAllIds, 0.0);
-    } else {
-        frontState = vec4(frontState.r, -frontCount.r, frontCount.g, 0.0);
-    }
-
-    vec4 backAccum = texelFetch(uBackAccum, pixel, 0);
-    vec4 backLayer = texelFetch(uBackLayer, pixel, 0);
-    if (backCount.a > 1.5) {
-        backAccum = merged(asPartial(texelFetch(uBackMax, pixel, 0)), backAccum);
-        backLayer = merged(backLayer, asPartial(texelFetch(uBackMin, pixel, 0)));
-    } else if (backCount.a > 0.5) {
-        backAccum = merged(asPartial(texelFetch(uBackMin, pixel, 0)), backAccum);  // the only one: its colour sum
-    }
-    if (backCount.a < 2.5) {
-        backAccum = merged(backLayer, backAccum);
-        backLayer = kEmptyPartial;
-        backState = vec4(hasAnchor(-backCount.b) ? -backCount.b : kNoAnchor, 0.0, kAllIds, 0.0);
-    } else {
-        backState = vec4(backState.r, -backCount.r, backCount.g, 0.0);
-    }
-
-    bool front = hasAnchor(frontState.r), back = hasAnchor(backState.r);
-    outBound = vec2(front ? frontState.r : (back ? 1.0 : -1.0), back ? -backState.r : (front ? 0.0 : -2.0));
-    outFrontAccum = frontAccum;
-    outFrontLayer = frontLayer;
-    outBackAccum = backAccum;
-    outBackLayer = backLayer;
-    outFrontState = frontState;
-    outBackState = backState;
+#ifdef BOTH_SIDES
+    Side front = resolveFront(pixel, frontCount);
+    Side back = resolveBack(pixel, backCount);
+    outBound = boundOfWhatIsLeft(front.state, back.state);
+    outFrontAccum = colorTexel(front.accum);
+    outFrontLayer = colorTexel(front.layer);
+    outBackAccum = colorTexel(back.accum);
+    outBackLayer = colorTexel(back.layer);
+    outFrontState = front.state;
+    outBackState = back.state;
+#else
+#ifdef RESOLVE_FRONT
+    Side side = resolveFront(pixel, frontCount);
+#else
+    Side side = resolveBack(pixel, backCount);
+    outBound = boundOfWhatIsLeft(texelFetch(uFrontState, pixel, 0), side.state);  // the front draw's
+#endif
+    outAccum = colorTexel(side.accum);
+    outLayer = colorTexel(side.layer);
+    outState = side.state;
+    outAccumPasses = passesTexel(side.accum);
+    outLayerPasses = passesTexel(side.layer);
+#endif
 }

@@ -1,6 +1,7 @@
 #version 450 core
 // f2b-2p / f2b-3p extraction (f2b-3p: its shading pass): the fragments of the layer whose ids
-// the counting pass found, the smallest into target 0 and the largest into target 1 (MAX
+// the counting pass found, the smallest into target 0 and the largest into target 1 (with
+// STRATA_RGB_TRANSMITTANCE their opacities into targets 2 and 3; coplanar_fragment.glsl) (MAX
 // blending over targets cleared to 0: at most one fragment per pixel writes each, since a
 // pixel has one fragment per (object, primitive)).
 // COPLANAR_ONLY (f2b-2p): only pixels with two or more; a single fragment came with its colour.
@@ -9,6 +10,7 @@
 #include "surface.glsl"
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"
+#include "coplanar_fragment.glsl"
 
 #ifdef COPLANAR_ONLY
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
@@ -17,6 +19,10 @@ layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;
 layout(location = 0) out vec4 outMin;
 layout(location = 1) out vec4 outMax;
+#ifdef STRATA_RGB_TRANSMITTANCE
+layout(location = 2) out vec4 outMinOpacity;
+layout(location = 3) out vec4 outMaxOpacity;
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -31,7 +37,12 @@ void main() {
     bool isMin = id == -count.r;
     bool isMax = id == count.g && !isMin;
     if (!isMin && !isMax) discard;
-    vec4 c = surfaceColor();
-    outMin = isMin ? c : vec4(0.0);
-    outMax = isMax ? c : vec4(0.0);
+    FragmentTexels f = fragmentTexels();
+    FragmentTexels none = kNoFragment;
+    outMin = isMin ? f.color : none.color;
+    outMax = isMax ? f.color : none.color;
+#ifdef STRATA_RGB_TRANSMITTANCE
+    outMinOpacity = isMin ? f.opacity : none.opacity;
+    outMaxOpacity = isMax ? f.opacity : none.opacity;
+#endif
 }

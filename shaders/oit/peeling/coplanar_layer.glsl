@@ -17,6 +17,7 @@
 #ifndef STRATA_COPLANAR_LAYER_GLSL
 #define STRATA_COPLANAR_LAYER_GLSL
 #include "oit/depth_layer.glsl"
+#include "oit/transmittance.glsl"
 #include "peel_bindings.h"
 
 const float kNoId = -3.402823466e38;  // -FLT_MAX: below every id and every negated id
@@ -42,8 +43,36 @@ int dualPart(float z, float front, float back) {
     return hasFront && hasBack ? kBetween : kPeeled;
 }
 
-// Compositing in (premultiplied colour, transmittance) pairs; a fragment is (colour, alpha).
-vec4 asPartial(vec4 fragment) { return vec4(fragment.a * fragment.rgb, 1.0 - fragment.a); }
-vec4 merged(vec4 front, vec4 behind) { return vec4(front.rgb + front.a * behind.rgb, front.a * behind.a); }
-const vec4 kEmptyPartial = vec4(0.0, 0.0, 0.0, 1.0);
+// Compositing in partials: a run of fragments as its premultiplied colour and what it lets
+// through, one value or, with STRATA_RGB_TRANSMITTANCE (a scene with coloured filters,
+// oit/color_model.hpp), one per channel. In the targets a partial is one texel (colour,
+// transmittance), or with STRATA_RGB_TRANSMITTANCE two: (colour, 1) and a "passes" texel
+// (transmittance, 1).
+struct Partial {
+    vec3 color;
+    Transmittance transmittance;
+};
+const Partial kEmptyPartial = Partial(vec3(0.0), Transmittance(1.0));
+Partial merged(Partial front, Partial behind) {
+    return Partial(front.color + front.transmittance * behind.color, front.transmittance * behind.transmittance);
+}
+
+// A fragment as the counting and extraction passes store it (coplanar_fragment.glsl), 0 for
+// none in every channel, so that ADD sums and MAX selects over targets cleared to 0: (colour,
+// alpha), or with STRATA_RGB_TRANSMITTANCE (premultiplied colour, 0) and an opacity texel
+// (1 - transmittance per channel, 0). FETCH_FRAGMENT reads one, FETCH_PARTIAL a partial; the
+// second sampler is only named in the RGB build.
+#ifdef STRATA_RGB_TRANSMITTANCE
+#define FETCH_FRAGMENT(colors, opacities, pixel) \
+    Partial(texelFetch(colors, pixel, 0).rgb, 1.0 - texelFetch(opacities, pixel, 0).rgb)
+#define FETCH_PARTIAL(colors, passes, pixel) Partial(texelFetch(colors, pixel, 0).rgb, texelFetch(passes, pixel, 0).rgb)
+vec4 colorTexel(Partial p) { return vec4(p.color, 1.0); }
+vec4 passesTexel(Partial p) { return vec4(p.transmittance, 1.0); }
+#else
+Partial fragmentPartial(vec4 fragment) { return Partial(fragment.a * fragment.rgb, 1.0 - fragment.a); }
+#define FETCH_FRAGMENT(colors, opacities, pixel) fragmentPartial(texelFetch(colors, pixel, 0))
+Partial partialOf(vec4 texel) { return Partial(texel.rgb, texel.a); }
+#define FETCH_PARTIAL(colors, passes, pixel) partialOf(texelFetch(colors, pixel, 0))
+vec4 colorTexel(Partial p) { return vec4(p.color, p.transmittance); }
+#endif
 #endif

@@ -4,8 +4,10 @@
 // part (it lies behind every id still open); when the layer is done (two or fewer were left)
 // the far part goes under the accumulation and the state moves to the next layer's anchor,
 // else the state keeps the anchor and narrows the id range to (min, max).
-// Reads and writes its own texel of the accumulation, the far part and the state (a feedback
-// loop GL allows for one read and one write per texel, after glTextureBarrier). Pixels with
+// Partials and fragments as coplanar_layer.glsl keeps them (two texels each with
+// STRATA_RGB_TRANSMITTANCE). Reads and writes its own texel of the accumulation, the far part
+// and the state (a feedback loop GL allows for one read and one write per texel, after
+// glTextureBarrier). Pixels with
 // nothing counted are discarded: GL_SAMPLES_PASSED counts the pixels that captured one or more.
 // NEXT_FROM_DEPTH (f2b-3p): the next anchor is the depth pass's, not the count target's b.
 #include "coplanar_layer.glsl"
@@ -22,15 +24,23 @@ layout(binding = BIND_COPLANAR_NEXT_DEPTH) uniform sampler2D uNextDepth;
 layout(location = 0) out vec4 outAccum;
 layout(location = 1) out vec4 outLayer;
 layout(location = 2) out vec4 outState;
+#ifdef STRATA_RGB_TRANSMITTANCE
+layout(binding = BIND_COPLANAR_MIN_OPACITY) uniform sampler2D uMinOpacity;
+layout(binding = BIND_COPLANAR_MAX_OPACITY) uniform sampler2D uMaxOpacity;
+layout(binding = BIND_COPLANAR_LAYER_PASSES) uniform sampler2D uLayerPasses;
+layout(binding = BIND_COPLANAR_ACCUM_PASSES) uniform sampler2D uAccumPasses;
+layout(location = 3) out vec4 outAccumPasses;
+layout(location = 4) out vec4 outLayerPasses;
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 count = texelFetch(uCount, pixel, 0);
     if (count.a < 0.5) discard;
     vec4 state = texelFetch(uState, pixel, 0);
-    vec4 accum = merged(texelFetch(uAccum, pixel, 0), asPartial(texelFetch(uMinColor, pixel, 0)));
-    vec4 layer = texelFetch(uLayer, pixel, 0);
-    if (count.a > 1.5) layer = merged(asPartial(texelFetch(uMaxColor, pixel, 0)), layer);
+    Partial accum = merged(FETCH_PARTIAL(uAccum, uAccumPasses, pixel), FETCH_FRAGMENT(uMinColor, uMinOpacity, pixel));
+    Partial layer = FETCH_PARTIAL(uLayer, uLayerPasses, pixel);
+    if (count.a > 1.5) layer = merged(FETCH_FRAGMENT(uMaxColor, uMaxOpacity, pixel), layer);
     if (count.a < 2.5) {
         accum = merged(accum, layer);
         layer = kEmptyPartial;
@@ -43,7 +53,11 @@ void main() {
     } else {
         state = vec4(state.r, -count.r, count.g, 0.0);
     }
-    outAccum = accum;
-    outLayer = layer;
+    outAccum = colorTexel(accum);
+    outLayer = colorTexel(layer);
     outState = state;
+#ifdef STRATA_RGB_TRANSMITTANCE
+    outAccumPasses = passesTexel(accum);
+    outLayerPasses = passesTexel(layer);
+#endif
 }

@@ -23,9 +23,9 @@ void main() {
     outMinMax = vec2(-2.0);
     if (z > nearest || z < farthest) return;
     if (inLayer(z, nearest))
-        storeLayerFragment(pixel, 0, surfaceColor());
+        storeLayerFragment(pixel, 0, storedSurfaceColor().words);
     else if (inLayer(z, farthest))
-        storeLayerFragment(pixel, 1, surfaceColor());
+        storeLayerFragment(pixel, 1, storedSurfaceColor().words);
     else
         outMinMax = vec2(z, -z);
 }

@@ -30,5 +30,5 @@ void main() {
     if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) return;
     if (k > a && !uFirstLayer && peeledWith(z, texelFetch(uPreviousLayer, pixel, 0).r)) return;
     if (texelFetch(uAnchor, pixel, 0).ba == uvec2(uObjectId + 1u, uint(gl_PrimitiveID))) return;
-    storeLayerFragment(pixel, 0, surfaceColor());
+    storeLayerFragment(pixel, 0, storedSurfaceColor().words);
 }

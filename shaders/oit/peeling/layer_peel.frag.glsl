@@ -7,6 +7,7 @@
 // its ids. No buffer stores, so a driver may still reject before shading a fragment behind the
 // nearest so far, as it does for f2b; the capture pass stores the coincident ones.
 #include "surface.glsl"
+#include "oit/fragment_color.glsl"
 #include "peel_bindings.h"
 #include "layer_tie.glsl"
 
@@ -21,6 +22,5 @@ void main() {
     float anchor = texelFetch(uLayer, pixel, 0).r;
     if (anchor <= 0.0 || peeledWith(z, anchor)) discard;
     if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
-    vec4 c = surfaceColor();
-    outAnchor = uvec4(packHalf2x16(c.rg), packHalf2x16(c.ba), uObjectId + 1u, uint(gl_PrimitiveID));
+    outAnchor = uvec4(storedSurfaceColor().words, uObjectId + 1u, uint(gl_PrimitiveID));
 }

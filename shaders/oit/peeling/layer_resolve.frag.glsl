@@ -9,7 +9,12 @@
 // accumulation and, with DUAL, output 1 over the back accumulation. An empty side writes 0,
 // neutral under both blends; without DUAL a pixel with nothing is discarded, so with ANCHOR the
 // samples-passed count of the pass is the number of anchors.
+// STRATA_RGB_TRANSMITTANCE (a scene with coloured filters): the transmittance is per channel, and
+// no blend factor can scale one target by what another holds, so the pass reads the texel it
+// writes of each accumulation and its "passes" target (after glTextureBarrier; outputs 0, 1 the
+// front, 2, 3 the back) and writes them composited, without blending.
 #include "bindings.h"
+#include "peel_bindings.h"
 #include "layer_storage.glsl"
 #include "oit/packed_color.glsl"
 
@@ -18,7 +23,7 @@ uint gFirst;  // the side's list head as a node index, 0xFFFFFFFF for an empty l
 float fragmentDepth(uint i) { return nodes[i].depth; }
 uint fragmentObject(uint i) { return nodes[i].objectId; }
 uint fragmentPrimitive(uint i) { return nodes[i].primitiveId; }
-void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
+void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
     compositePacked(nodes[i].colorRG, nodes[i].colorBA, color, transmittance);
 }
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirst; i != 0xFFFFFFFFu; i = nodes[i].next - 1u)
@@ -32,7 +37,7 @@ uint gFirst, gEnd;  // the side's entries [gFirst, gEnd)
 float fragmentDepth(uint i) { return entries[i].depth; }
 uint fragmentObject(uint i) { return entries[i].objectId; }
 uint fragmentPrimitive(uint i) { return entries[i].primitiveId; }
-void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
+void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
     compositePacked(entries[i].colorRG, entries[i].colorBA, color, transmittance);
 }
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirst; i < gEnd; ++i)
@@ -63,7 +68,7 @@ uvec4 gAnchor;  // packed colour, object id + 1, primitive id
 uint objectOf(uint i) { return ANCHOR_OR(i, gAnchor.z - 1u, fragmentObject(i)); }
 uint primitiveOf(uint i) { return ANCHOR_OR(i, gAnchor.w, fragmentPrimitive(i)); }
 float depthOf(uint i) { return ANCHOR_OR(i, 1.0, fragmentDepth(i)); }  // one per (object, primitive): never compared
-void compositeAny(uint i, inout vec3 color, inout float transmittance) {
+void compositeAny(uint i, inout vec3 color, inout Transmittance transmittance) {
     if (i == kAnchor) {
         compositePacked(gAnchor.x, gAnchor.y, color, transmittance);
     } else {
@@ -74,7 +79,9 @@ void compositeAny(uint i, inout vec3 color, inout float transmittance) {
 uint objectOf(uint i) { return fragmentObject(i); }
 uint primitiveOf(uint i) { return fragmentPrimitive(i); }
 float depthOf(uint i) { return fragmentDepth(i); }
-void compositeAny(uint i, inout vec3 color, inout float transmittance) { compositeFragment(i, color, transmittance); }
+void compositeAny(uint i, inout vec3 color, inout Transmittance transmittance) {
+    compositeFragment(i, color, transmittance);
+}
 #endif
 
 // Scene order; equal keys (one primitive cannot cover a pixel twice) fall back to the index so
@@ -90,7 +97,7 @@ bool sceneBefore(uint a, uint b) {
 }
 
 // `stored`: whether the storage holds any of the layer's fragments.
-void compositeLayer(bool stored, inout vec3 color, inout float transmittance) {
+void compositeLayer(bool stored, inout vec3 color, inout Transmittance transmittance) {
 #ifdef ANCHOR
     // Where nothing coincides (most pixels) the layer is its anchor: no storage, no selection.
     if (!stored) {
@@ -120,39 +127,72 @@ void compositeLayer(bool stored, inout vec3 color, inout float transmittance) {
     }
 }
 
-layout(location = 0) out vec4 outFront;
-#ifdef DUAL
-layout(location = 1) out vec4 outBack;
-#endif
+// A layer composited: its premultiplied colour and what it lets through.
+struct Layer {
+    vec3 color;
+    Transmittance transmittance;
+};
+const Layer kNothing = Layer(vec3(0.0), Transmittance(1.0));
 
-vec4 compositeSide(ivec2 pixel, int side) {
+Layer compositeSide(ivec2 pixel, int side) {
     bool stored = selectSide(pixel, side);
 #ifndef ANCHOR
-    if (!stored) return vec4(0.0);
+    if (!stored) return kNothing;
 #endif
-    vec3 color = vec3(0.0);
-    float transmittance = 1.0;
-    compositeLayer(stored, color, transmittance);
-    return vec4(color, 1.0 - transmittance);
+    Layer layer = kNothing;
+    compositeLayer(stored, layer.color, layer.transmittance);
+    return layer;
 }
+
+#ifdef STRATA_RGB_TRANSMITTANCE
+layout(binding = BIND_PEEL_ACCUM) uniform sampler2D uAccum;
+layout(binding = BIND_PEEL_ACCUM_FILTER) uniform sampler2D uAccumPasses;
+layout(location = 0) out vec4 outFront;
+layout(location = 1) out vec4 outFrontPasses;
+// Under the front accumulation.
+void writeFront(ivec2 pixel, Layer layer) {
+    vec3 t = texelFetch(uAccumPasses, pixel, 0).rgb;
+    outFront = vec4(texelFetch(uAccum, pixel, 0).rgb + t * layer.color, 1.0);
+    outFrontPasses = vec4(t * layer.transmittance, 1.0);
+}
+#ifdef DUAL
+layout(binding = BIND_PEEL_BACK_ACCUM) uniform sampler2D uBackAccum;
+layout(binding = BIND_PEEL_BACK_ACCUM_FILTER) uniform sampler2D uBackAccumPasses;
+layout(location = 2) out vec4 outBack;
+layout(location = 3) out vec4 outBackPasses;
+// Over the back accumulation.
+void writeBack(ivec2 pixel, Layer layer) {
+    outBack = vec4(layer.color + layer.transmittance * texelFetch(uBackAccum, pixel, 0).rgb, 1.0);
+    outBackPasses = vec4(layer.transmittance * texelFetch(uBackAccumPasses, pixel, 0).rgb, 1.0);
+}
+#endif
+#else
+layout(location = 0) out vec4 outFront;
+void writeFront(ivec2 pixel, Layer layer) { outFront = vec4(layer.color, 1.0 - layer.transmittance); }
+#ifdef DUAL
+layout(location = 1) out vec4 outBack;
+void writeBack(ivec2 pixel, Layer layer) { outBack = vec4(layer.color, 1.0 - layer.transmittance); }
+#endif
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
 #ifdef DUAL
-    outFront = compositeSide(pixel, 0);
-    outBack = compositeSide(pixel, 1);
+    writeFront(pixel, compositeSide(pixel, 0));
+    writeBack(pixel, compositeSide(pixel, 1));
 #elif defined(ANCHOR)
     gAnchor = texelFetch(uAnchor, pixel, 0);
     if (gAnchor.z == 0u) discard;  // no layer here (coincident fragments come with an anchor)
     if (!uAnyStored) {
         // Nothing coincided anywhere in this layer: f2b's blend, no storage read.
-        vec4 c = vec4(unpackHalf2x16(gAnchor.x), unpackHalf2x16(gAnchor.y));
-        outFront = vec4(c.rgb * c.a, c.a);
+        Layer anchor = kNothing;
+        compositePacked(gAnchor.x, gAnchor.y, anchor.color, anchor.transmittance);
+        writeFront(pixel, anchor);
         return;
     }
-    outFront = compositeSide(pixel, 0);
+    writeFront(pixel, compositeSide(pixel, 0));
 #else
     if (!selectSide(pixel, 0)) discard;
-    outFront = compositeSide(pixel, 0);
+    writeFront(pixel, compositeSide(pixel, 0));
 #endif
 }

@@ -18,8 +18,8 @@ layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uStored;
 layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uOverflowed;
 #endif
 
-void storeLayerFragment(ivec2 pixel, int side, vec4 c) {
-    uvec2 words = packScalarColor(c);
+// words: the fragment's colour words (oit/fragment_color.glsl: storedSurfaceColor()).
+void storeLayerFragment(ivec2 pixel, int side, uvec2 words) {
 #if defined(LAYER_LIST)
     uint index;
     if (side == 0) {

@@ -28,7 +28,13 @@ GPU_CONST uint BIND_COPLANAR_MAX_COLOR = 10u;  // colour of the id-max fragment
 GPU_CONST uint BIND_COPLANAR_LAYER = 11u;      // the open layer's far part (premultiplied colour, transmittance)
 GPU_CONST uint BIND_COPLANAR_ACCUM = 12u;      // accumulated (premultiplied colour, transmittance)
 GPU_CONST uint BIND_COPLANAR_NEXT_DEPTH = 13u; // f2b-3p: the depth pass's nearest fragment beyond the layer
-GPU_CONST uint BIND_COPLANAR_BACK_OFFSET = 7u; // dual-2p back side: 14 .. 19
+// Their STRATA_RGB_TRANSMITTANCE builds' second texels (coplanar_layer.glsl), above the material
+// textures (common/bindings.h: 20 .. 25).
+GPU_CONST uint BIND_COPLANAR_MIN_OPACITY = 26u;   // the id-min fragment's opacity per channel
+GPU_CONST uint BIND_COPLANAR_MAX_OPACITY = 27u;   // the id-max fragment's
+GPU_CONST uint BIND_COPLANAR_LAYER_PASSES = 28u;  // what the open layer's far part lets through
+GPU_CONST uint BIND_COPLANAR_ACCUM_PASSES = 29u;  // what the accumulation lets through
+GPU_CONST uint BIND_COPLANAR_BACK_OFFSET = 7u; // dual-2p back side: 14 .. 19, and 33 .. 36
 GPU_CONST uint BIND_COPLANAR_ID_BASE = 2u;     // SSBO: first id of each object (coplanar_ids.hpp)
 
 GPU_NAMESPACE_END
