@@ -104,6 +104,27 @@ TEST_CASE("the 'eye inside all three' camera of the next test is inside all thre
     CHECK(inside == 3);
 }
 
+namespace {
+
+// builtin:slabs:3 with a pane of amber glass in front of the first slab and one of cyan glass
+// between the second and third: each filters the walk's transmittance per channel.
+Scene slabsBetweenGlass() {
+    Scene s = makeSlabsScene(3);
+    const glm::vec3 tints[2] = {{1.0f, 0.6f, 0.2f}, {0.2f, 0.8f, 1.0f}};
+    const float depths[2] = {0.8f, 1.4f};  // the slabs' front faces are at 1, 1.25 and 1.5
+    for (int i = 0; i < 2; ++i) {
+        Material glass;
+        glass.name = "glass" + std::to_string(i);
+        glass.baseColor = tints[i];
+        glass.transmission = 1.0f;
+        glass.roughness = 0.4f;
+        place(s, makeQuad(8.0f, 8.0f), s.addMaterial(glass), glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -depths[i]}));
+    }
+    return s;
+}
+
+}  // namespace
+
 TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     test::glContext();
     struct Case {
@@ -117,6 +138,7 @@ TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     cases.push_back({"volumes, eye inside all three", makeVolumesScene(), cameraAt({0.0f, 1.3f, 0.15f}, {0.2f, 1.1f, -3.0f})});
     cases.push_back({"slabs:3", makeSlabsScene(3), std::nullopt});
     cases.push_back({"default", makeDefaultScene(), std::nullopt});
+    cases.push_back({"slabs:3 between panes of coloured glass", slabsBetweenGlass(), std::nullopt});
     cases.push_back({"intersecting, eye outside", intersectingScene(), cameraAt({0.3f, 1.0f, 4.0f}, {0, 0, 0})});
     cases.push_back({"intersecting, eye in the overlap", intersectingScene(), cameraAt({0.1f, -0.05f, 0.05f}, {0, 0, -3})});
     cases.push_back({"intersecting, eye in one", intersectingScene(), cameraAt({-0.9f, 0.6f, 0.2f}, {1, -0.3f, -1})});

@@ -47,8 +47,7 @@ public:
           volume_(volume ? std::make_unique<VolumeResolve>() : nullptr) {}
 
     void render(const FrameContext& frame) override {
-        // The volumetric resolve reads the scalar layout (oit/volume/volume_list.glsl).
-        const ColorModel model = volume_ ? ColorModel::Scalar : colorModelFor(frame.scene);
+        const ColorModel model = colorModelFor(frame.scene);
         programs_.use(model);
         if (!programs_->store.program) {
             const gl::Defines defines = withColorModel(volume_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{}, model);
@@ -136,7 +135,8 @@ TechniqueEntry abufferVolumeEntry() {
                        "as abuffer, + 24 B per object (medium table)",
                        "the exact volumetric reference: abuffer's unbounded lists, resolved through the media of "
                        "closed volume objects (tau, albedo, Rayleigh in-scattering; Barta and Kovacs), other "
-                       "transparent objects alpha-composited in the same walk"};
+                       "transparent objects composited in the same walk (coloured filters per channel)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<ABuffer>(info, true);
 }
 

@@ -382,6 +382,8 @@ struct RaycastReference::Impl {
             } else {
                 v.color = f.color;
                 v.alpha = f.alpha;
+                v.coloredFilter = f.coloredFilter;
+                v.transmittance = f.transmittance;
             }
             walk.push_back(v);
         }

@@ -69,10 +69,8 @@ VolumeResult compositeVolumes(const std::vector<VolumeFragment>& fragments, cons
             if (!inside.cross(f.object, *f.medium, f.entry ? 1 : -1)) ++out.nestingOverflow;
             continue;
         }
-        // A coloured filter (transmission) composites in its scalar form, as ll-volume and
-        // abuffer-volume store it (TechniqueInfo::rgbTransmittance is false for both).
         color += transmittance * double(f.alpha) * glm::dvec3(f.color);
-        transmittance *= 1.0 - double(f.alpha);
+        transmittance *= f.coloredFilter ? glm::dvec3(f.transmittance) : glm::dvec3(1.0 - double(f.alpha));
     }
     advance(endDistance);
     out.color = glm::vec3(color + transmittance * glm::dvec3(background));

@@ -9,7 +9,7 @@
 //   C = a L^s (1 - e^{-tau d}) = sigma L^s (1 - e^{-tau d}) / tau,   T = e^{-tau d},
 // composited front to back, L += C T_before, T *= e^{-tau d}; the opaque colour behind is
 // attenuated by the final T. Thin surfaces (objects that are not volumes) composite with
-// their alpha in the same walk.
+// their alpha in the same walk, coloured filters (glass) per channel.
 //
 // Where the paper keeps running (tau, a) and subtracts on exit, this keeps the set of volumes
 // the ray is in, with an integer count per object, and sums the set per segment: the same
@@ -81,6 +81,10 @@ struct VolumeFragment {
     bool entry = false;             // volumes: the ray enters the object here
     glm::vec3 color{0.0f};          // thin surfaces: shaded colour and alpha
     float alpha = 0.0f;
+    // A thin coloured filter (render/composite.hpp's SurfaceFragment): what passes behind it
+    // per channel; alpha * color is still its premultiplied colour.
+    bool coloredFilter = false;
+    glm::vec3 transmittance{1.0f};
 };
 
 struct VolumeResult {

@@ -32,10 +32,7 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
     id_ = id;
     const std::optional<Shaders> lighter = lighterShaders(frame);
     const Shaders s = lighter ? *lighter : shaders();
-    // A volumetric technique stays scalar on its lighter path too: one technique, one colour model
-    // (TechniqueInfo::rgbTransmittance).
-    const bool volumetric = shaders().storeDefines.count("VOLUME") > 0;
-    const ColorModel model = volumetric ? ColorModel::Scalar : colorModelFor(frame.scene);
+    const ColorModel model = colorModelFor(frame.scene);
     current_ = &programs_[lighter ? 1 : 0][int(model)];
     SceneProgram& storeProgram = current_->store;
     gl::Program& resolveProgram = current_->resolve;

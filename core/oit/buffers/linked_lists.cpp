@@ -125,7 +125,8 @@ TechniqueEntry llVolumeEntry() {
                        "as ll, + 24 B per object (medium table)",
                        "the volumetric linked-list resolve (Barta and Kovacs): ll's fixed pool, each list sorted and "
                        "walked through the media of the closed volume objects it crosses (tau, albedo, Rayleigh "
-                       "in-scattering), thin surfaces alpha-composited in the same walk; overflow counted"};
+                       "in-scattering), thin surfaces composited in the same walk (coloured filters per channel); overflow counted"};
+    info.rgbTransmittance = true;
     return techniqueEntry<LinkedLists>(info, true);
 }
 

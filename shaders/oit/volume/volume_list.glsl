@@ -4,8 +4,10 @@
 // of volumes rather than the paper's running sums). Thin surfaces composite with their alpha in
 // the same walk. Shared by the fragment and compute resolves (abuffer_resolve.*, VOLUME
 // defined); the colour and transmittance of compositeFragment's signature are unused, the walk
-// keeps a transmittance per channel.
+// keeps a transmittance per channel. With STRATA_RGB_TRANSMITTANCE (a scene with coloured
+// filters) a glass surface filters that transmittance per channel (oit/packed_color.glsl).
 #include "oit/abuffer_storage.glsl"
+#include "oit/packed_color.glsl"
 #include "oit/volume/volume_bindings.h"
 
 layout(std430, binding = BIND_VOLUME_OBJECTS) readonly buffer VolumeObjects {
@@ -31,7 +33,7 @@ uint gFirstNode;  // the pixel's list head as a node index, 0xFFFFFFFF for an em
 float fragmentDepth(uint i) { return nodes[i].depth; }
 uint fragmentObject(uint i) { return nodes[i].objectId; }
 uint fragmentPrimitive(uint i) { return nodes[i].primitiveId & VOLUME_PRIMITIVE_MASK; }
-void compositeFragment(uint i, inout vec3 color, inout float transmittance);  // the walk's step, below
+void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance);  // the walk's step, below
 
 // Links hold index + 1 with 0 ending the list, so "link - 1" ends at 0xFFFFFFFF.
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodes[i].next - 1u)
@@ -149,17 +151,21 @@ void crossVolume(uint object, int step) {
     }
 }
 
-void compositeFragment(uint i, inout vec3 color, inout float transmittance) {
+void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
     advanceTo(nodes[i].depth);
     uint p = nodes[i].primitiveId;
     if ((p & VOLUME_FLAG_MEDIUM) != 0u) {
         crossVolume(nodes[i].objectId, (p & VOLUME_FLAG_ENTRY) != 0u ? 1 : -1);
         return;
     }
+#ifdef STRATA_RGB_TRANSMITTANCE
+    compositePacked(nodes[i].colorRG, nodes[i].colorBA, gRadiance, gTransmittance);
+#else
     vec2 rg = unpackHalf2x16(nodes[i].colorRG);
     vec2 ba = unpackHalf2x16(nodes[i].colorBA);
     gRadiance += gTransmittance * ba.y * vec3(rg, ba.x);
     gTransmittance *= 1.0 - ba.y;
+#endif
 }
 
 void beginWalk(ivec2 pixel) {
@@ -197,12 +203,12 @@ vec3 resolvePixel(ivec2 pixel, vec3 opaque) {
     gFirstNode = imageLoad(uHeads, pixel).r - 1u;
     beginWalk(pixel);
     vec3 unusedColor = vec3(0.0);
-    float unusedTransmittance = 1.0;
+    Transmittance unusedTransmittance = Transmittance(1.0);
     compositeInDepthOrder(unusedColor, unusedTransmittance);
 #ifdef LIST_TAIL
     // Overflowed thin surfaces, one approximate layer behind the stored fragments.
     vec3 tailColor = vec3(0.0);
-    float tailTransmittance = 1.0;
+    Transmittance tailTransmittance = Transmittance(1.0);
     compositeTail(pixel, tailColor, tailTransmittance);
     gRadiance += gTransmittance * tailColor;
     gTransmittance *= tailTransmittance;
