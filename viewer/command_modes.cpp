@@ -38,7 +38,8 @@ void registerModesCommand(CLI::App& app) {
                             formatSettingValue(d, d.defaultValue).c_str(), toString(d.change), d.help.c_str());
         }
         std::printf("\nfilters: how a transmissive (KHR_materials_transmission) surface composites. rgb: its "
-                    "transmittance per channel, exact (glass behind coloured glass keeps both tints). scalar: one "
+                    "transmittance per channel (glass behind coloured glass keeps both tints; exact where the technique's "
+                    "order is). scalar: one "
                     "alpha, 1 - mean transmittance, with the colour premultiplied over it: brightness kept, tint lost.\n");
     });
 }

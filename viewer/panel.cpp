@@ -158,7 +158,7 @@ void drawScene(const PanelState& state) {
     if (scene.hasColoredFilters()) {
         const bool rgb = state.technique && state.technique->info().rgbTransmittance;
         ImGui::TextColored(rgb ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "glass: %s",
-                           rgb ? "coloured filters per channel (exact)" : "coloured filters as grey (scalar form)");
+                           rgb ? "coloured filters per channel" : "coloured filters as grey (scalar form)");
         helpTooltip("transmissive materials filter what is behind them per channel; `strata modes` lists which "
                     "techniques composite that (filters: rgb) and which take one alpha, losing the tint");
     }

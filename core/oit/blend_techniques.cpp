@@ -2,10 +2,14 @@
 // order (blend-unsorted) or with objects sorted back to front (blend-sorted). Both are exact only
 // when no two objects overlap out of order; neither resolves intersecting or coplanar surfaces.
 //
+// In a scene with coloured filters (oit/color_model.hpp) both blend a glass fragment's filter
+// per channel by dual-source blending (blend.frag.glsl): no target more, no pass more.
+//
 // precision=32 blends straight into the RGBA32F output. precision=16 blends into an RGBA16F
 // scratch target sharing the opaque depth: the opaque colour is blitted in, the pass blends,
 // and the result is blitted back (two full-screen copies against one float32 blend per
 // fragment).
+#include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
 #include "oit/scratch_target.hpp"
@@ -28,7 +32,9 @@ public:
     BlendTechnique(TechniqueInfo info, bool sorted) : TechniqueWithSettings(std::move(info)), sorted_(sorted) {}
 
     void render(const FrameContext& frame) override {
-        if (!program_.program) program_ = buildSceneProgram("oit/blend.frag.glsl");
+        const ColorModel model = colorModelFor(frame.scene);
+        SceneProgram& program = programs_.use(model).blend;
+        if (!program.program) program = buildSceneProgram("oit/blend.frag.glsl", withColorModel({}, model));
         std::vector<int> order = sorted_ ? sortedBackToFront(frame) : frame.transparentOrder;
         const bool half = isHalf(settings_.precision);
         stats_ = {};
@@ -42,13 +48,19 @@ public:
         glBindFramebuffer(GL_FRAMEBUFFER, target);
         setTransparentDepthState(frame);
         glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        if (model == ColorModel::RgbTransmittance)
+            glBlendFuncSeparate(GL_ONE, GL_SRC1_COLOR, GL_ZERO, GL_ONE);
+        else
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         // Every fragment that passes the depth test is blended: an occlusion query counts them.
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        stats_.objectDraws = drawTransparent(frame, program_, order);
+        stats_.objectDraws = drawTransparent(frame, program, order);
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
+        // A dual-source blend function left set makes a later draw into several targets an error
+        // on Mesa, blending enabled or not.
+        glBlendFunc(GL_ONE, GL_ZERO);
         if (half) copyColor(frame, target, frame.targets.outputFramebuffer());
         const std::uint64_t blended = gl::queryResult(samples_);
         stats_.fragmentsCaptured = blended;
@@ -61,8 +73,11 @@ private:
                                GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
 
+    struct Programs {
+        SceneProgram blend;
+    };
     bool sorted_;
-    SceneProgram program_;
+    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
     ScratchTarget scratch_;
 };
@@ -73,6 +88,7 @@ TechniqueEntry blendUnsortedEntry() {
     TechniqueInfo info{"blend-unsorted", "baseline", false, false, "1",
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending in submission order (wrong wherever objects arrive front to back)"};
+    info.rgbTransmittance = true;
     return techniqueEntry<BlendTechnique>(info, false);
 }
 
@@ -80,6 +96,7 @@ TechniqueEntry blendSortedEntry() {
     TechniqueInfo info{"blend-sorted", "baseline", false, false, "1",
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending with objects sorted back to front by bounds centre"};
+    info.rgbTransmittance = true;
     return techniqueEntry<BlendTechnique>(info, true);
 }
 
