@@ -252,6 +252,25 @@ std::vector<ProgramCase> programCases() {
         {"uFrontMax", tex(BIND_COPLANAR_MAX_COLOR)},      {"uBackMax", tex(BIND_COPLANAR_MAX_COLOR + back)},
         {"uFrontLayer", tex(BIND_COPLANAR_LAYER)},        {"uBackLayer", tex(BIND_COPLANAR_LAYER + back)},
         {"uFrontAccum", tex(BIND_COPLANAR_ACCUM)},        {"uBackAccum", tex(BIND_COPLANAR_ACCUM + back)}};
+    // The STRATA_RGB_TRANSMITTANCE builds' second texels (coplanar_layer.glsl), per side.
+    auto coplanarRgb = [](const std::string& prefix, GLuint offset) {
+        return std::map<std::string, Binding>{{prefix + "MinOpacity", tex(BIND_COPLANAR_MIN_OPACITY + offset)},
+                                              {prefix + "MaxOpacity", tex(BIND_COPLANAR_MAX_OPACITY + offset)},
+                                              {prefix + "LayerPasses", tex(BIND_COPLANAR_LAYER_PASSES + offset)},
+                                              {prefix + "AccumPasses", tex(BIND_COPLANAR_ACCUM_PASSES + offset)}};
+    };
+    std::map<std::string, Binding> dualResolveFront, dualResolveBack;
+    for (const auto& [name, binding] : coplanarDualResolve) {
+        const bool front = name.rfind("uFront", 0) == 0;
+        // Each side's draw reads its own side, and the other side's count (the discard rule);
+        // the back draw also the front state (the bound of what is left).
+        if (front || name == "uBackCount") dualResolveFront.emplace(name, binding);
+        if (!front || name == "uFrontCount" || name == "uFrontState") dualResolveBack.emplace(name, binding);
+    }
+    const std::map<std::string, Binding> layerAccum = {{"uAccum", tex(BIND_PEEL_ACCUM)},
+                                                       {"uAccumPasses", tex(BIND_PEEL_ACCUM_FILTER)}};
+    const std::map<std::string, Binding> layerBackAccum = {{"uBackAccum", tex(BIND_PEEL_BACK_ACCUM)},
+                                                           {"uBackAccumPasses", tex(BIND_PEEL_BACK_ACCUM_FILTER)}};
     const std::map<std::string, Binding> layerPeel = {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
                                                       {"uPreviousLayer", tex(BIND_PEEL_PREVIOUS)},
                                                       {"uLayer", tex(BIND_PEEL_LAYER)},
@@ -280,7 +299,8 @@ std::vector<ProgramCase> programCases() {
          {{"uAlphaMasks", tex(BIND_ALPHA_MASKS)}}},
         {{"oit/screendoor/point_samples.comp.glsl"}, {},
          {{"MeshVertices", ssbo(BIND_MESH_VERTICES)}, {"MeshIndices", ssbo(BIND_MESH_INDICES)},
-          {"Points", ssbo(BIND_POINTS)}, {"uPointsWanted", kCounters}, {"uTrianglesBounded", kCounters}}},
+          {"Points", ssbo(BIND_POINTS)}, {"uPointsWanted", kCounters}, {"uTrianglesBounded", kCounters},
+          {"MeshAttributes", ssbo(BIND_MESH_ATTRIBUTES)}, {"uBaseColorTexture", tex(BIND_BASE_COLOR_TEXTURE)}}},
         {{"oit/screendoor/points.vert.glsl", "oit/screendoor/points.frag.glsl"}, {},
          {{"Points", ssbo(BIND_POINTS)}, {"ObjectColors", ssbo(BIND_OBJECT_COLORS)}}},
         // abuffer
@@ -352,6 +372,12 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/peeling/coplanar_dual_check.frag.glsl"}, {},
          {{"uFrontCount", tex(BIND_COPLANAR_COUNT)}, {"uBackCount", tex(BIND_COPLANAR_COUNT + BIND_COPLANAR_BACK_OFFSET)}}},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {}, coplanarDualResolve},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}},
+         with(coplanarResolve, coplanarRgb("u", 0))},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_FRONT", ""}},
+         with(dualResolveFront, coplanarRgb("uFront", 0))},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}},
+         with(dualResolveBack, coplanarRgb("uBack", back))},
         // buffers
         {{scene, "oit/buffers/fab_store.frag.glsl"}, {},
          {{"uCounts", image(BIND_PIXEL_COUNTS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)},
@@ -397,6 +423,10 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}, {"ANCHOR", ""}}, with(kbLayer, anchor)},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"DUAL", ""}}, lists},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"DUAL", ""}}, fabLayer},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}, {"STRATA_RGB_TRANSMITTANCE", ""}},
+         with(with(lists, anchor), layerAccum)},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"DUAL", ""}, {"STRATA_RGB_TRANSMITTANCE", ""}},
+         with(with(fabLayer, layerAccum), layerBackAccum)},
         {{scene, "oit/peeling/bun_ll_store.frag.glsl"}, {}, with(with(bucket, lists), {{"uNodeCount", kCounters}})},
         {{full, "oit/peeling/bun_ll_resolve.frag.glsl"}, {{"MAX_BUCKETS", "32"}}, listResolve},
         // coplanarity detector: abuffer's store, then its own resolve
@@ -478,7 +508,8 @@ void main() {
     using gpu::ScreenDoorPoint;
     checkLayout<ScreenDoorPoint>(points.id(), "Points",
                                  {FIELD(ScreenDoorPoint, x), FIELD(ScreenDoorPoint, y), FIELD(ScreenDoorPoint, z),
-                                  FIELD(ScreenDoorPoint, normal), FIELD(ScreenDoorPoint, object)});
+                                  FIELD(ScreenDoorPoint, normal), FIELD(ScreenDoorPoint, object),
+                                  FIELD(ScreenDoorPoint, tintRG), FIELD(ScreenDoorPoint, tintB)});
     gl::takeErrors();
 }
 

@@ -101,6 +101,42 @@ TEST_CASE("a BLEND quad textured with alphas a1 and a2 equals two factor quads")
     checkPair(std::move(textured), std::move(factors));
 }
 
+TEST_CASE("screendoor-object-sw keeps its points by the texture's alpha and tints them by its colour") {
+    // The textured quad of the test above against its two factor quads, through the point
+    // sampling technique at 16 x 16 supersampling: each half's mean colour is the same within
+    // the sampling noise. A half holds 8 x 16 pixels of 256 samples (32768), each point kept
+    // with probability a: the mean's variance is at most 0.25 / 32768 per image, so the two
+    // images' means differ by at most 5 standard deviations of the difference, 0.0138 per unit
+    // of the covered-uncovered contrast (at most 1 here), unless the alpha or tint is lost
+    // (alpha 1 instead of 0.25 moves the left half by about 0.4).
+    test::glContext();
+    const glm::u8vec4 left(230, 40, 40, 64), right(40, 200, 90, 191);
+    Scene textured = sceneWithTexels(left, right);
+    addObject(textured, quad(-1, 1, 0), texturedBlend());
+    Scene factors = factorHalves(left, right);
+    const Camera camera = defaultCamera(factors, flatten(factors));
+    GpuScene gpuTextured(std::move(textured)), gpuFactors(std::move(factors));
+    auto render = [&](const GpuScene& scene) {
+        auto t = test::makeTechnique("screendoor-object-sw", {"supersampling=16"});
+        test::Rendered r = test::renderWith(scene, camera, kSize, *t);
+        CHECK_FALSE(r.result.stats.overflowed);
+        return r.image;
+    };
+    const Image t = render(gpuTextured), f = render(gpuFactors);
+    const double tolerance = 5.0 * std::sqrt(2.0 * 0.25 / (8.0 * 16.0 * 256.0));
+    for (int half = 0; half < 2; ++half) {
+        glm::dvec3 sumT(0.0), sumF(0.0);
+        for (int y = 0; y < kSize.y; ++y)
+            for (int x = half * 8; x < half * 8 + 8; ++x) {
+                sumT += glm::dvec3(glm::vec3(t.at(x, y)));
+                sumF += glm::dvec3(glm::vec3(f.at(x, y)));
+            }
+        const glm::dvec3 meanT = sumT / 128.0, meanF = sumF / 128.0;
+        CAPTURE(half);
+        for (int c = 0; c < 3; ++c) CHECK(std::abs(meanT[c] - meanF[c]) <= tolerance);
+    }
+}
+
 TEST_CASE("a MASK texture cuts like the cut geometry, in the opaque pass and the reference") {
     const glm::u8vec4 kept(200, 180, 60, 255), cut(20, 20, 200, 51);  // alpha 1 and 0.2
     Scene textured = sceneWithTexels(kept, cut);

@@ -369,24 +369,30 @@ TEST_CASE("a glTF KHR_materials_volume box of the attenuation distance lets atte
     }
 }
 
-TEST_CASE("ll-volume draws as ll where the scene has no volume object, and walks media where it has") {
-    // layers:4 holds only thin surfaces: the volumetric walk would give ll's image at about 1.6x
-    // ll's resolve on llvmpipe, so ll-volume runs ll's programs: the same image, bit for bit.
+TEST_CASE("ll-volume and abuffer-volume draw as ll and abuffer where the scene has no volume object") {
+    // layers:4 holds only thin surfaces: the volumetric walk would give the surface image at
+    // 1.6-1.9x the surface resolve on llvmpipe, so each runs its surface technique's programs:
+    // the same image, bit for bit; on slabs:2 (media) each walks them.
     const glm::ivec2 size{48, 36};
     test::Fixture surfaces(makeBuiltinScene("layers:4"));
-    const test::Rendered ll = test::renderWith(*surfaces.gpu, surfaces.camera, size, "ll");
-    const test::Rendered llVolume = test::renderWith(*surfaces.gpu, surfaces.camera, size, "ll-volume");
-    CHECK(llVolume.image.rgba == ll.image.rgba);
-    CHECK(llVolume.result.stats.fragmentsCaptured == ll.result.stats.fragmentsCaptured);
-    CHECK(llVolume.result.stats.bytes == ll.result.stats.bytes);  // no medium table
-    // slabs:2 are media: the walk attenuates by exp(-tau d) where ll blends alpha surfaces.
     test::Fixture media(makeBuiltinScene("slabs:2"));
-    auto technique = test::makeTechnique("ll-volume");
-    const test::Rendered walked = test::renderWith(*media.gpu, media.camera, size, *technique);
-    const test::Rendered flat = test::renderWith(*media.gpu, media.camera, size, "ll");
-    CHECK(compareImages(walked.image, flat.image).maxAbsError > 0.01);
-    CHECK(walked.result.stats.bytes > flat.result.stats.bytes);  // the medium table
-    // The same technique object back on a scene without volumes: ll's image again.
-    const test::Rendered again = test::renderWith(*surfaces.gpu, surfaces.camera, size, *technique);
-    CHECK(again.image.rgba == ll.image.rgba);
+    for (const auto& [volumetric, surface] : {std::pair<std::string, std::string>{"ll-volume", "ll"},
+                                              std::pair<std::string, std::string>{"abuffer-volume", "abuffer"}}) {
+        CAPTURE(volumetric);
+        const test::Rendered flatSurfaces = test::renderWith(*surfaces.gpu, surfaces.camera, size, surface);
+        auto technique = test::makeTechnique(volumetric);
+        const test::Rendered asSurface = test::renderWith(*surfaces.gpu, surfaces.camera, size, *technique);
+        CHECK(asSurface.image.rgba == flatSurfaces.image.rgba);
+        CHECK(asSurface.result.stats.fragmentsCaptured == flatSurfaces.result.stats.fragmentsCaptured);
+        CHECK(asSurface.result.stats.bytes == flatSurfaces.result.stats.bytes);  // no medium table
+        // slabs:2 are media: the walk attenuates by exp(-tau d) where the surface technique
+        // blends alpha surfaces.
+        const test::Rendered walked = test::renderWith(*media.gpu, media.camera, size, *technique);
+        const test::Rendered flat = test::renderWith(*media.gpu, media.camera, size, surface);
+        CHECK(compareImages(walked.image, flat.image).maxAbsError > 0.01);
+        CHECK(walked.result.stats.bytes > flat.result.stats.bytes);  // the medium table
+        // The same technique object back on a scene without volumes: the surface image again.
+        const test::Rendered again = test::renderWith(*surfaces.gpu, surfaces.camera, size, *technique);
+        CHECK(again.image.rgba == flatSurfaces.image.rgba);
+    }
 }

@@ -48,19 +48,21 @@ public:
 
     void render(const FrameContext& frame) override {
         const ColorModel model = colorModelFor(frame.scene);
-        programs_.use(model);
-        if (!programs_->store.program) {
-            const gl::Defines defines = withColorModel(volume_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{}, model);
-            programs_->store = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
-            programs_->resolve =
+        // abuffer-volume without a volume object in the scene draws as abuffer (VolumeResolve::needed).
+        walk_ = volume_ && VolumeResolve::needed(frame.scene);
+        programs_[walk_].use(model);
+        if (!programs()->store.program) {
+            const gl::Defines defines = withColorModel(walk_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{}, model);
+            programs()->store = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
+            programs()->resolve =
                 gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}, defines);
-            programs_->computeResolve = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, defines);
+            programs()->computeResolve = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, defines);
         }
         stats_ = {};
-        if (volume_) volume_->prepare(frame);
+        if (walk_) volume_->prepare(frame);
         int resolves = 0;
         const FragmentLists::Run run =
-            lists_.render(frame, programs_->store, std::uint64_t(settings_.initialNodes), settings_.maxBlockMiB,
+            lists_.render(frame, programs()->store, std::uint64_t(settings_.initialNodes), settings_.maxBlockMiB,
                           [&](const FragmentLists::Tile& tile) {
                               resolve(frame, tile);
                               ++resolves;
@@ -71,7 +73,7 @@ public:
         stats_.regrows = run.regrows;
         stats_.objectDraws = run.objectDraws;
         stats_.bytes = lists_.bytes();
-        if (volume_) volume_->addStats(stats_);
+        if (walk_) volume_->addStats(stats_);
     }
 
 private:
@@ -82,25 +84,25 @@ private:
         }
         gl::ScopedPass pass(frame.timer, info_.id + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER,
-                          volume_ ? volume_->colorFramebuffer(frame) : frame.targets.outputFramebuffer());
+                          walk_ ? volume_->colorFramebuffer(frame) : frame.targets.outputFramebuffer());
         glEnable(GL_SCISSOR_TEST);
         glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
-        const GLuint program = programs_->resolve.id();
+        const GLuint program = programs()->resolve.id();
         setDepthOrderUniforms(frame, program);
-        if (volume_) volume_->bind(frame, program);
+        if (walk_) volume_->bind(frame, program);
         drawFullscreen(frame, program);
     }
 
     void resolveCompute(const FrameContext& frame, const FragmentLists::Tile& tile) {
         gl::ScopedPass pass(frame.timer, info_.id + " resolve (compute)");
-        const GLuint program = programs_->computeResolve.id();
+        const GLuint program = programs()->computeResolve.id();
         glBindImageTexture(gpu::BIND_RESOLVE_OUTPUT, frame.targets.outputColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                            GL_RGBA32F);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         setDepthOrderUniforms(frame, program);
-        if (volume_) volume_->bind(frame, program);
+        if (walk_) volume_->bind(frame, program);
         glProgramUniform4i(program, glGetUniformLocation(program, "uTile"), tile.origin.x, tile.origin.y, tile.size.x,
                            tile.size.y);
         glUseProgram(program);
@@ -115,9 +117,12 @@ private:
         SceneProgram store;
         gl::Program resolve, computeResolve;
     };
-    ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
+    // The frame's programs: [walk_] then per colour model (oit/color_model.hpp).
+    Programs* programs() const { return programs_[walk_].operator->(); }
+    ProgramsPerColorModel<Programs> programs_[2];
     FragmentLists lists_;
     std::unique_ptr<VolumeResolve> volume_;  // abuffer-volume only
+    bool walk_ = false;                      // this frame walks media (abuffer-volume with volumes)
 };
 
 }  // namespace

@@ -126,11 +126,13 @@ GpuMesh uploadMesh(const Mesh& mesh) {
         checkCount(mesh, mesh.texCoords[set].size(), ("TEXCOORD_" + std::to_string(set)).c_str());
         addAttribute(bytes, mesh.texCoords[set], vao, texCoordLocation[set], 2, bindings);
         g.texCoords[set] = true;
+        g.texCoordOffset[set] = bindings.back().second;
     }
     if (mesh.hasColors()) {
         checkCount(mesh, mesh.colors.size(), "colours");
         addAttribute(bytes, mesh.colors, vao, gpu::ATTRIB_COLOR, 4, bindings);
         g.colors = true;
+        g.colorOffset = bindings.back().second;
     }
     if (mesh.hasTangents()) {
         checkCount(mesh, mesh.tangents.size(), "tangents");

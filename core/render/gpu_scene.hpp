@@ -22,6 +22,9 @@ struct GpuMesh {
     GLsizei indexCount = 0;
     bool texCoords[2] = {false, false};
     bool colors = false;
+    // Where each array starts in `attributes`, in bytes (valid where the flag above is set).
+    std::size_t texCoordOffset[2] = {0, 0};
+    std::size_t colorOffset = 0;
     bool tangents = false;
 };
 
@@ -82,11 +85,13 @@ public:
     bool hasColoredFilters() const { return coloredFilters_; }
     // Decoded texture images on the GPU, mip levels included (the panel's and bench's figure).
     std::size_t textureBytes() const { return textureBytes_; }
+    // Binds the textures object `objectIndex` draws with, with their samplers, at their units
+    // (common/bindings.h), for a pass that reads them outside draw() (a compute pass).
+    void bindMaterialTextures(int objectIndex) const;
 
 private:
     void uploadTextures();
     void setObjectUniforms(const SceneProgram& program, int objectIndex) const;
-    void bindMaterialTextures(int objectIndex) const;
     void drawStandIn(const SceneProgram& program, int objectIndex, const StandInDraw& standIn) const;
 
     Scene scene_;

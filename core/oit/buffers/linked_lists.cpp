@@ -43,21 +43,14 @@ private:
                 {{"VOLUME", ""}}};
     }
 
-    // Without a volume object in the scene the volumetric walk has nothing to walk through and
-    // would cost about 1.6x ll's resolve for the same image: draw as ll.
-    static bool hasVolumes(const GpuScene& scene) {
-        for (const ObjectVolume& v : scene.objectVolumes())
-            if (v.volume) return true;
-        return false;
-    }
-
+    // Without a volume object in the scene: draw as ll (VolumeResolve::needed).
     std::optional<Shaders> lighterShaders(const FrameContext& frame) const override {
-        if (volume_ && !hasVolumes(frame.scene)) return surfaceShaders();
+        if (volume_ && !VolumeResolve::needed(frame.scene)) return surfaceShaders();
         return std::nullopt;
     }
 
     GLuint prepareResolve(const FrameContext& frame, GLuint program) override {
-        volumeFrame_ = volume_ && hasVolumes(frame.scene);
+        volumeFrame_ = volume_ && VolumeResolve::needed(frame.scene);
         if (!volumeFrame_) return frame.targets.outputFramebuffer();
         volume_->prepare(frame);
         volume_->bind(frame, program);

@@ -3,6 +3,8 @@
 #include "common/bindings.h"
 #include "gl/shader_program.hpp"
 #include "oit/screendoor/screendoor_bindings.h"
+#include "render/gpu_scene.hpp"
+#include "render/scene_program.hpp"
 #include "render/shading.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -25,6 +27,31 @@ float keepProbability(const Material& m) {
     const float coverage = m.alphaMode == AlphaMode::Blend ? m.alpha : 1.0f;
     const glm::vec3 through = gpu::transmissionFilter(m.baseColor, m.metallic, m.transmission, m.ior, 1.0f);
     return gpu::scalarOpacityForm(gpu::surfaceOpticsOf(glm::vec3(0.0f), coverage, through)).a;
+}
+// The base colour texture, COLOR_0 and MASK of object `index` for point_samples.comp.glsl.
+void setDetailUniforms(GLuint p, const GpuScene& scene, int index) {
+    const Object& o = scene.objects()[std::size_t(index)];
+    const Material& m = scene.scene().materials[std::size_t(o.material)];
+    const GpuMesh& mesh = scene.meshOf(index);
+    const unsigned features = scene.materialFeatures(index);
+    const bool textured = (features & kSceneBaseColorTexture) != 0;
+    const bool colored = (features & kSceneVertexColor) != 0 && mesh.colors;
+    GLint texCoordOffset = -1;
+    if (textured) {
+        const TextureRef& t = materialTexture(m, kSlotBaseColor);
+        texCoordOffset = GLint(mesh.texCoordOffset[t.texCoord] / sizeof(float));
+        const glm::mat3 transform = t.transform.matrix();
+        glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uBaseColorTransform"), 1, GL_FALSE,
+                                  glm::value_ptr(transform));
+        scene.bindMaterialTextures(index);
+    }
+    glProgramUniform1i(p, glGetUniformLocation(p, "uTextured"), textured);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uTexCoordOffset"), texCoordOffset);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uColorOffset"), colored ? GLint(mesh.colorOffset / sizeof(float)) : -1);
+    glProgramUniform1f(p, glGetUniformLocation(p, "uFactorAlpha"), m.alpha);
+    glProgramUniform1f(p, glGetUniformLocation(p, "uAlphaCutoff"), m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f);
+    if (textured || colored)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_MESH_ATTRIBUTES, mesh.attributes.id());
 }
 }  // namespace
 
@@ -55,6 +82,7 @@ std::uint64_t PointSamples::run(const FrameContext& frame, const PassParameters&
         glProgramUniform1ui(p, glGetUniformLocation(p, "uTriangleCount"), triangles);
         glProgramUniform1ui(p, glGetUniformLocation(p, "uObjectId"), GLuint(o.id));
         glProgramUniform1f(p, glGetUniformLocation(p, "uAlpha"), keepProbability(m));
+        setDetailUniforms(p, frame.scene, index);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_MESH_VERTICES, mesh.vertices.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_MESH_INDICES, mesh.indices.id());
         glDispatchCompute((triangles + gpu::POINT_SAMPLES_GROUP_SIZE - 1) / gpu::POINT_SAMPLES_GROUP_SIZE, chunks, 1);

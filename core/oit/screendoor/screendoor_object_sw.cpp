@@ -25,7 +25,7 @@ struct PointSettings {
             supersamplingSetting(&PointSettings::supersampling),
             seedSetting(&PointSettings::seed),
             integerSetting(&PointSettings::max_points_millions, "max_points_millions", 1, 256, SettingChange::Reallocate,
-                           "most kept points held, in millions (20 B each); more are counted as overflow"),
+                           "most kept points held, in millions (28 B each); more are counted as overflow"),
             integerSetting(&PointSettings::max_triangle_samples, "max_triangle_samples", 1, 1 << 22,
                            SettingChange::Nothing,
                            "most lattice points on one triangle; a larger triangle gets a coarser lattice and is "
@@ -69,7 +69,7 @@ private:
 
 TechniqueEntry screendoorObjectSwEntry() {
     TechniqueInfo info{"screendoor-object-sw", "baseline", false, false, "1 + (2 + log2 n) per tile (+1 per regrow)",
-                       "20 B per kept point (grown to fit, at most max_points_millions) + w*h*n^2*(16*4/3 + 4) B supersampled "
+                       "28 B per kept point (grown to fit, at most max_points_millions) + w*h*n^2*(16*4/3 + 4) B supersampled "
                        "(tiles of 2048^2 samples)",
                        "object-space screen-door by point sampling (Sen et al. 4.1): a lattice of one point per sample "
                        "on each triangle, kept with probability alpha, n x n supersampled; opaque silhouettes"};

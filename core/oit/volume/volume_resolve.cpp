@@ -14,6 +14,12 @@
 
 namespace strata {
 
+bool VolumeResolve::needed(const GpuScene& scene) {
+    for (const ObjectVolume& v : scene.objectVolumes())
+        if (v.volume) return true;
+    return false;
+}
+
 static_assert(int(gpu::VOLUME_MAX_NESTED) == kMaxNestedVolumes, "CPU and GPU walks nest alike");
 static_assert(sizeof(gpu::VolumeObject) == 24, "std430 layout of VolumeObject");
 

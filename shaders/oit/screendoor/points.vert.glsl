@@ -10,6 +10,7 @@ uniform mat4 uViewProj;
 out vec3 vPointNormal;
 out vec3 vPointPosition;
 flat out uint vObjectId;
+flat out vec3 vTint;
 
 void main() {
     ScreenDoorPoint p = points[gl_VertexID];
@@ -17,4 +18,5 @@ void main() {
     vPointNormal = unpackSnorm4x8(p.normal).xyz;
     vPointPosition = vec3(p.x, p.y, p.z);
     vObjectId = p.object;
+    vTint = vec3(unpackHalf2x16(p.tintRG), unpackHalf2x16(p.tintB).x);
 }

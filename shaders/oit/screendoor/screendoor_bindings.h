@@ -17,17 +17,22 @@ GPU_CONST uint BIND_POINTS = 2u;
 GPU_CONST uint BIND_MESH_VERTICES = 3u;
 GPU_CONST uint BIND_MESH_INDICES = 4u;
 GPU_CONST uint BIND_OBJECT_COLORS = 5u;
+GPU_CONST uint BIND_MESH_ATTRIBUTES = 6u;  // the mesh's TEXCOORD_n and COLOR_0 arrays (render/gpu_scene.hpp)
 GPU_CONST uint POINT_SAMPLES_GROUP_SIZE = 64u;  // triangles per compute group
 GPU_CONST uint POINT_CHUNK = 16384u;            // lattice points one invocation walks
 
 // One point sample (a kept surface sample of screendoor-object-sw), scalars only so C++ and
-// std430 pack it alike: world position, the world normal packed as snorm 4x8, the object id.
+// std430 pack it alike: world position, the world normal packed as snorm 4x8, the object id,
+// and what its base colour texture and COLOR_0 make of the factor colour there (half r, g and
+// half b, 0; 1 where the material has neither).
 struct ScreenDoorPoint {
     float x;
     float y;
     float z;
     uint normal;
     uint object;
+    uint tintRG;
+    uint tintB;
 };
 
 // Alpha is quantized to this many levels above zero (8-bit alpha); mask layer l keeps a texel
