@@ -1,59 +1,82 @@
 #include "lod/impostor_set.hpp"
 
+#include "render/scene_program.hpp"
+
 #include <chrono>
 #include <cstdio>
+#include <map>
 #include <ostream>
+#include <utility>
 
 namespace strata::lod {
 
-ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels,
-                         std::ostream* progress, bool bakeNow)
-    : scene_(&scene), settings_(settings), transparentPeels_(transparentPeels), progress_(progress) {
-    const Scene& s = scene.scene();
+ImpostorKeys impostorKeys(const GpuScene& scene) {
+    ImpostorKeys keys;
     const auto& objects = scene.objects();
-    wanted_.assign(s.meshes.size(), false);
-    transparent_.assign(s.meshes.size(), false);
-    tried_.assign(s.meshes.size(), false);
+    keys.ofObject.assign(objects.size(), -1);
+    // (mesh, material) where the bake keeps part of the material, else (mesh, -1).
+    std::map<std::pair<int, int>, int> ids;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (scene.objectVolumes()[i].volume) continue;
-        const std::size_t m = std::size_t(objects[i].mesh);
-        wanted_[m] = true;
-        if (s.materials[std::size_t(objects[i].material)].isTransparent()) transparent_[m] = true;
+        const bool baked = (scene.materialFeatures(int(i)) & kSceneBakedDetail) != 0;
+        const std::pair<int, int> key{objects[i].mesh, baked ? objects[i].material : -1};
+        const auto [it, added] = ids.emplace(key, keys.count());
+        if (added) {
+            keys.mesh.push_back(objects[i].mesh);
+            keys.bakeObject.push_back(baked ? int(i) : -1);
+        }
+        keys.ofObject[i] = it->second;
     }
-    meshImpostors_.resize(s.meshes.size());
-    meshReasons_.assign(s.meshes.size(), "no surface object uses the mesh");
-    for (std::size_t m = 0; m < s.meshes.size(); ++m)
-        if (wanted_[m]) meshReasons_[m] = "not baked (no object needed it yet)";
-    draws_.resize(objects.size());
-    if (bakeNow) bakeMeshes(wanted_);
+    return keys;
 }
 
-int ImpostorSet::bakeMeshes(const std::vector<bool>& meshes) {
+ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels,
+                         std::ostream* progress, bool bakeNow)
+    : scene_(&scene), settings_(settings), keys_(impostorKeys(scene)), transparentPeels_(transparentPeels),
+      progress_(progress) {
+    const Scene& s = scene.scene();
+    const auto& objects = scene.objects();
+    const std::size_t n = std::size_t(keys_.count());
+    transparent_.assign(n, false);
+    tried_.assign(n, false);
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        if (keys_.ofObject[i] >= 0 && s.materials[std::size_t(objects[i].material)].isTransparent())
+            transparent_[std::size_t(keys_.ofObject[i])] = true;
+    impostors_.resize(n);
+    reasons_.assign(n, "not baked (no object needed it yet)");
+    draws_.resize(objects.size());
+    if (bakeNow) bake(std::vector<bool>(n, true));
+}
+
+int ImpostorSet::bake(const std::vector<bool>& ids) {
     const auto start = std::chrono::steady_clock::now();
     const Scene& s = scene_->scene();
     const auto& objects = scene_->objects();
     int total = 0, done = 0;
-    for (std::size_t m = 0; m < wanted_.size() && m < meshes.size(); ++m) total += meshes[m] && wanted_[m] && !tried_[m];
+    for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) total += ids[k] && !tried_[k];
     if (total == 0) return 0;
-    for (std::size_t m = 0; m < wanted_.size() && m < meshes.size(); ++m) {
-        if (!meshes[m] || !wanted_[m] || tried_[m]) continue;
-        tried_[m] = true;
+    for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) {
+        if (!ids[k] || tried_[k]) continue;
+        tried_[k] = true;
         ImpostorSettings own = settings_;
-        if (transparent_[m]) {
+        if (transparent_[k]) {
             // Disjoint intervals whatever the peel count: an overlapping slice would blend a
             // surface twice.
             own.peels = transparentPeels_;
             own.overlap = 0.0f;
         }
+        const int m = keys_.mesh[k];
         // Objects share the mesh's vertex array; find one that draws it.
         const GpuMesh* mesh = nullptr;
         for (std::size_t i = 0; i < objects.size() && !mesh; ++i)
-            if (std::size_t(objects[i].mesh) == m) mesh = &scene_->meshOf(int(i));
-        auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[m].bounds(), own);
-        if (impostor->valid()) meshImpostors_[m] = std::move(impostor);
-        else meshReasons_[m] = impostor->reason();
+            if (objects[i].mesh == m) mesh = &scene_->meshOf(int(i));
+        BakeMaterial material;
+        if (keys_.bakeObject[k] >= 0) material = {scene_, keys_.bakeObject[k]};
+        auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[std::size_t(m)].bounds(), own, material);
+        if (impostor->valid()) impostors_[k] = std::move(impostor);
+        else reasons_[k] = impostor->reason();
         ++done;
-        if (progress_) *progress_ << "baking impostors: " << done << "/" << total << " meshes" << std::endl;
+        if (progress_) *progress_ << "baking impostors: " << done << "/" << total << std::endl;
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     bakeMs_ += ms;
@@ -61,30 +84,29 @@ int ImpostorSet::bakeMeshes(const std::vector<bool>& meshes) {
         const ImpostorMemory b = bytes();
         char line[256];
         std::snprintf(line, sizeof line,
-                      "impostors: %d meshes baked in %.0f ms; %d baked, %llu bytes (images %llu, rectangles %llu, vertices %llu)",
-                      done, ms, bakedMeshes(), (unsigned long long)b.total(), (unsigned long long)b.images,
+                      "impostors: %d baked in %.0f ms; %d in all, %llu bytes (images %llu, rectangles %llu, vertices %llu)",
+                      done, ms, bakedImpostors(), (unsigned long long)b.total(), (unsigned long long)b.images,
                       (unsigned long long)b.rectangles, (unsigned long long)b.vertexBuffer);
         *progress_ << line << std::endl;
     }
     return done;
 }
 
-const LayeredImpostor* ImpostorSet::impostorOfMesh(int mesh) const {
-    if (mesh < 0 || std::size_t(mesh) >= meshImpostors_.size()) return nullptr;
-    return meshImpostors_[std::size_t(mesh)].get();
+const LayeredImpostor* ImpostorSet::impostorOfId(int id) const {
+    if (id < 0 || std::size_t(id) >= impostors_.size()) return nullptr;
+    return impostors_[std::size_t(id)].get();
 }
 
 const LayeredImpostor* ImpostorSet::impostorOf(int objectIndex) const {
     if (objectIndex < 0 || std::size_t(objectIndex) >= scene_->objects().size()) return nullptr;
-    if (scene_->objectVolumes()[std::size_t(objectIndex)].volume) return nullptr;
-    return impostorOfMesh(scene_->objects()[std::size_t(objectIndex)].mesh);
+    return impostorOfId(idOf(objectIndex));
 }
 
 std::string ImpostorSet::reasonOf(int objectIndex) const {
     if (objectIndex < 0 || std::size_t(objectIndex) >= scene_->objects().size()) return "no such object";
     if (scene_->objectVolumes()[std::size_t(objectIndex)].volume) return "a volume medium";
     if (impostorOf(objectIndex)) return {};
-    return meshReasons_[std::size_t(scene_->objects()[std::size_t(objectIndex)].mesh)];
+    return reasons_[std::size_t(idOf(objectIndex))];
 }
 
 glm::vec3 ImpostorSet::eyeInObject(int objectIndex, const glm::vec3& eyeWorld) const {
@@ -96,7 +118,7 @@ const StandInDraw* ImpostorSet::drawFor(int objectIndex, const glm::vec3& eyeWor
     const LayeredImpostor* impostor = impostorOf(objectIndex);
     if (!impostor) return nullptr;
     // Hole-filling slices overlap the nearest view's: a transparent impostor would blend twice.
-    const bool fillHoles = !transparent_[std::size_t(scene_->objects()[std::size_t(objectIndex)].mesh)];
+    const bool fillHoles = !transparent_[std::size_t(idOf(objectIndex))];
     StandInDraw& d = draws_[std::size_t(objectIndex)];
     d = impostor->drawFor(eyeInObject(objectIndex, eyeWorld), fillHoles);
     return &d;
@@ -116,14 +138,14 @@ float ImpostorSet::nearestViewAngle(int objectIndex, const glm::vec3& eyeWorld) 
 
 ImpostorMemory ImpostorSet::bytes() const {
     ImpostorMemory total;
-    for (const auto& i : meshImpostors_)
+    for (const auto& i : impostors_)
         if (i) total += i->bytes();
     return total;
 }
 
-int ImpostorSet::bakedMeshes() const {
+int ImpostorSet::bakedImpostors() const {
     int n = 0;
-    for (const auto& i : meshImpostors_) n += i ? 1 : 0;
+    for (const auto& i : impostors_) n += i ? 1 : 0;
     return n;
 }
 

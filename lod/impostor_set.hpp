@@ -1,7 +1,9 @@
 #pragma once
-// The layered impostors of a scene: one per mesh that some surface object uses (instances
-// share it: the atlas holds normals, the object's material shades them), baked at load with a
-// progress line, and the per-object stand-ins for a camera (FrameOptions::standIns).
+// The layered impostors of a scene: one per mesh that some surface object uses, shared by its
+// instances (the atlas holds normals, the object's material shades them), or, for a material
+// whose base colour texture, COLOR_0 or MASK the bake keeps (kSceneBakedDetail), one per mesh
+// and material; baked at load with a progress line, and the per-object stand-ins for a camera
+// (FrameOptions::standIns).
 #include "lod/layered_impostor.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/stand_in.hpp"
@@ -13,25 +15,37 @@
 
 namespace strata::lod {
 
+// Which impostor each object draws, as a dense id: objects share one where they share the mesh
+// and what the bake keeps of the material.
+struct ImpostorKeys {
+    std::vector<int> ofObject;    // per object; -1: none (a volume medium)
+    std::vector<int> mesh;        // per impostor
+    std::vector<int> bakeObject;  // per impostor: the object whose material its bake keeps, -1: normals only
+    int count() const { return int(mesh.size()); }
+};
+ImpostorKeys impostorKeys(const GpuScene& scene);
+
 class ImpostorSet {
 public:
     // Bakes now (current GL context). Meshes used only by volume media (GpuScene::objectVolumes())
-    // or by no object are not baked. A mesh any transparent object uses gets `transparentPeels`
-    // peels (overlap 0); others `settings.peels`. `progress` (null: silent) gets
-    // "baking impostors: i/n meshes" lines and a total.
-    // With bakeNow false nothing is baked until bakeMeshes asks (LOD bakes only the meshes its
+    // or by no object are not baked. An impostor any transparent object draws gets
+    // `transparentPeels` peels (overlap 0); others `settings.peels`. `progress` (null: silent)
+    // gets "baking impostors: i/n" lines and a total.
+    // With bakeNow false nothing is baked until bake asks (LOD bakes only the impostors its
     // selection could use).
     ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels = 2,
                 std::ostream* progress = nullptr, bool bakeNow = true);
 
-    // Bakes the meshes flagged (indexed like Scene::meshes) that objects can use and that were
-    // not tried before; returns how many it tried. A progress line per mesh and a total.
-    int bakeMeshes(const std::vector<bool>& meshes);
-    bool tried(int mesh) const { return tried_[std::size_t(mesh)]; }
+    const ImpostorKeys& keys() const { return keys_; }
+    int idOf(int objectIndex) const { return keys_.ofObject[std::size_t(objectIndex)]; }
+    // Bakes the impostors flagged (indexed by id) that objects draw and that were not tried
+    // before; returns how many it tried. A progress line per impostor and a total.
+    int bake(const std::vector<bool>& ids);
+    bool tried(int id) const { return tried_[std::size_t(id)]; }
 
-    // The impostor an object draws, or null (volume medium, or its mesh has none: see reasonOf).
+    // The impostor an object draws, or null (volume medium, or none was baked: see reasonOf).
     const LayeredImpostor* impostorOf(int objectIndex) const;
-    const LayeredImpostor* impostorOfMesh(int mesh) const;
+    const LayeredImpostor* impostorOfId(int id) const;
     // Why an object has no impostor (empty when it has one).
     std::string reasonOf(int objectIndex) const;
 
@@ -48,17 +62,18 @@ public:
     // The view error of an object's impostor (radians), 0 without one.
     float nearestViewAngle(int objectIndex, const glm::vec3& eyeWorld) const;
 
-    ImpostorMemory bytes() const;          // over all baked meshes
-    int bakedMeshes() const;
+    ImpostorMemory bytes() const;          // over all baked impostors
+    int bakedImpostors() const;
     double bakeMs() const { return bakeMs_; }
     const ImpostorSettings& settings() const { return settings_; }
 
 private:
     const GpuScene* scene_;
     ImpostorSettings settings_;
-    std::vector<std::unique_ptr<LayeredImpostor>> meshImpostors_;  // per mesh, null: not baked
-    std::vector<std::string> meshReasons_;
-    std::vector<bool> wanted_, transparent_, tried_;  // per mesh
+    ImpostorKeys keys_;
+    std::vector<std::unique_ptr<LayeredImpostor>> impostors_;  // per id, null: not baked
+    std::vector<std::string> reasons_;                         // per id
+    std::vector<bool> transparent_, tried_;                    // per id
     int transparentPeels_ = 2;
     std::ostream* progress_ = nullptr;
     std::vector<StandInDraw> draws_;                                // per object

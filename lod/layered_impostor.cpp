@@ -60,11 +60,12 @@ std::string ImpostorSettings::validate() const {
     return {};
 }
 
-LayeredImpostor::LayeredImpostor(const GpuMesh& mesh, const Bounds& bounds, const ImpostorSettings& settings)
-    : LayeredImpostor(mesh.vertexArray.id(), mesh.indexCount, bounds, settings) {}
+LayeredImpostor::LayeredImpostor(const GpuMesh& mesh, const Bounds& bounds, const ImpostorSettings& settings,
+                                 BakeMaterial material)
+    : LayeredImpostor(mesh.vertexArray.id(), mesh.indexCount, bounds, settings, material) {}
 
 LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds,
-                                 const ImpostorSettings& settings)
+                                 const ImpostorSettings& settings, BakeMaterial material)
     : settings_(settings) {
     if (settings_.peels > 1) settings_.overlap = 0.0f;
     reason_ = settings_.validate();
@@ -80,7 +81,7 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     directions_ = viewDirections(settings_.views);
     for (const auto& d : directions_) frames_.push_back(makeImpostorFrame(centre_, radius_, d, settings_.apexFactor));
     gl::SavedDrawState saved;
-    bakeImages(vertexArray, indexCount);
+    bakeImages(vertexArray, indexCount, material);
     // One read-back: the rectangles need every texel's depth code.
     const int layers = settings_.views * settings_.peels;
     const std::size_t size = std::size_t(settings_.resolution) * std::size_t(settings_.resolution) * 4u * std::size_t(layers);
@@ -94,20 +95,49 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount) {
+void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const BakeMaterial& material) {
     const int res = settings_.resolution, peels = settings_.peels;
-    atlas_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(atlas_.id(), 1, GL_RGBA8, res, res, settings_.views * peels);
-    glTextureParameteri(atlas_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(atlas_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTextureParameteri(atlas_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(atlas_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    auto arrayTexture = [&](GLenum format) {
+        gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(t.id(), 1, format, res, res, settings_.views * peels);
+        glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        return t;
+    };
+    atlas_ = arrayTexture(GL_RGBA8);
+    const bool withAlbedo = material.scene != nullptr;
+    // sRGB-encoded: 8 bits where the eye sees steps, as the textures it comes from.
+    if (withAlbedo) albedo_ = arrayTexture(GL_SRGB8_ALPHA8);
     // Two depth targets: the peel being drawn and the previous one it peels beneath.
     gl::Texture depth[2] = {depthTexture(res, GL_DEPTH_COMPONENT32F), depthTexture(res, GL_DEPTH_COMPONENT32F)};
     gl::Framebuffer fbo = gl::Framebuffer::create();
-    gl::Program first = gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"});
-    gl::Program peel = peels > 1 ? gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, {{"PEEL", ""}})
+    gl::Defines defines;
+    if (withAlbedo) defines["BAKE_ALBEDO"] = "";
+    gl::Program first = gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, defines);
+    gl::Defines peelDefines = defines;
+    peelDefines["PEEL"] = "";
+    gl::Program peel = peels > 1 ? gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, peelDefines)
                                  : gl::Program();
+    if (withAlbedo) {
+        const BaseColorDetail d = material.scene->baseColorDetail(material.objectIndex);
+        for (const gl::Program* program : {&first, &peel}) {
+            const GLuint p = program->id();
+            if (!p) continue;
+            glProgramUniform1i(p, glGetUniformLocation(p, "uTextured"), d.textured);
+            glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uBaseColorTransform"), 1, GL_FALSE,
+                                      glm::value_ptr(d.transform));
+            glProgramUniform1i(p, glGetUniformLocation(p, "uBaseColorTexCoord"), d.texCoord);
+            glProgramUniform1i(p, glGetUniformLocation(p, "uVertexColor"), d.vertexColor);
+            glProgramUniform1f(p, glGetUniformLocation(p, "uFactorAlpha"), d.factorAlpha);
+            glProgramUniform1f(p, glGetUniformLocation(p, "uAlphaCutoff"), d.alphaCutoff);
+        }
+        if (d.textured) material.scene->bindMaterialTextures(material.objectIndex);
+        const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glNamedFramebufferDrawBuffers(fbo.id(), 2, both);
+        glEnable(GL_FRAMEBUFFER_SRGB);  // linear out, sRGB stored (the normal atlas is not sRGB)
+    }
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
@@ -136,6 +166,10 @@ void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount) {
             glProgramUniform1f(program, glGetUniformLocation(program, "uSlabNear"), f.slabNear());
             glProgramUniform1f(program, glGetUniformLocation(program, "uSlabDepth"), 2.0f * f.radius);
             glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, atlas_.id(), 0, view * peels + p);
+            if (withAlbedo) {
+                glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, albedo_.id(), 0, view * peels + p);
+                glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, empty);
+            }
             glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, depth[p % 2].id(), 0);
             if (p > 0) glBindTextureUnit(gpu::BIND_BAKE_PREVIOUS_DEPTH, depth[(p + 1) % 2].id());
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, empty);
@@ -144,6 +178,7 @@ void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount) {
         }
     }
     glBindTextureUnit(gpu::BIND_BAKE_PREVIOUS_DEPTH, 0);
+    glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
 void LayeredImpostor::buildRectangles(const std::vector<std::uint8_t>& texels) {
@@ -319,6 +354,7 @@ StandInDraw LayeredImpostor::drawFor(const glm::vec3& eye, bool fillHoles) const
     if (!valid()) return d;
     d.vertexArray = quadArray_.id();
     d.atlas = atlas_.id();
+    d.albedo = albedo_.id();
     d.slices = settings_.slices;
     d.overlap = settings_.overlap;
     auto add = [&](GLint first, GLsizei count) {
@@ -342,7 +378,8 @@ StandInDraw LayeredImpostor::drawFor(const glm::vec3& eye, bool fillHoles) const
 
 ImpostorMemory LayeredImpostor::bytes() const {
     if (!valid()) return {};
-    return {impostorImageBytes(settings_.resolution, settings_.views, settings_.peels),
+    // The albedo atlas, where baked, is a second image per (view, peel) of the same size.
+    return {impostorImageBytes(settings_.resolution, settings_.views, settings_.peels) * (albedo_ ? 2u : 1u),
             impostorRectangleBytes(settings_.views, settings_.peels, settings_.slices), vertexBytes_};
 }
 

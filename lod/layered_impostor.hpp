@@ -7,6 +7,11 @@
 // ranges to draw (nearest view in full, the hole-closing slices of the two other nearest views)
 // as a StandInDraw that the scene passes draw in the object's place (lod-contract.md).
 //
+// With a BakeMaterial the bake also keeps the material's base colour texture x COLOR_0 (colour
+// and alpha) per texel in a second atlas (sRGB RGBA8, same layers), and a MASK material's texels
+// below the cutoff are no surface: a textured, vertex-coloured or cut-out object looks the same
+// as its impostor (its factors still shade it per draw).
+//
 // Atlas convention (lod-contract.md): layer = view * peels + peel; rgb = object-space normal *
 // 0.5 + 0.5; a = depth code / 255, code 0 empty, else t = (code - 0.5) / 255 over the slab
 // (t = 0 nearest the apex). The surface kept is the one FARTHEST from the apex (nearest a viewer
@@ -42,6 +47,14 @@ struct ImpostorSettings {
     std::string validate() const;
 };
 
+// The object whose material a bake keeps (GpuScene::baseColorDetail; its textures bound by
+// GpuScene::bindMaterialTextures). Every object that draws the impostor must share what the
+// bake keeps of it (lod/impostor_set.hpp keys impostors so).
+struct BakeMaterial {
+    const GpuScene* scene = nullptr;  // null: normals and depths only
+    int objectIndex = -1;
+};
+
 // Inclusive texel extents of the texels one slice accepts; x0 > x1 when it accepts none.
 struct SliceRect {
     std::uint8_t x0 = 1, y0 = 1, x1 = 0, y1 = 0;
@@ -55,8 +68,10 @@ public:
     // normal, indexed triangles) inside `bounds` (object space). A mesh with no triangles, empty
     // or zero-radius bounds, or invalid settings gives no impostor: valid() false, reason() says
     // why. Nothing throws for those; a GL failure is reported by the caller's checkGl as usual.
-    LayeredImpostor(const GpuMesh& mesh, const Bounds& bounds, const ImpostorSettings& settings);
-    LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds, const ImpostorSettings& settings);
+    LayeredImpostor(const GpuMesh& mesh, const Bounds& bounds, const ImpostorSettings& settings,
+                    BakeMaterial material = {});
+    LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds, const ImpostorSettings& settings,
+                    BakeMaterial material = {});
     LayeredImpostor(LayeredImpostor&&) noexcept = default;
     LayeredImpostor& operator=(LayeredImpostor&&) noexcept = default;
 
@@ -92,6 +107,7 @@ public:
     const std::vector<std::pair<int, int>>& adjacency() const { return adjacency_; }
     const std::vector<int>& holeSlices(int view, int adjacentView) const;
     GLuint atlas() const { return atlas_.id(); }
+    GLuint albedo() const { return albedo_.id(); }  // 0 without a BakeMaterial
     GLuint vertexArray() const { return quadArray_.id(); }
 
 private:
@@ -99,7 +115,7 @@ private:
         return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) * std::size_t(settings_.slices) +
                std::size_t(slice);
     }
-    void bakeImages(GLuint meshArray, GLsizei indexCount);
+    void bakeImages(GLuint meshArray, GLsizei indexCount, const BakeMaterial& material);
     void buildRectangles(const std::vector<std::uint8_t>& texels);
     void buildQuads();
     void findHoleSlices(GLuint meshArray, GLsizei indexCount);
@@ -110,7 +126,7 @@ private:
     float radius_ = 0.0f;
     std::vector<glm::vec3> directions_;
     std::vector<ImpostorFrame> frames_;
-    gl::Texture atlas_;
+    gl::Texture atlas_, albedo_;
     gl::Buffer quadBuffer_;
     gl::VertexArray quadArray_;
     std::vector<SliceRect> rects_;          // per rangeIndex

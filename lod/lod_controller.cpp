@@ -30,6 +30,7 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
     const std::string invalid = options_.impostor.validate();
     if (!invalid.empty()) throw std::invalid_argument("impostor settings: " + invalid);
     const auto& objects = scene_.objects();
+    keys_ = impostorKeys(scene_);
     inputs_.resize(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];
@@ -37,9 +38,9 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
         in.center = o.worldBounds.center();
         in.radius = o.worldBounds.radius();
         in.triangles = scene_.scene().meshes[std::size_t(o.mesh)].triangleCount();
-        in.impostor.id = o.mesh;  // instances of one mesh share its impostor
+        in.impostor.id = keys_.ofObject[i];  // instances of one mesh (and baked material) share it
         in.transparent = scene_.scene().materials[std::size_t(o.material)].isTransparent();
-        in.materialNotBaked = (scene_.materialFeatures(int(i)) & kSceneSurfaceDetail) != 0;
+        in.materialNotBaked = (scene_.materialFeatures(int(i)) & kSceneSurfaceDetail & ~kSceneBakedDetail) != 0;
     }
 }
 
@@ -52,11 +53,11 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
     if (!impostors_)
         impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_, false);
     const auto& objects = scene_.objects();
-    std::vector<bool> wanted(scene_.scene().meshes.size(), false);
+    std::vector<bool> wanted(std::size_t(keys_.count()), false);
     bool any = false;
     for (std::size_t i = 0; i < objects.size(); ++i) {
-        const int mesh = objects[i].mesh;
-        if (impostors_->tried(mesh) || wanted[std::size_t(mesh)]) continue;
+        const int id = keys_.ofObject[i];
+        if (id < 0 || impostors_->tried(id) || wanted[std::size_t(id)]) continue;
         LodObjectInput guess = inputs_[i];
         guess.hasImpostor = true;
         guess.impostor.slices = options_.impostor.slices;
@@ -64,10 +65,10 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         guess.impostor.viewAngleRadians = 0.0;
         guess.impostor.drawnFraction = 0.785;
         if (selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx}).impostor)
-            wanted[std::size_t(mesh)] = any = true;
+            wanted[std::size_t(id)] = any = true;
     }
-    if (!any || impostors_->bakeMeshes(wanted) == 0) return;
-    viewFractions_.resize(scene_.scene().meshes.size());
+    if (!any || impostors_->bake(wanted) == 0) return;
+    viewFractions_.resize(std::size_t(keys_.count()));
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
         inputs_[i].hasImpostor = impostor != nullptr;
@@ -76,7 +77,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         inputs_[i].impostor.resolution = impostor->settings().resolution;
         inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
-        auto& fractions = viewFractions_[std::size_t(scene_.objects()[i].mesh)];
+        auto& fractions = viewFractions_[std::size_t(keys_.ofObject[i])];
         if (fractions.empty()) fractions = drawnFractions(*impostor);
     }
 }
@@ -106,7 +107,7 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
         const glm::vec3 eye = impostors_->eyeInObject(int(i), camera.position);
         const int nearest = impostor.nearestView(eye);
         inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(eye);
-        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(scene_.objects()[i].mesh)][std::size_t(nearest)];
+        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofObject[i])][std::size_t(nearest)];
     }
     selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     std::vector<bool> use(inputs_.size());

@@ -58,7 +58,8 @@ private:
     LodSelection selection_;
     StandIns standIns_;
     glm::vec3 lastEye_{0.0f};
-    std::vector<std::vector<double>> viewFractions_;  // per mesh, per view (drawnFractions)
+    ImpostorKeys keys_;                               // which impostor each object draws
+    std::vector<std::vector<double>> viewFractions_;  // per impostor id, per view (drawnFractions)
 };
 
 }  // namespace strata::lod

@@ -40,7 +40,7 @@ const char* to_string(LodReason reason) {
     case LodReason::GeometryCheaper: return "geometry cheaper";
     case LodReason::ImpostorCheaper: return "impostor cheaper";
     case LodReason::TransparentAuto: return "transparent (auto)";
-    case LodReason::MaterialAuto: return "material not baked (auto)";
+    case LodReason::MaterialAuto: return "a texture the bake does not keep (auto)";
     }
     return "?";
 }
@@ -135,8 +135,8 @@ std::string explain(const LodDecision& d, const LodObjectInput& object, const Lo
     case LodReason::GeometryForced: return "geometry: forced (--lod geometry)";
     case LodReason::TransparentAuto: return "geometry: transparent, impostors only with --lod impostors";
     case LodReason::MaterialAuto:
-        return "geometry: texture, vertex colours or MASK (the impostor bakes normals only), impostors only with "
-               "--lod impostors";
+        return "geometry: a metallic-roughness, normal, occlusion or emissive texture (the impostor bakes the base "
+               "colour texture, COLOR_0 and MASK only), impostors only with --lod impostors";
     case LodReason::NoImpostor: return "geometry: no impostor baked";
     case LodReason::ImpostorsForced:
         std::snprintf(line, sizeof line, "impostor: forced (--lod impostors), error %.2f px", d.errorPx);

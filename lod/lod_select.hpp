@@ -45,7 +45,7 @@ inline constexpr double kDefaultMaxErrorPx = 4.0;
 
 // What selection needs to know of an object's impostor this frame.
 struct ImpostorSummary {
-    int id = -1;                   // which impostor (instances of one mesh share one); -1: its own
+    int id = -1;                   // which impostor (lod/impostor_set.hpp's keys: instances share one); -1: its own
     int slices = 1;                // L
     int resolution = 64;           // texels a side of each view's image
     double viewAngleRadians = 0.0; // from the eye direction to the nearest baked view
@@ -64,8 +64,9 @@ struct LodObjectInput {
     // surface to its slice plane (within half a slice): orders within a slice, and so the
     // blend, can change where the techniques' exact answers would not.
     bool transparent = false;
-    // The impostor bake stores normals only: a textured, vertex-coloured or MASK material would
-    // lose its texture, colours or cut-out. Auto leaves such objects geometry too.
+    // The impostor bake keeps normals, depths and the base colour texture, COLOR_0 and MASK
+    // (kSceneBakedDetail); a material with other textures (metallic-roughness, normal,
+    // occlusion, emissive) would lose them. Auto leaves such objects geometry.
     bool materialNotBaked = false;
     ImpostorSummary impostor;
 };
@@ -93,7 +94,7 @@ enum class LodReason {
     GeometryCheaper,  // geometry: predicted no slower than the impostor
     ImpostorCheaper,  // impostor: predicted faster, error within the bound
     TransparentAuto,  // geometry: transparent, and the mode is auto (LodObjectInput::transparent)
-    MaterialAuto,     // geometry: textured, vertex colours or MASK (kSceneSurfaceDetail), and the mode is auto
+    MaterialAuto,     // geometry: a texture the bake does not keep (kSceneSurfaceDetail less kSceneBakedDetail: metallic-roughness, normal, occlusion, emissive), and the mode is auto
 };
 const char* to_string(LodReason reason);
 

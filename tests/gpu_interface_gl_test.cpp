@@ -526,8 +526,10 @@ TEST_CASE("every binding point the host binds is the one the linked program repo
         gl::Program program =
             gl::buildProgram(c.stages, c.defines, sceneProgram ? sceneFragmentWrap() : gl::StageWrap{});
         auto expected = c.expected;
-        if (sceneProgram && c.defines.count("STRATA_IMPOSTOR"))
+        if (sceneProgram && c.defines.count("STRATA_IMPOSTOR")) {
             expected.emplace("uImpostorAtlas", tex(gpu::BIND_IMPOSTOR_ATLAS));
+            expected.emplace("uImpostorAlbedoAtlas", tex(gpu::BIND_IMPOSTOR_ALBEDO));
+        }
         const auto reported = reportedBindings(program.id());
         for (const auto& [name, want] : expected) {
             INFO(name, ": the host binds ", unitName(want.unit), " ", want.point);

@@ -49,7 +49,7 @@ TEST_CASE("lod controller: forced impostors stand in for the four instances, not
     CHECK(lod.selection().impostorObjects == 4);
     CHECK(lod.selection().impostorsUsed == 1);  // one mesh, one impostor
     REQUIRE(lod.impostors());
-    CHECK(lod.selection().impostorBytes == lod.impostors()->impostorOfMesh(fx.gpu->objects()[1].mesh)->bytes().total());
+    CHECK(lod.selection().impostorBytes == lod.impostors()->impostorOf(1)->bytes().total());
     // The ground: the eye is within two of its radii, so geometry whatever the mode.
     int ground = -1;
     for (int i = 0; i < 5; ++i)

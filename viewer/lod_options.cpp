@@ -51,7 +51,7 @@ nlohmann::json lodReport(const lod::LodController& controller) {
     };
     if (const lod::ImpostorSet* set = controller.impostors()) {
         const lod::ImpostorMemory m = set->bytes();
-        j["baked_meshes"] = set->bakedMeshes();
+        j["baked_impostors"] = set->bakedImpostors();  // one per mesh, or per mesh and material where the bake keeps its texture
         j["bake_ms"] = set->bakeMs();
         j["image_bytes"] = m.images;
         j["rectangle_bytes"] = m.rectangles;
@@ -74,8 +74,8 @@ std::string lodSummary(const lod::LodController& controller) {
     int n = std::snprintf(line, sizeof line, "lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors",
                           lod::to_string(controller.options().mode), s.impostorObjects, s.objects.size(),
                           s.impostorsUsed, double(s.impostorBytes) / 1e6);
-    if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedMeshes() > 0)
-        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d meshes baked in %.0f ms", set->bakedMeshes(),
+    if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
+        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked in %.0f ms", set->bakedImpostors(),
                            set->bakeMs());
     if (const auto& c = controller.calibration())
         std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model calibrated in %.0f ms", c->wallMs);

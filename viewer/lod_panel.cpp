@@ -28,8 +28,8 @@ void drawLodSection(lod::LodController& lod) {
         ImGui::Text("predicted %.2f ms, all geometry %.2f ms", s.predictedMs, s.geometryOnlyMs);
     if (const lod::ImpostorSet* set = lod.impostors()) {
         const lod::ImpostorMemory m = set->bytes();
-        ImGui::Text("%d meshes baked in %.0f ms: images %.2f MB, rectangles %.1f kB, vertices %.2f MB",
-                    set->bakedMeshes(), set->bakeMs(), double(m.images) / 1e6, double(m.rectangles) / 1e3,
+        ImGui::Text("%d impostors baked in %.0f ms: images %.2f MB, rectangles %.1f kB, vertices %.2f MB",
+                    set->bakedImpostors(), set->bakeMs(), double(m.images) / 1e6, double(m.rectangles) / 1e3,
                     double(m.vertexBuffer) / 1e6);
         const lod::ImpostorSettings& is = set->settings();
         ImGui::Text("%d views, %d px, %d slices, overlap %.2f", is.views, is.resolution, is.slices, is.overlap);

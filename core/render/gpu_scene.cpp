@@ -305,6 +305,23 @@ void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
     }
 }
 
+BaseColorDetail GpuScene::baseColorDetail(int objectIndex) const {
+    const Object& o = objects_[std::size_t(objectIndex)];
+    const Material& m = scene_.materials[std::size_t(o.material)];
+    const unsigned features = features_[std::size_t(objectIndex)];
+    BaseColorDetail d;
+    d.textured = (features & kSceneBaseColorTexture) != 0;
+    if (d.textured) {
+        const TextureRef& t = materialTexture(m, kSlotBaseColor);
+        d.transform = t.transform.matrix();
+        d.texCoord = t.texCoord;
+    }
+    d.vertexColor = (features & kSceneVertexColor) != 0 && meshes_[std::size_t(o.mesh)].colors;
+    d.factorAlpha = m.alpha;
+    d.alphaCutoff = m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f;
+    return d;
+}
+
 void GpuScene::bindMaterialTextures(int objectIndex) const {
     const Object& o = objects_[std::size_t(objectIndex)];
     const Material& m = scene_.materials[std::size_t(o.material)];
@@ -345,7 +362,9 @@ void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandIn
     setObjectUniforms(variant, objectIndex);
     glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
     glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);
+    glProgramUniform1i(variant.id(), variant.impostorAlbedo, standIn.albedo != 0);
     glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, standIn.atlas);
+    if (standIn.albedo) glBindTextureUnit(gpu::BIND_IMPOSTOR_ALBEDO, standIn.albedo);
     glUseProgram(variant.id());
     glBindVertexArray(standIn.vertexArray);
     glMultiDrawArrays(GL_TRIANGLES, standIn.first.data(), standIn.count.data(), GLsizei(standIn.first.size()));

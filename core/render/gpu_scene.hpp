@@ -40,6 +40,19 @@ enum MaterialSlot : int {
 const TextureRef& materialTexture(const Material& material, int slot);
 
 
+// What a pass that reads an object's base colour outside GpuScene::draw needs (a compute pass,
+// the impostor bake): which of the base colour texture and COLOR_0 apply, with the texture's
+// KHR_texture_transform and TEXCOORD set, and the factor alpha and MASK cutoff (0: not MASK).
+// GpuScene::bindMaterialTextures binds the texture.
+struct BaseColorDetail {
+    bool textured = false;
+    glm::mat3 transform{1.0f};
+    int texCoord = 0;
+    bool vertexColor = false;
+    float factorAlpha = 1.0f;
+    float alphaCutoff = 0.0f;
+};
+
 // Uploads one mesh in the layout every scene program reads (attributes 0 position, 1 normal;
 // ATTRIB_TEXCOORD0/1, ATTRIB_COLOR and ATTRIB_TANGENT of common/bindings.h where the mesh has them, in a buffer
 // of their own so a mesh without them keeps its 24-byte vertices). Throws when an attribute
@@ -88,6 +101,7 @@ public:
     // Binds the textures object `objectIndex` draws with, with their samplers, at their units
     // (common/bindings.h), for a pass that reads them outside draw() (a compute pass).
     void bindMaterialTextures(int objectIndex) const;
+    BaseColorDetail baseColorDetail(int objectIndex) const;
 
 private:
     void uploadTextures();

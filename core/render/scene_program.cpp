@@ -26,6 +26,7 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
     p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
     p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
+    p.impostorAlbedo = glGetUniformLocation(id, "uImpostorAlbedo");
     p.metallic = glGetUniformLocation(id, "uMetallic");
     p.roughness = glGetUniformLocation(id, "uRoughness");
     p.emissive = glGetUniformLocation(id, "uEmissive");

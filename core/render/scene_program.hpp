@@ -35,11 +35,15 @@ enum SceneFeature : unsigned {
     kSceneFeatureCombinations = 2048u,     // one past every bit set
 };
 
-// What a layered impostor does not bake (it keeps normals and depths only): a material's
-// textures, vertex colours and MASK cut-out. Unlit and the light loop apply to stand-ins too.
+// A material's surface detail: its textures, vertex colours and MASK cut-out. Unlit and the
+// light loop are not (they apply to stand-ins too).
 inline constexpr unsigned kSceneSurfaceDetail = kSceneBaseColorTexture | kSceneVertexColor | kSceneAlphaMask |
                                                 kSceneMetallicRoughnessTexture | kSceneNormalTexture |
                                                 kSceneOcclusionTexture | kSceneEmissiveTexture;
+// What a layered impostor bakes of it besides normals and depths (lod/layered_impostor.hpp's
+// BakeMaterial): the base colour texture, COLOR_0 and the MASK cut. The rest (metallic-roughness,
+// normal, occlusion and emissive textures) it does not, and --lod auto keeps such objects geometry.
+inline constexpr unsigned kSceneBakedDetail = kSceneBaseColorTexture | kSceneVertexColor | kSceneAlphaMask;
 
 // What a stand-in keeps of its object's draw: the factors and lights it shades with.
 inline constexpr unsigned kSceneStandInKeeps = kSceneUnlit | kScenePunctualLights | kSceneTransmission;
@@ -54,7 +58,7 @@ struct SceneProgram {
     GLint viewProj = -1, model = -1, normalMatrix = -1, baseColor = -1, alpha = -1, objectId = -1,
           lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
           volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
-          impostorSlices = -1, impostorOverlap = -1,  // common/scene_main.glsl (the variant's)
+          impostorSlices = -1, impostorOverlap = -1, impostorAlbedo = -1,  // common/scene_main.glsl (the variant's)
           metallic = -1, roughness = -1, emissive = -1, eye = -1, lightCount = -1,
           normalScale = -1, occlusionStrength = -1,  // common/material.glsl (the variant's)
           transmission = -1, ior = -1, volumeFilter = -1, alphaBlend = -1;

@@ -20,6 +20,10 @@ struct StandInDraw {
     // GL_TEXTURE_2D_ARRAY, RGBA8: rgb the object-space normal * 0.5 + 0.5, a the depth code
     // along the view's slice axis (0 empty; see shaders/common/scene_main.glsl).
     GLuint atlas = 0;
+    // GL_TEXTURE_2D_ARRAY, SRGB8_ALPHA8, the atlas's texels: what the material's base colour
+    // texture and COLOR_0 make of the surface there, colour and alpha; 0 where the material has
+    // neither (its factors shade the stand-in alone).
+    GLuint albedo = 0;
     int slices = 1;          // L: every stack's number of depth slices (1..256)
     float overlap = 0.0f;    // slice widths each slice's interval reaches past its own, each side
     // The vertex ranges (glMultiDrawArrays, GL_TRIANGLES) drawn this frame.

@@ -13,9 +13,12 @@ GPU_CONST uint BIND_OPAQUE_COLOR = 0u;    // texture unit
 GPU_CONST uint BIND_OPAQUE_DEPTH = 1u;    // texture unit
 GPU_CONST uint BIND_RESOLVE_OUTPUT = 3u;  // image unit: compute resolves write the output colour
 GPU_CONST uint BIND_SOURCE = 0u;          // texture unit: the image a full-screen pass warps or presents
-// Texture unit of a layered impostor's atlas (render/stand_in.hpp, common/scene_main.glsl); above
-// every technique's units (dual-2p reaches 19) so a stand-in draws inside any pass.
+// Texture units of a layered impostor's atlas and its baked albedo (render/stand_in.hpp,
+// common/scene_main.glsl); apart from every technique's units (dual-2p's scalar build reaches
+// 19, the coplanarity variants' RGB builds use 26 .. 29 and 33 .. 36) so a stand-in draws
+// inside any pass.
 GPU_CONST uint BIND_IMPOSTOR_ATLAS = 20u;
+GPU_CONST uint BIND_IMPOSTOR_ALBEDO = 30u;
 // Texture units of a material's textures (common/material.glsl), above them too.
 GPU_CONST uint BIND_BASE_COLOR_TEXTURE = 21u;
 GPU_CONST uint BIND_METALLIC_ROUGHNESS_TEXTURE = 22u;

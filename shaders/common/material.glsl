@@ -87,6 +87,9 @@ vec4 materialBaseColor() {
 #ifdef STRATA_VERTEX_COLOR
     vertexColor = vMaterial.color;
 #endif
+#ifdef STRATA_IMPOSTOR
+    texel = strataImpostorAlbedo;  // a stand-in: the texture x COLOR_0 its bake kept
+#endif
     return combineBaseColor(vec4(uBaseColor, uAlpha), texel, vertexColor);
 }
 

@@ -19,6 +19,9 @@ uniform mat3 uNormalMatrix;
 // RGBA8: rgb the object-space normal * 0.5 + 0.5, a the depth code (0 empty, 1..255 the depth
 // along the view's slice axis, t = (code - 0.5) / 255 over the slab the slices cover).
 layout(binding = BIND_IMPOSTOR_ATLAS) uniform sampler2DArray uImpostorAtlas;
+// The same texels' baked albedo (render/stand_in.hpp), where uImpostorAlbedo.
+layout(binding = BIND_IMPOSTOR_ALBEDO) uniform sampler2DArray uImpostorAlbedoAtlas;
+uniform bool uImpostorAlbedo;
 
 in ImpostorVarying {
     vec2 uv;
@@ -33,6 +36,7 @@ void main() {
     vec4 stored = texelFetch(uImpostorAtlas, ivec3(texel, vImpostor.layer.x), 0);
     if (!impostorAccepts(stored.a, vImpostor.layer.y, uImpostorSlices, uImpostorOverlap)) discard;
     strataImpostorNormal = normalize(uNormalMatrix * (stored.rgb * 2.0 - 1.0));
+    if (uImpostorAlbedo) strataImpostorAlbedo = texelFetch(uImpostorAlbedoAtlas, ivec3(texel, vImpostor.layer.x), 0);
 #endif
 #ifdef STRATA_ALPHA_MASK
     // glTF MASK: the fragment exists where factor x texture x COLOR_0 alpha reaches the cutoff.

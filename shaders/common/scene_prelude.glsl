@@ -34,3 +34,6 @@ const bool kStandIn = false;
 
 // The impostor texel's normal, in world space: what surfaceNormal() returns for a stand-in.
 vec3 strataImpostorNormal;
+// Its baked albedo (the base colour texture x COLOR_0 there), which common/material.glsl's
+// materialBaseColor() takes in place of the texture for a stand-in; 1 where none was baked.
+vec4 strataImpostorAlbedo = vec4(1.0);

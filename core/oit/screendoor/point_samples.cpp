@@ -30,27 +30,21 @@ float keepProbability(const Material& m) {
 }
 // The base colour texture, COLOR_0 and MASK of object `index` for point_samples.comp.glsl.
 void setDetailUniforms(GLuint p, const GpuScene& scene, int index) {
-    const Object& o = scene.objects()[std::size_t(index)];
-    const Material& m = scene.scene().materials[std::size_t(o.material)];
     const GpuMesh& mesh = scene.meshOf(index);
-    const unsigned features = scene.materialFeatures(index);
-    const bool textured = (features & kSceneBaseColorTexture) != 0;
-    const bool colored = (features & kSceneVertexColor) != 0 && mesh.colors;
-    GLint texCoordOffset = -1;
-    if (textured) {
-        const TextureRef& t = materialTexture(m, kSlotBaseColor);
-        texCoordOffset = GLint(mesh.texCoordOffset[t.texCoord] / sizeof(float));
-        const glm::mat3 transform = t.transform.matrix();
+    const BaseColorDetail d = scene.baseColorDetail(index);
+    if (d.textured) {
         glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uBaseColorTransform"), 1, GL_FALSE,
-                                  glm::value_ptr(transform));
+                                  glm::value_ptr(d.transform));
         scene.bindMaterialTextures(index);
     }
-    glProgramUniform1i(p, glGetUniformLocation(p, "uTextured"), textured);
-    glProgramUniform1i(p, glGetUniformLocation(p, "uTexCoordOffset"), texCoordOffset);
-    glProgramUniform1i(p, glGetUniformLocation(p, "uColorOffset"), colored ? GLint(mesh.colorOffset / sizeof(float)) : -1);
-    glProgramUniform1f(p, glGetUniformLocation(p, "uFactorAlpha"), m.alpha);
-    glProgramUniform1f(p, glGetUniformLocation(p, "uAlphaCutoff"), m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f);
-    if (textured || colored)
+    glProgramUniform1i(p, glGetUniformLocation(p, "uTextured"), d.textured);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uTexCoordOffset"),
+                       d.textured ? GLint(mesh.texCoordOffset[d.texCoord] / sizeof(float)) : -1);
+    glProgramUniform1i(p, glGetUniformLocation(p, "uColorOffset"),
+                       d.vertexColor ? GLint(mesh.colorOffset / sizeof(float)) : -1);
+    glProgramUniform1f(p, glGetUniformLocation(p, "uFactorAlpha"), d.factorAlpha);
+    glProgramUniform1f(p, glGetUniformLocation(p, "uAlphaCutoff"), d.alphaCutoff);
+    if (d.textured || d.vertexColor)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_MESH_ATTRIBUTES, mesh.attributes.id());
 }
 }  // namespace
