@@ -107,11 +107,11 @@ TEST_CASE("scene description: transforms, overrides and merged indices") {
     REQUIRE(s.camera.has_value());
     glm::vec3 forward = s.camera->orientation * glm::vec3(0, 0, -1);
     CHECK(forward.z == doctest::Approx(-1.0f));
-    // default + red (object 0) + red (object 1) + the override
-    REQUIRE(s.materials.size() == 4);
+    // default + red (the model, read once for both objects) + the override
+    REQUIRE(s.materials.size() == 3);
     CHECK(s.materials[1].baseColor == glm::vec3(1, 0, 0));
-    CHECK(s.meshes.size() == 2);
-    CHECK(s.meshes[1].material == 3);  // the second red: after the first and the override
+    CHECK(s.meshes.size() == 1);
+    CHECK(s.meshes[0].material == 1);
     CHECK(s.roots.size() == 2);
 
     auto objects = flatten(s);
@@ -138,6 +138,45 @@ TEST_CASE("scene description: transforms, overrides and merged indices") {
     CHECK(over.emissive == glm::vec3(0.5f, 0.0f, 0.0f));
     CHECK_FALSE(over.unlit);
     CHECK(hasTransparency(s, objects));
+}
+
+TEST_CASE("scene description: a model placed N times is read once, its meshes and textures shared") {
+    // Five objects place one textured model, under three spellings of its path: the scene holds
+    // its mesh, material and image once, and five objects draw that mesh, each with its own
+    // transform (and the one with a material override, that material).
+    GltfBuilder b;
+    int pos = b.positions(kQuadPositions);
+    b.imageDataUri(encodeImage("shared.png", 1, 1, 4, OIIO::TypeDesc::UINT8,
+                               std::vector<std::uint8_t>{200, 100, 50, 255}.data()));
+    b.doc["textures"] = {{{"source", 0}}};
+    int uv = b.accessor(b.view(std::vector<float>{0, 0, 1, 0, 1, 1, 0, 1}), kFloat, 4, "VEC2");
+    b.material({{"name", "textured"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    int idx = b.accessor(b.view(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3}), kUByte, 6, "SCALAR");
+    b.meshNode(json::array({{{"attributes", {{"POSITION", pos}, {"TEXCOORD_0", uv}}}, {"indices", idx}, {"material", 0}}}));
+    const std::filesystem::path model = b.writeGltf("shared-model");
+    const std::string name = model.filename().string();
+    auto path = writeDescription("five-of-one", R"({"objects": [
+        {"model": ")" + name + R"(", "translate": [0, 0, 0]},
+        {"model": ")" + name + R"(", "translate": [2, 0, 0]},
+        {"model": "./)" + name + R"(", "translate": [4, 0, 0], "fit": 3},
+        {"model": ")" + model.string() + R"(", "translate": [6, 0, 0]},
+        {"model": ")" + name + R"(", "translate": [8, 0, 0], "material": {"base_color": [0, 0, 1]}}]})");
+    Scene s = loadSceneDescription(path);
+    CHECK(s.meshes.size() == 1);
+    CHECK(s.images.size() == 1);
+    CHECK(s.materials.size() == 3);  // default, the model's, the override
+    CHECK(s.roots.size() == 5);
+    const std::vector<Object> objects = flatten(s);
+    REQUIRE(objects.size() == 5);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        CAPTURE(i);
+        CHECK(objects[i].mesh == 0);
+        CHECK(objects[i].material == (i == 4 ? 2 : 1));
+        // The unit quad from its corner at each translation; the fitted one centred there.
+        CHECK(objects[i].worldBounds.center().x == doctest::Approx(2.0f * float(i) + (i == 2 ? 0.0f : 0.5f)));
+    }
+    // The fitted one: the quad's largest extent (1) scaled to 3.
+    CHECK(objects[2].worldBounds.max.x - objects[2].worldBounds.min.x == doctest::Approx(3.0f));
 }
 
 TEST_CASE("scene description: vectors near the float limit that can render are accepted") {

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -184,17 +185,17 @@ glm::mat4 objectTransform(const json& o, const std::string& where) {
     return m;
 }
 
-// Centres the model's bounds at the origin and scales its largest extent to `size`.
-glm::mat4 fitTransform(const Scene& model, float size) {
-    Bounds b = worldBounds(model, flatten(model));
+// Centres a model's bounds `b` at the origin and scales its largest extent to `size`.
+glm::mat4 fitTransform(const Bounds& b, float size) {
     glm::vec3 extent = b.max - b.min;
     float largest = std::max(extent.x, std::max(extent.y, extent.z));
     float k = largest > 0.0f ? size / largest : 1.0f;
     return glm::scale(glm::mat4(1.0f), glm::vec3(k)) * glm::translate(glm::mat4(1.0f), -b.center());
 }
 
-// Appends `model` to `scene` under a new root node; returns that node's index.
-int merge(Scene& scene, Scene&& model, Node objectNode) {
+// Appends `model`'s materials, images, lights, meshes and nodes to `scene`; returns the indices
+// of its root nodes there, which every object node placing the model takes as its children.
+std::vector<int> appendModel(Scene& scene, Scene&& model) {
     int materialBase = int(scene.materials.size()) - 1;  // model material 0 (default) maps to ours
     int meshBase = int(scene.meshes.size());
     int nodeBase = int(scene.nodes.size());
@@ -222,9 +223,17 @@ int merge(Scene& scene, Scene&& model, Node objectNode) {
         if (node.light >= 0) node.light += lightBase;
         scene.nodes.push_back(std::move(node));
     }
-    for (int root : model.roots) objectNode.children.push_back(root + nodeBase);
-    return scene.addNode(std::move(objectNode));
+    std::vector<int> roots;
+    for (int root : model.roots) roots.push_back(root + nodeBase);
+    return roots;
 }
+
+// A model file already in the scene: its root nodes (shared by every object that places it:
+// the node graph is a DAG, scene/scene.hpp's flatten walks each path) and its bounds.
+struct PlacedModel {
+    std::vector<int> roots;
+    Bounds bounds;
+};
 
 // "wireframe": true, false, or {"width": metres, "color": [r,g,b], "alpha": a}, all optional.
 std::optional<WireframeStyle> parseWireframe(const json& w) {
@@ -289,6 +298,9 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
     if (!doc.contains("objects")) fail("missing field 'objects'");
     const json& objects = doc["objects"];
     if (!objects.is_array() || objects.empty()) fail("objects: expected a non-empty array");
+    // A file that several objects place is read once: its meshes, materials and textures are
+    // the scene's once, each object a node with its transform and overrides above them.
+    std::map<std::filesystem::path, PlacedModel> models;
 
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const json& o = objects[i];
@@ -315,23 +327,33 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
             if (fit <= 0.0f) fail(where + "fit: must be > 0");
         }
 
-        Scene loaded;
-        GltfLoadReport report;
-        try {
-            loaded = loadGltf(model, report);
-        } catch (const LoadError& e) {
-            fail("object " + std::to_string(i) + ": " + e.what());
+        std::error_code ec;
+        std::filesystem::path key = std::filesystem::weakly_canonical(model, ec);
+        if (ec) key = model.lexically_normal();
+        auto placed = models.find(key);
+        if (placed == models.end()) {
+            Scene loaded;
+            GltfLoadReport report;
+            try {
+                loaded = loadGltf(model, report);
+            } catch (const LoadError& e) {
+                fail("object " + std::to_string(i) + ": " + e.what());
+            }
+            if (warnings)
+                for (const std::string& line : report.warnings)
+                    if (std::find(warnings->begin(), warnings->end(), line) == warnings->end()) warnings->push_back(line);
+            const Bounds bounds = worldBounds(loaded, flatten(loaded));
+            std::vector<int> roots = appendModel(scene, std::move(loaded));
+            placed = models.emplace(key, PlacedModel{std::move(roots), bounds}).first;
         }
-        if (warnings)
-            for (const std::string& line : report.warnings)
-                if (std::find(warnings->begin(), warnings->end(), line) == warnings->end()) warnings->push_back(line);
         if (fit > 0.0f) {
-            node.local = node.local * fitTransform(loaded, fit);
+            node.local = node.local * fitTransform(placed->second.bounds, fit);
             // A tiny model fitted to a huge size, or a model whose bounds overflow, cannot render.
             if (!finite(node.local)) fail(where + "fit: the transform with the model's bounds overflows a float");
         }
         if (override) node.materialOverride = scene.addMaterial(std::move(*override));
-        merge(scene, std::move(loaded), std::move(node));
+        node.children = placed->second.roots;
+        scene.addNode(std::move(node));
     }
     if (doc.contains("wireframe")) {
         if (std::optional<WireframeStyle> style = parseWireframe(doc["wireframe"])) addWireframes(scene, *style);
