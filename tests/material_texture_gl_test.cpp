@@ -18,6 +18,7 @@
 
 #include <doctest/doctest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -191,6 +192,28 @@ TEST_CASE("TEXCOORD_1 is used when the texture names it") {
     for (auto& uv : mesh.texCoords[0]) uv = {0.9f, 0.5f};  // set 0 would give texel b everywhere
     addObject(second, mesh, m);
     checkPair(std::move(second), factorHalves(a, b));
+}
+
+TEST_CASE("a mesh placed by three objects is uploaded once: the scene counts it and its bytes once") {
+    test::glContext();
+    Scene s = framedScene();
+    const std::size_t before = s.meshes.size();
+    Mesh m = quad(-1, 1, 0);  // 4 vertices with TEXCOORD_0, 6 indices
+    const int mesh = s.addMesh(std::move(m));
+    for (int i = 0; i < 3; ++i) {
+        Node n;
+        n.meshes = {mesh};
+        n.local = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -float(i)));
+        s.addNode(std::move(n));
+    }
+    const std::size_t frameTriangles = flatten(framedScene()).size() * 2;  // framedScene's backdrop quad(s)
+    GpuScene scene(std::move(s));
+    CHECK(scene.meshCount() == before + 1);
+    CHECK(scene.triangleCount() == frameTriangles + 3 * 2);
+    CHECK(scene.meshTriangleCount() == frameTriangles + 2);
+    // The shared quad: 4 x 24-byte vertices + 6 x 4-byte indices + 4 x 8-byte coordinates.
+    GpuScene frameOnly(framedScene());
+    CHECK(scene.meshBytes() - frameOnly.meshBytes() == 4 * 24 + 6 * 4 + 4 * 8);
 }
 
 TEST_CASE("a factor-only scene draws with the plain programs: no material variant is built") {

@@ -146,6 +146,9 @@ void drawScene(const PanelState& state) {
     ImGui::Text("objects %zu (opaque %zu, transparent %zu)", scene.objects().size(), scene.opaqueObjects().size(),
                 scene.transparentObjects().size());
     ImGui::Text("triangles %zu", scene.triangleCount());
+    // Instances share their mesh: memory follows the distinct meshes, not the objects.
+    ImGui::Text("distinct meshes %zu: %zu triangles, %.1f MiB on the GPU", scene.meshCount(),
+                scene.meshTriangleCount(), double(scene.meshBytes()) / (1024.0 * 1024.0));
     if (scene.textureBytes() > 0)
         ImGui::Text("textures %zu (%.1f MiB on the GPU)", scene.scene().images.size(),
                     double(scene.textureBytes()) / (1024.0 * 1024.0));

@@ -92,6 +92,9 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     report.triangles = scene.triangleCount();
     report.textureBytes = scene.textureBytes();
     report.objects = scene.objects().size();
+    report.meshes = scene.meshCount();
+    report.meshTriangles = scene.meshTriangleCount();
+    report.meshBytes = scene.meshBytes();
     report.zoom = options.budget ? 0 : options.zoom;
     report.zoomFilter = std::string(deflectFilterName(options.zoomFilter));
     report.budget = options.budget;

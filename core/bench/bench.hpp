@@ -127,9 +127,11 @@ struct BenchReport {
     // under the reference's tie rule (the GPU coplanarity detector, render/coplanarity.hpp).
     double coplanarityProbability = 0.0;
     double coplanarityOnePerLayerRobustness = 1.0;  // layers / fragments: R_h of plain f2b, dual, bun
-    std::size_t triangles = 0;
+    std::size_t triangles = 0;     // drawn, over the objects
     std::size_t textureBytes = 0;  // decoded textures on the GPU, mip levels included
     std::size_t objects = 0;
+    // Distinct meshes (a mesh placed by N objects is one), their triangles and GPU bytes.
+    std::size_t meshes = 0, meshTriangles = 0, meshBytes = 0;
     int zoom = 1;
     std::string zoomFilter = "nearest";
     std::optional<ZoomBudget> budget;

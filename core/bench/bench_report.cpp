@@ -100,6 +100,9 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"triangles", r.triangles},
         {"texture_bytes", r.textureBytes},
         {"objects", r.objects},
+        {"meshes", r.meshes},
+        {"mesh_triangles", r.meshTriangles},
+        {"mesh_bytes", r.meshBytes},
         {"zoom", r.zoom},
         {"zoom_filter", r.zoomFilter},
         {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
@@ -111,7 +114,8 @@ nlohmann::json benchToJson(const BenchReport& r) {
 std::string benchToTable(const BenchReport& r) {
     std::ostringstream out;
     out << "scene " << r.scene << "  " << r.size.x << "x" << r.size.y << "  " << r.frames << " frames  "
-        << r.objects << " objects, " << r.triangles << " triangles\n";
+        << r.objects << " objects, " << r.triangles << " triangles (" << r.meshes << " distinct meshes, "
+        << r.meshTriangles << " triangles, " << fmt("%.1f", double(r.meshBytes) / (1024.0 * 1024.0)) << " MiB)\n";
     out << "device " << r.device.renderer << " (" << r.device.vendor << ", " << r.device.version << ")\n";
     out << "coplanarity probability C_p " << fmt("%.3f", r.coplanarityProbability) << "  R_h one per layer "
         << fmt("%.3f", r.coplanarityOnePerLayerRobustness) << "  reference " << r.reference << "\n";

@@ -153,7 +153,14 @@ GpuMesh uploadMesh(const Mesh& mesh) {
 
 GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(scene_)) {
     meshes_.reserve(scene_.meshes.size());
-    for (const Mesh& mesh : scene_.meshes) meshes_.push_back(uploadMesh(mesh));
+    for (const Mesh& mesh : scene_.meshes) {
+        meshes_.push_back(uploadMesh(mesh));
+        meshTriangles_ += mesh.triangleCount();
+        // As uploadMesh lays them out: 24-byte vertices, 4-byte indices, the material attributes.
+        meshBytes_ += mesh.positions.size() * 24 + mesh.indices.size() * 4 +
+                      mesh.positions.size() * (8 * (mesh.hasTexCoords(0) + mesh.hasTexCoords(1)) +
+                                               16 * (mesh.hasColors() + mesh.hasTangents()));
+    }
     volumes_ = classifyVolumes(scene_, objects_);
     for (std::size_t i = 0; i < objects_.size(); ++i) {
         const ObjectVolume& v = volumes_[i];

@@ -71,7 +71,12 @@ public:
     const Bounds& bounds() const { return bounds_; }
     // The mesh an object draws, for passes that read its buffers directly (vertex pulling).
     const GpuMesh& meshOf(int objectIndex) const { return meshes_[objects_[objectIndex].mesh]; }
-    std::size_t triangleCount() const { return triangles_; }
+    std::size_t triangleCount() const { return triangles_; }  // drawn: over the objects
+    // What the scene holds once however many objects draw it (a mesh placed N times is one):
+    // its meshes, their triangles and their GPU buffers' bytes.
+    std::size_t meshCount() const { return meshes_.size(); }
+    std::size_t meshTriangleCount() const { return meshTriangles_; }
+    std::size_t meshBytes() const { return meshBytes_; }
     // What the volumetric techniques make of each object (indexed like objects()): a medium, or
     // why it is drawn as a surface. Computed once at construction.
     const std::vector<ObjectVolume>& objectVolumes() const { return volumes_; }
@@ -130,6 +135,7 @@ private:
     int lightCount_ = 0;
     Bounds bounds_;
     std::size_t triangles_ = 0;
+    std::size_t meshTriangles_ = 0, meshBytes_ = 0;
 };
 
 }  // namespace strata
