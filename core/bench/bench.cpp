@@ -236,6 +236,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.tiles = std::max(mode.tiles, r.stats.tiles);
             mode.objectDraws += r.stats.objectDraws;
             mode.objectDrawsSkipped += r.stats.objectDrawsSkipped;
+            mode.objectsCulled += r.objectsCulled;
             mode.fragmentsTail += r.stats.fragmentsTail;
             mode.fragmentsDropped += r.stats.fragmentsDropped;
             mode.primitivesBounded += r.stats.primitivesBounded;

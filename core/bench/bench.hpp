@@ -92,6 +92,7 @@ struct BenchMode {
     int tiles = 1;
     std::uint64_t objectDraws = 0;           // summed over frames
     std::uint64_t objectDrawsSkipped = 0;    // summed over frames
+    std::uint64_t objectsCulled = 0;         // outside the view frustum, summed over frames
     std::uint64_t fragmentsTail = 0;         // summed over frames
     std::uint64_t fragmentsDropped = 0;      // summed over frames: counted but not stored
     std::uint64_t primitivesBounded = 0;     // summed over frames: sampled coarser than asked

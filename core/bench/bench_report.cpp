@@ -50,7 +50,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"fragments_total", m.fragmentsTotal}, {"fragments_captured", m.fragmentsCaptured},
             {"robustness_ratio", finite(m.robustnessRatio)}, {"overflowed", m.overflowed},
             {"regrows", m.regrows}, {"tiles", m.tiles}, {"object_draws", m.objectDraws},
-            {"object_draws_skipped", m.objectDrawsSkipped}, {"fragments_tail", m.fragmentsTail},
+            {"object_draws_skipped", m.objectDrawsSkipped}, {"objects_culled", m.objectsCulled}, {"fragments_tail", m.fragmentsTail},
             {"fragments_dropped", m.fragmentsDropped}, {"primitives_bounded", m.primitivesBounded},
             {"rmse", finite(m.rmse)}, {"psnr", finite(m.psnr)}, {"max_abs_error", finite(m.maxAbsError)},
         });

@@ -1,5 +1,6 @@
 #include "frame/frame_renderer.hpp"
 
+#include "render/frustum.hpp"
 #include "render/texture_readback.hpp"
 #include "render/zoom.hpp"
 
@@ -26,6 +27,19 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         zoomProjection(camera.projection(float(displaySize.x) / float(displaySize.y)), displaySize, options.zoom);
     FrameContext frame{scene, camera, view, projection, projection * view, size, targets_, timer,
                        scene.transparentObjects(), options.standIns};
+    // Only what can reach the view is drawn, by the opaque pass and by every technique's passes
+    // (they draw frame.transparentOrder).
+    opaqueOrder_ = scene.opaqueObjects();
+    std::size_t culled = 0;
+    if (options.cull) {
+        const Frustum frustum(frame.viewProjection);
+        auto outside = [&](int object) { return !frustum.mayContain(scene.objects()[std::size_t(object)].worldBounds); };
+        for (std::vector<int>* order : {&opaqueOrder_, &frame.transparentOrder}) {
+            const auto kept = std::remove_if(order->begin(), order->end(), outside);
+            culled += std::size_t(order->end() - kept);
+            order->erase(kept, order->end());
+        }
+    }
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
@@ -46,12 +60,14 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         glClearNamedFramebufferfv(targets_.opaqueFramebuffer(), GL_DEPTH, 0, &clearDepth);
         glUseProgram(opaqueProgram_.id());
         scene.setFrameUniforms(opaqueProgram_, frame.viewProjection);
-        for (int object : scene.opaqueObjects()) frame.draw(opaqueProgram_, object);
+        for (int object : opaqueOrder_) frame.draw(opaqueProgram_, object);
     }
     targets_.copyOpaqueToOutput();
 
     FrameResult result;
-    if (technique && scene.hasTransparency()) {
+    result.objectsCulled = culled;
+    // A view whose transparent objects are all culled has no transparent fragment: no pass.
+    if (technique && !frame.transparentOrder.empty()) {
         technique->render(frame);
         result.stats = technique->stats();
         result.transparencyPass = true;

@@ -39,6 +39,10 @@ struct FrameOptions {
     // What draws in objects' places (layered impostors, lod/), indexed like GpuScene::objects();
     // null entries and a null pointer draw the objects' triangles. Held by the caller.
     const StandIns* standIns = nullptr;
+    // Objects whose bounding sphere lies outside the view frustum are drawn by no pass
+    // (render/frustum.hpp); false draws every object (the coplanarity detector's counts and
+    // the images are the same either way: a culled object has no fragment in the view).
+    bool cull = true;
 };
 
 struct FrameResult {
@@ -53,6 +57,7 @@ struct FrameResult {
     int zoom = 1;
     glm::ivec2 renderSize{0, 0};   // what was drawn: zoomRenderSize(size, zoom)
     double enlargeMs = 0.0;        // GPU time of the enlargement (in gpuMs and passTimes too)
+    std::size_t objectsCulled = 0; // outside the view frustum: drawn by no pass this frame
 };
 
 class FrameRenderer {
@@ -72,6 +77,7 @@ private:
     std::uint64_t countFragments(const FrameContext& frame);
 
     FrameTargets targets_;
+    std::vector<int> opaqueOrder_;  // the frame's opaque objects left after culling
     gl::GpuTimer timer_;
     SceneProgram opaqueProgram_, countProgram_;
     gl::Buffer counter_;
