@@ -3,6 +3,9 @@
 
 #include "oit/technique.hpp"
 
+#include "io/parse_integers.hpp"
+#include "io/printable.hpp"
+
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -10,12 +13,10 @@
 namespace strata {
 
 glm::ivec2 parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 ||
-        w > 16384 || h > 16384)
-        throw std::invalid_argument("size '" + text + "' is not WxH with 1 <= W, H <= 16384");
-    return {w, h};
+    const auto wh = parseIntPair(text, "xX");
+    if (!wh || wh->first < 1 || wh->second < 1 || wh->first > 16384 || wh->second > 16384)
+        throw std::invalid_argument("size '" + printable(text, 40) + "' is not WxH with 1 <= W, H <= 16384");
+    return {wh->first, wh->second};
 }
 
 void registerModesCommand(CLI::App& app) {

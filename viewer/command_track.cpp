@@ -2,6 +2,7 @@
 // image deflection, and reports the viewing error each combination leaves and what an update
 // costs. No GL: everything here runs on the CPU (tracking/ library).
 #include "io/atomic_file.hpp"
+#include "io/parse_integers.hpp"
 #include "io/printable.hpp"
 #include "tracking/activity_motion.hpp"
 #include "tracking/kalman.hpp"
@@ -74,12 +75,11 @@ std::vector<Deflect> selectDeflects(const std::string& list) {
 }
 
 Intrinsics parseIntrinsics(const std::string& size, double fovDeg) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1)
-        throw std::runtime_error("--size `" + size + "`: expected WIDTHxHEIGHT, e.g. 1920x1080");
+    const auto wh = parseIntPair(size, "xX");
+    if (!wh || wh->first < 1 || wh->second < 1)
+        throw std::runtime_error("--size `" + printable(size, 40) + "`: expected WIDTHxHEIGHT, e.g. 1920x1080");
     if (!(fovDeg > 0.0 && fovDeg < 179.0)) throw std::runtime_error("--fov-deg: must be in (0, 179)");
-    return Intrinsics::fromFov(w, h, fovDeg);
+    return Intrinsics::fromFov(wh->first, wh->second, fovDeg);
 }
 
 // Bounds on what the numbers on the command line may ask for, checked before anything is

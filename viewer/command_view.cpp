@@ -5,6 +5,7 @@
 #include "settings_options.hpp"
 #include "view_app.hpp"
 
+#include "io/parse_integers.hpp"
 #include "io/printable.hpp"
 
 #include <cstdio>
@@ -15,10 +16,9 @@ namespace {
 
 // "X,Y": a window pixel from the top-left, inside the window of `size`.
 glm::ivec2 parseInspectPixel(const std::string& text, glm::ivec2 size) {
-    int x = -1, y = -1;
-    char tail = 0;
-    if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &tail) != 2)
-        throw std::invalid_argument("--inspect: expected X,Y (two integers), got '" + printable(text, 40) + "'");
+    const auto xy = parseIntPair(text, ",");
+    if (!xy) throw std::invalid_argument("--inspect: expected X,Y (two integers), got '" + printable(text, 40) + "'");
+    const int x = xy->first, y = xy->second;
     if (x < 0 || y < 0 || x >= size.x || y >= size.y)
         throw std::invalid_argument("--inspect: pixel " + std::to_string(x) + "," + std::to_string(y) +
                                     " is outside the " + std::to_string(size.x) + "x" + std::to_string(size.y) + " window");
