@@ -42,6 +42,8 @@ public:
     // before; returns how many it tried. A progress line per impostor and a total.
     int bake(const std::vector<bool>& ids);
     bool tried(int id) const { return tried_[std::size_t(id)]; }
+    // Whether a transparent object draws impostor `id` (it gets the transparent peel count).
+    bool transparent(int id) const { return transparent_[std::size_t(id)]; }
 
     // The impostor an object draws, or null (volume medium, or none was baked: see reasonOf).
     const LayeredImpostor* impostorOf(int objectIndex) const;

@@ -1,5 +1,8 @@
 #include "lod/lod_controller.hpp"
 
+#include "lod/view_directions.hpp"
+
+#include <algorithm>
 #include <ostream>
 #include <stdexcept>
 
@@ -53,21 +56,59 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
     if (!impostors_)
         impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_, false);
     const auto& objects = scene_.objects();
-    std::vector<bool> wanted(std::size_t(keys_.count()), false);
+    const std::size_t ids = std::size_t(keys_.count());
+    std::vector<bool> wanted(ids, false);
+    // Per impostor: the geometry time its objects would save per frame, and its triangles.
+    std::vector<double> saving(ids, 0.0), triangles(ids, 0.0);
     bool any = false;
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const int id = keys_.ofObject[i];
-        if (id < 0 || impostors_->tried(id) || wanted[std::size_t(id)]) continue;
+        if (id < 0 || impostors_->tried(id)) continue;
         LodObjectInput guess = inputs_[i];
         guess.hasImpostor = true;
         guess.impostor.slices = options_.impostor.slices;
         guess.impostor.resolution = options_.impostor.resolution;
         guess.impostor.viewAngleRadians = 0.0;
         guess.impostor.drawnFraction = 0.785;
-        if (selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx}).impostor)
-            wanted[std::size_t(id)] = any = true;
+        const LodDecision d = selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx});
+        if (!d.impostor) continue;
+        wanted[std::size_t(id)] = any = true;
+        saving[std::size_t(id)] += std::max(0.0, d.geometryMs - d.impostorMs);
+        triangles[std::size_t(id)] = double(inputs_[i].triangles);
     }
+    // With an end to the frames, auto bakes only what pays for itself before it (forced
+    // impostors bake whatever it costs).
+    bakeDecisions_ = {};
+    double predictedMs = 0.0;  // of what is baked now, unscaled
+    // This frame included: it is drawn with what is baked now.
+    const long long framesLeft = options_.plannedFrames > 0 ? options_.plannedFrames - framesSelected_ + 1 : 0;
+    if (any && options_.mode == LodMode::Auto && options_.plannedFrames > 0) {
+        if (holeFillingPairs_ < 0)
+            holeFillingPairs_ = options_.impostor.holeFilling
+                                    ? int(adjacentViews(viewDirections(options_.impostor.views)).size())
+                                    : 0;
+        any = false;
+        for (std::size_t id = 0; id < ids; ++id) {
+            if (!wanted[id]) continue;
+            const int peels = impostors_->transparent(int(id)) ? options_.transparentPeels : options_.impostor.peels;
+            const int draws = options_.impostor.views * peels + holeFillingPairs_;
+            const double drawsMs = predictedBakeMs(model, triangles[id], draws, options_.impostor.resolution);
+            const double bakeMs = bakeScale_ * drawsMs;
+            const double savedMs = saving[id] * double(std::max(framesLeft, 0LL));
+            if (savedMs > bakeMs) {
+                any = true;
+                predictedMs += drawsMs;
+                continue;
+            }
+            wanted[id] = false;
+            ++bakeDecisions_.declined;
+            bakeDecisions_.declinedBakeMs += bakeMs;
+            bakeDecisions_.declinedSavingMs += savedMs;
+        }
+    }
+    const double bakedBefore = impostors_->bakeMs();
     if (!any || impostors_->bake(wanted) == 0) return;
+    if (predictedMs > 0.0) bakeScale_ = std::max(1.0, (impostors_->bakeMs() - bakedBefore) / predictedMs);
     viewFractions_.resize(std::size_t(keys_.count()));
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
@@ -98,6 +139,7 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
                        << calibration_->model.impostorMsPerMegapixel << " ms per million layer pixels ("
                        << calibration_->wallMs << " ms)\n";
     }
+    ++framesSelected_;
     const LodView view = lodView(camera, size);
     const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
     bakeCandidates(view, model);

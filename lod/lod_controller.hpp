@@ -23,6 +23,19 @@ struct LodOptions {
     double maxErrorPx = kDefaultMaxErrorPx;
     ImpostorSettings impostor;      // views, resolution, slices, overlap of every baked mesh
     int transparentPeels = 2;       // peels of a mesh a transparent object uses
+    // Frames the caller will draw with this controller (render: 1; bench: its frames and warm-up
+    // frames over its techniques); 0: no end (the viewer). With an end, auto bakes an impostor
+    // only where the geometry time it saves over the frames left exceeds its predicted bake time
+    // (lod_cost_model.hpp's predictedBakeMs).
+    long long plannedFrames = 0;
+};
+
+// What auto declined to bake because it would not pay over the frames planned (the last
+// decision per impostor), for the summary line and the bench JSON.
+struct LodBakeDecisions {
+    int declined = 0;
+    double declinedBakeMs = 0.0;   // their predicted bake time, summed
+    double declinedSavingMs = 0.0; // the geometry time they would have saved over the frames left
 };
 
 class LodController {
@@ -43,6 +56,7 @@ public:
     void setMaxErrorPx(double px) { options_.maxErrorPx = px; }
     const ImpostorSet* impostors() const { return impostors_.get(); }
     const std::optional<LodCalibration>& calibration() const { return calibration_; }
+    const LodBakeDecisions& bakeDecisions() const { return bakeDecisions_; }
     // An object's decision explained in one line (the panel's list).
     std::string explainObject(int objectIndex) const;
 
@@ -59,6 +73,11 @@ private:
     StandIns standIns_;
     glm::vec3 lastEye_{0.0f};
     ImpostorKeys keys_;                               // which impostor each object draws
+    LodBakeDecisions bakeDecisions_;
+    long long framesSelected_ = 0;                    // select() calls so far
+    int holeFillingPairs_ = -1;                       // adjacent view pairs (-1: not counted yet)
+    // Measured bake time over predictedBakeMs of the bakes so far (kBakeOverhead before any).
+    double bakeScale_ = kBakeOverhead;
     std::vector<std::vector<double>> viewFractions_;  // per impostor id, per view (drawnFractions)
 };
 

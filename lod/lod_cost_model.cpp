@@ -14,6 +14,11 @@ double LodCostModel::impostorMs(double layerPixels) const {
     return impostorFixedMs + impostorMsPerMegapixel * layerPixels * 1e-6;
 }
 
+double predictedBakeMs(const LodCostModel& model, double triangles, int meshDraws, int resolution) {
+    const double pixels = 0.5 * double(resolution) * double(resolution);
+    return double(meshDraws) * model.geometryMs(triangles, pixels);
+}
+
 double impostorLayerPixels(double sizePx, int slices, double drawnFraction) {
     return double(std::max(slices, 0)) * sizePx * sizePx * std::clamp(drawnFraction, 0.0, 1.0);
 }

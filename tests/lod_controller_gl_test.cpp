@@ -67,6 +67,30 @@ TEST_CASE("lod controller: forced impostors stand in for the four instances, not
     gl::checkGl("impostor frame");
 }
 
+TEST_CASE("lod controller: with the frames planned, auto bakes only what pays for itself before the end") {
+    // The four instances' impostor is one bake. However auto judges it on this device, a run
+    // with no end and one of a billion frames bake the same, and a one-frame run either bakes it
+    // too or says it declined it (what the render command's summary line prints).
+    test::Fixture fx(makeFieldScene(4, false));
+    auto baked = [&](long long planned, LodBakeDecisions* decisions = nullptr) {
+        LodOptions o = smallImpostors(LodMode::Auto);
+        o.plannedFrames = planned;
+        LodController lod(*fx.gpu, o);
+        lod.select(fx.camera, {64, 48});
+        if (decisions) *decisions = lod.bakeDecisions();
+        return lod.impostors() ? lod.impostors()->bakedImpostors() : 0;
+    };
+    const int unbounded = baked(0);
+    LodBakeDecisions many, one;
+    CHECK(baked(1000000000LL, &many) == unbounded);
+    CHECK(many.declined == 0);
+    const int oneFrame = baked(1, &one);
+    CHECK(oneFrame + one.declined == unbounded);
+    if (one.declined > 0) CHECK(one.declinedBakeMs > one.declinedSavingMs);
+    MESSAGE("auto bakes " << unbounded << " with no end; over one frame " << oneFrame << " (declined " << one.declined
+                          << ": predicted bake " << one.declinedBakeMs << " ms, saving " << one.declinedSavingMs << " ms)");
+}
+
 TEST_CASE("lod controller: the eye inside an instance's bounds gets its geometry") {
     test::Fixture fx(makeFieldScene(4, false));
     LodController lod(*fx.gpu, smallImpostors(LodMode::Impostors));

@@ -39,6 +39,15 @@ TEST_CASE("lod cost: predictions are fixed + slope x count") {
     CHECK(impostorLayerPixels(100.0, 1) == doctest::Approx(10000.0));
 }
 
+TEST_CASE("lod cost: a bake is its mesh draws, each a geometry draw into half the image") {
+    const LodCostModel m = synthetic();
+    // 40 draws (20 views x 2 peels) + 30 hole-filling pairs of a 100 k-triangle mesh at 128^2:
+    // each 0.05 + 1.0 + 0.5 x 8192 / 1e6 = 1.054096 ms.
+    CHECK(predictedBakeMs(m, 100000.0, 70, 128) == doctest::Approx(70.0 * 1.054096));
+    CHECK(predictedBakeMs(m, 100000.0, 0, 128) == 0.0);
+    CHECK(predictedBakeMs(m, 200000.0, 70, 128) > predictedBakeMs(m, 100000.0, 70, 128));
+}
+
 TEST_CASE("lod cost: the crossover triangle count and size are each other's inverse (Fig. 8)") {
     const LodCostModel m = synthetic();
     // 100 px, 16 slices: impostor 0.02 + 2 x 0.16 = 0.34 ms; geometry without triangles

@@ -82,7 +82,11 @@ void run(const BenchArgs& a) {
     // Level of detail: impostors baked and the cost model calibrated before the first timed frame.
     std::optional<lod::LodController> lodController;
     if (lodOptions.mode != lod::LodMode::Geometry) {
-        lodController.emplace(gpu, lodOptions, &std::cerr);
+        // Every frame the run draws, warm-up included, over its techniques, and the selection below.
+        lod::LodOptions planned = lodOptions;
+        const std::size_t modes = benchModeIds(options.modes).size();
+        planned.plannedFrames = 1 + (long long)modes * (options.frames + options.warmupFrames);
+        lodController.emplace(gpu, planned, &std::cerr);
         lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size);
         options.lod = [&](const Camera& camera, glm::ivec2 size) {
             BenchLodFrame frame;

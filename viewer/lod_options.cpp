@@ -52,6 +52,8 @@ nlohmann::json lodReport(const lod::LodController& controller) {
     if (const lod::ImpostorSet* set = controller.impostors()) {
         const lod::ImpostorMemory m = set->bytes();
         j["baked_impostors"] = set->bakedImpostors();  // one per mesh, or per mesh and material where the bake keeps its texture
+        j["bakes_declined"] = controller.bakeDecisions().declined;  // would not pay over the frames planned
+        j["declined_bake_ms"] = controller.bakeDecisions().declinedBakeMs;
         j["bake_ms"] = set->bakeMs();
         j["image_bytes"] = m.images;
         j["rectangle_bytes"] = m.rectangles;
@@ -77,6 +79,10 @@ std::string lodSummary(const lod::LodController& controller) {
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
         n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked in %.0f ms", set->bakedImpostors(),
                            set->bakeMs());
+    if (const lod::LodBakeDecisions& d = controller.bakeDecisions(); d.declined > 0)
+        n += std::snprintf(line + n, sizeof line - std::size_t(n),
+                           "; %d not baked: predicted bake %.0f ms > %.0f ms saved over the %lld frames planned",
+                           d.declined, d.declinedBakeMs, d.declinedSavingMs, controller.options().plannedFrames);
     if (const auto& c = controller.calibration())
         std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model calibrated in %.0f ms", c->wallMs);
     return line;
