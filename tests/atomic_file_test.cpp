@@ -174,17 +174,34 @@ TEST_CASE("output batch: folders that cannot be made are refused before anything
     CHECK(errorOf([&] { batch.createFolder(tmp.dir / "file" / "images"); }).find("file/images: ") != std::string::npos);
 }
 
-TEST_CASE("output batch: a rename that fails at commit names its output and removes the temporaries left") {
+TEST_CASE("output batch: a rename that fails at commit names its output and leaves the outputs as they were") {
     TempDir tmp;
+    writeTextFile(tmp.dir / "a.json", "old a");
+    writeTextFile(tmp.dir / "d.json", "old d");
     std::string error = errorOf([&] {
         OutputBatch batch;
-        batch.addText(tmp.dir / "a.json", "a");
+        batch.addText(tmp.dir / "a.json", "a");    // replaces a file
+        batch.addText(tmp.dir / "new.json", "n");  // creates one
         batch.addText(tmp.dir / "b.json", "b");
-        batch.addText(tmp.dir / "c.json", "c");
+        batch.addText(tmp.dir / "d.json", "d");
         fs::create_directories(tmp.dir / "b.json" / "inside");  // put in b's place after the checks
         batch.commit();
     });
     CHECK(error.rfind((tmp.dir / "b.json").string() + ": ", 0) == 0);
-    // a was renamed before the failure and stays; c's temporary is gone; nothing else is left.
-    CHECK(listing(tmp.dir) == std::set<std::string>{"a.json", "b.json", "b.json/inside"});
+    // a and new were renamed before the failure: a is the old a again, new is gone; d was never
+    // touched; no temporary or kept copy is left.
+    CHECK(listing(tmp.dir) == std::set<std::string>{"a.json", "b.json", "b.json/inside", "d.json"});
+    CHECK(contents(tmp.dir / "a.json") == "old a");
+    CHECK(contents(tmp.dir / "d.json") == "old d");
+}
+
+TEST_CASE("output batch: a commit that succeeds replaces the old files and keeps no copy") {
+    TempDir tmp;
+    writeTextFile(tmp.dir / "a.json", "old a");
+    OutputBatch batch;
+    batch.addText(tmp.dir / "a.json", "a");
+    batch.addText(tmp.dir / "b.json", "b");
+    batch.commit();
+    CHECK(listing(tmp.dir) == std::set<std::string>{"a.json", "b.json"});
+    CHECK(contents(tmp.dir / "a.json") == "a");
 }

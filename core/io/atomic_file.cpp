@@ -153,16 +153,45 @@ void OutputBatch::addText(const fs::path& path, std::string_view text) {
 }
 
 void OutputBatch::commit() {
+    // The batch lands whole or not at all: before each rename the file it replaces is kept
+    // under a second name (a hard link, else a copy; the destination itself stays in place, so
+    // each rename still replaces it atomically), and a rename that fails puts back what the
+    // earlier ones replaced and removes what they created.
+    struct Replaced {
+        fs::path path, kept;  // kept empty: nothing was there
+    };
+    std::vector<Replaced> done;
+    auto undo = [&] {
+        std::error_code ignored;
+        for (auto r = done.rbegin(); r != done.rend(); ++r) {
+            if (r->kept.empty()) fs::remove(r->path, ignored);
+            else ::rename(r->kept.c_str(), r->path.c_str());
+        }
+    };
     for (std::size_t i = 0; i < staged_.size(); ++i) {
-        if (::rename(staged_[i].temporary.c_str(), staged_[i].path.c_str()) != 0) {
-            int error = errno;
-            const fs::path path = staged_[i].path;
-            // Those renamed stay; the destructor removes the temporaries not yet renamed.
-            staged_.erase(staged_.begin(), staged_.begin() + std::ptrdiff_t(i));
+        const fs::path& path = staged_[i].path;
+        Replaced r{path, {}};
+        std::error_code ec;
+        if (fs::is_regular_file(fs::symlink_status(path, ec))) {
+            r.kept = temporaryName(path);
+            fs::create_hard_link(path, r.kept, ec);
+            if (ec) fs::copy_file(path, r.kept, ec);
+            if (ec) r.kept.clear();  // cannot keep it: this one cannot be put back
+        }
+        if (::rename(staged_[i].temporary.c_str(), path.c_str()) != 0) {
+            const int error = errno;
+            std::error_code ignored;
+            if (!r.kept.empty()) fs::remove(r.kept, ignored);  // the destination was not touched
+            undo();
+            // The destructor removes the temporaries not renamed (those renamed are gone).
             // A folder or file put in the destination's place since checkPlace.
             throw failure(path, error == EISDIR ? std::string("is a folder") : "cannot move into place: " + errnoText(error));
         }
+        done.push_back(std::move(r));
     }
+    std::error_code ignored;
+    for (const Replaced& r : done)
+        if (!r.kept.empty()) fs::remove(r.kept, ignored);
     committed_ = true;
 }
 
