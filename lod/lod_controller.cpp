@@ -131,6 +131,11 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
         selection_.objects.assign(inputs_.size(), LodDecision{});
         return nullptr;
     }
+    if (options_.mode == LodMode::Auto && !calibration_ && options_.costModel) {
+        calibration_ = LodCalibration{};
+        calibration_->model = *options_.costModel;
+        calibration_->device = "given";
+    }
     if (options_.mode == LodMode::Auto && !calibration_) {
         calibration_ = calibrateLodCost();
         if (progress_)

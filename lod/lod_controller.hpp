@@ -28,6 +28,9 @@ struct LodOptions {
     // only where the geometry time it saves over the frames left exceeds its predicted bake time
     // (lod_cost_model.hpp's predictedBakeMs).
     long long plannedFrames = 0;
+    // Auto's cost model as given, not calibrated on this device (tests that state decisions; a
+    // model saved from an earlier calibration).
+    std::optional<LodCostModel> costModel;
 };
 
 // What auto declined to bake because it would not pay over the frames planned (the last
