@@ -78,10 +78,12 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
     }
     // With an end to the frames, auto bakes only what pays for itself before it (forced
     // impostors bake whatever it costs).
-    bakeDecisions_ = {};
+    declined_.resize(ids, 0);
+    declinedBakeMs_.resize(ids, 0.0);
+    declinedSavingMs_.resize(ids, 0.0);
     double predictedMs = 0.0;  // of what is baked now, unscaled
-    // This frame included: it is drawn with what is baked now.
-    const long long framesLeft = options_.plannedFrames > 0 ? options_.plannedFrames - framesSelected_ + 1 : 0;
+    // This selection's frames included: they are drawn with what is baked now.
+    const long long framesLeft = options_.plannedFrames > 0 ? options_.plannedFrames - framesDrawn_ : 0;
     if (any && options_.mode == LodMode::Auto && options_.plannedFrames > 0) {
         if (holeFillingPairs_ < 0)
             holeFillingPairs_ = options_.impostor.holeFilling
@@ -93,22 +95,25 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             const int peels = impostors_->transparent(int(id)) ? options_.transparentPeels : options_.impostor.peels;
             const int draws = options_.impostor.views * peels + holeFillingPairs_;
             const double drawsMs = predictedBakeMs(model, triangles[id], draws, options_.impostor.resolution);
-            const double bakeMs = bakeScale_ * drawsMs;
+            const double bakeMs = bakeScale() * drawsMs;
             const double savedMs = saving[id] * double(std::max(framesLeft, 0LL));
-            if (savedMs > bakeMs) {
+            declined_[id] = savedMs > bakeMs ? 0 : 1;
+            declinedBakeMs_[id] = bakeMs;
+            declinedSavingMs_[id] = savedMs;
+            if (!declined_[id]) {
                 any = true;
                 predictedMs += drawsMs;
                 continue;
             }
             wanted[id] = false;
-            ++bakeDecisions_.declined;
-            bakeDecisions_.declinedBakeMs += bakeMs;
-            bakeDecisions_.declinedSavingMs += savedMs;
         }
     }
     const double bakedBefore = impostors_->bakeMs();
     if (!any || impostors_->bake(wanted) == 0) return;
-    if (predictedMs > 0.0) bakeScale_ = std::max(1.0, (impostors_->bakeMs() - bakedBefore) / predictedMs);
+    if (predictedMs > 0.0) {
+        measuredBakeMs_ += impostors_->bakeMs() - bakedBefore;
+        predictedBakeMs_ += predictedMs;
+    }
     viewFractions_.resize(std::size_t(keys_.count()));
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
@@ -123,12 +128,24 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
     }
 }
 
-const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
+LodBakeDecisions LodController::bakeDecisions() const {
+    LodBakeDecisions d;
+    for (std::size_t id = 0; id < declined_.size(); ++id) {
+        if (!declined_[id] || (impostors_ && impostors_->tried(int(id)))) continue;
+        ++d.declined;
+        d.declinedBakeMs += declinedBakeMs_[id];
+        d.declinedSavingMs += declinedSavingMs_[id];
+    }
+    return d;
+}
+
+const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int frames) {
     selection_ = {};
     lastEye_ = camera.position;
     if (options_.mode == LodMode::Geometry) {
         // Nothing baked or measured: every object's own triangles, predicted for nobody.
         selection_.objects.assign(inputs_.size(), LodDecision{});
+        framesDrawn_ += std::max(frames, 0);
         return nullptr;
     }
     if (options_.mode == LodMode::Auto && !calibration_ && options_.costModel) {
@@ -144,7 +161,6 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
                        << calibration_->model.impostorMsPerMegapixel << " ms per million layer pixels ("
                        << calibration_->wallMs << " ms)\n";
     }
-    ++framesSelected_;
     const LodView view = lodView(camera, size);
     const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
     bakeCandidates(view, model);
@@ -160,6 +176,7 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size) {
     std::vector<bool> use(inputs_.size());
     for (std::size_t i = 0; i < use.size(); ++i) use[i] = selection_.objects[i].impostor;
     standIns_ = impostors_->drawsFor(camera.position, use);
+    framesDrawn_ += std::max(frames, 0);
     return selection_.impostorObjects > 0 ? &standIns_ : nullptr;
 }
 

@@ -33,8 +33,8 @@ struct LodOptions {
     std::optional<LodCostModel> costModel;
 };
 
-// What auto declined to bake because it would not pay over the frames planned (the last
-// decision per impostor), for the summary line and the bench JSON.
+// What auto declines to bake because it would not pay over the frames planned: the impostors
+// declined at their last judgement and not baked since, for the summary line and the JSON.
 struct LodBakeDecisions {
     int declined = 0;
     double declinedBakeMs = 0.0;   // their predicted bake time, summed
@@ -50,7 +50,9 @@ public:
 
     // This frame's stand-ins for `camera` at `size` (the display size: errors are in its
     // pixels); null when every object draws its triangles. Valid until the next call.
-    const StandIns* select(const Camera& camera, glm::ivec2 size);
+    // `frames`: how many frames the caller draws with this selection (counted against
+    // LodOptions::plannedFrames).
+    const StandIns* select(const Camera& camera, glm::ivec2 size, int frames = 1);
 
     const LodSelection& selection() const { return selection_; }  // the last frame's
     const glm::vec3& lastEye() const { return lastEye_; }         // the last frame's eye, world
@@ -59,7 +61,7 @@ public:
     void setMaxErrorPx(double px) { options_.maxErrorPx = px; }
     const ImpostorSet* impostors() const { return impostors_.get(); }
     const std::optional<LodCalibration>& calibration() const { return calibration_; }
-    const LodBakeDecisions& bakeDecisions() const { return bakeDecisions_; }
+    LodBakeDecisions bakeDecisions() const;
     // An object's decision explained in one line (the panel's list).
     std::string explainObject(int objectIndex) const;
 
@@ -76,11 +78,15 @@ private:
     StandIns standIns_;
     glm::vec3 lastEye_{0.0f};
     ImpostorKeys keys_;                               // which impostor each object draws
-    LodBakeDecisions bakeDecisions_;
-    long long framesSelected_ = 0;                    // select() calls so far
+    // Per impostor id: declined at its last judgement, with its predicted bake and saving.
+    std::vector<char> declined_;
+    std::vector<double> declinedBakeMs_, declinedSavingMs_;
+    long long framesDrawn_ = 0;                       // frames drawn with earlier selections
     int holeFillingPairs_ = -1;                       // adjacent view pairs (-1: not counted yet)
-    // Measured bake time over predictedBakeMs of the bakes so far (kBakeOverhead before any).
-    double bakeScale_ = kBakeOverhead;
+    // Measured bake time over predictedBakeMs, summed over the bakes so far (kBakeOverhead
+    // before any).
+    double measuredBakeMs_ = 0.0, predictedBakeMs_ = 0.0;
+    double bakeScale() const { return predictedBakeMs_ > 0.0 ? std::max(1.0, measuredBakeMs_ / predictedBakeMs_) : kBakeOverhead; }
     std::vector<std::vector<double>> viewFractions_;  // per impostor id, per view (drawnFractions)
 };
 

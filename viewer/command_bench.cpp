@@ -3,6 +3,7 @@
 #include "open_scene.hpp"
 
 #include "bench/bench.hpp"
+#include "oit/technique.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
@@ -82,15 +83,16 @@ void run(const BenchArgs& a) {
     // Level of detail: impostors baked and the cost model calibrated before the first timed frame.
     std::optional<lod::LodController> lodController;
     if (lodOptions.mode != lod::LodMode::Geometry) {
-        // Every frame the run draws, warm-up included, over its techniques, and the selection below.
+        // Every frame the run draws with stand-ins, warm-up included, over the techniques asked
+        // for (an unrequested reference draws geometry).
         lod::LodOptions planned = lodOptions;
-        const std::size_t modes = benchModeIds(options.modes).size();
-        planned.plannedFrames = 1 + (long long)modes * (options.frames + options.warmupFrames);
+        const std::size_t modes = options.modes.empty() ? techniqueRegistry().size() : options.modes.size();
+        planned.plannedFrames = (long long)modes * (options.frames + options.warmupFrames);
         lodController.emplace(gpu, planned, &std::cerr);
-        lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size);
-        options.lod = [&](const Camera& camera, glm::ivec2 size) {
+        lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size, 0);  // bakes before timing
+        options.lod = [&](const Camera& camera, glm::ivec2 size, int frames) {
             BenchLodFrame frame;
-            frame.standIns = lodController->select(camera, size);
+            frame.standIns = lodController->select(camera, size, frames);
             frame.impostorObjects = lodController->selection().impostorObjects;
             frame.impostorBytes = lodController->selection().impostorBytes;
             return frame;

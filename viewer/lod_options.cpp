@@ -79,11 +79,13 @@ std::string lodSummary(const lod::LodController& controller) {
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
         n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked in %.0f ms", set->bakedImpostors(),
                            set->bakeMs());
-    if (const lod::LodBakeDecisions& d = controller.bakeDecisions(); d.declined > 0)
+    if (const lod::LodBakeDecisions d = controller.bakeDecisions(); d.declined > 0)
         n += std::snprintf(line + n, sizeof line - std::size_t(n),
                            "; %d not baked: predicted bake %.0f ms > %.0f ms saved over the %lld frames planned",
                            d.declined, d.declinedBakeMs, d.declinedSavingMs, controller.options().plannedFrames);
-    if (const auto& c = controller.calibration())
+    if (const auto& c = controller.calibration(); c && c->device == "given")
+        std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model given");
+    else if (c)
         std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model calibrated in %.0f ms", c->wallMs);
     return line;
 }

@@ -162,7 +162,8 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         frameOptions.countFragments = true;
         frameOptions.zoom = options.budget ? 1 : options.zoom;
         frameOptions.zoomFilter = options.zoomFilter;
-        if (options.lod) frameOptions.standIns = options.lod(cameras.front(), options.size).standIns;
+        if (options.lod)
+            frameOptions.standIns = options.lod(cameras.front(), options.size, options.warmupFrames).standIns;
         for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique, frameOptions);
         gl::checkGl(("bench warm-up of " + id).c_str());
 
@@ -200,7 +201,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 frameOptions.zoom = controller->choose(load);
             }
             if (options.lod) {
-                const BenchLodFrame lod = options.lod(cameras[f], options.size);
+                const BenchLodFrame lod = options.lod(cameras[f], options.size, 1);
                 frameOptions.standIns = lod.standIns;
                 mode.impostorObjects = std::max(mode.impostorObjects, lod.impostorObjects);
                 mode.impostorBytes = std::max(mode.impostorBytes, lod.impostorBytes);

@@ -58,10 +58,11 @@ struct BenchOptions {
     std::optional<ZoomBudget> budget;
     ZoomControllerKind zoomController = ZoomControllerKind::Reactive;
     // Per-object level of detail (lod/, which sits above core): called before each technique
-    // frame with its camera and the bench size; says what stands in for objects (null: all
+    // frame with its camera, the bench size and how many frames that selection draws (the
+    // warm-up's call draws warmupFrames); says what stands in for objects (null: all
     // geometry) and how many and how much. The reference always draws geometry, so the error
     // includes what the impostors lose. `lodReport` goes into the JSON as "lod" as given.
-    std::function<BenchLodFrame(const Camera&, glm::ivec2 size)> lod;
+    std::function<BenchLodFrame(const Camera&, glm::ivec2 size, int frames)> lod;
     nlohmann::json lodReport;
 };
 

@@ -1,5 +1,7 @@
 #include "frame/zoom_calibration.hpp"
 
+#include "render/frustum.hpp"
+
 #include "frame/frame_renderer.hpp"
 #include "gl/debug.hpp"
 #include "scene/builtin_scenes.hpp"
@@ -34,9 +36,11 @@ std::uint64_t fragmentsRasterized(const TechniqueStats& stats) {
 double transparentScreenArea(const GpuScene& scene, const glm::mat4& viewProjection, glm::ivec2 displaySize) {
     const double full = double(displaySize.x) * double(displaySize.y);
     double area = 0.0;
+    // What the frame culls draws nothing (render/frustum.hpp, as FrameRenderer culls).
+    const Frustum frustum(viewProjection);
     for (int index : scene.transparentObjects()) {
         const Bounds& b = scene.objects()[std::size_t(index)].worldBounds;
-        if (b.empty()) continue;
+        if (b.empty() || !frustum.mayContain(b)) continue;
         glm::vec2 lo(1e30f), hi(-1e30f);
         int behind = 0;
         for (int corner = 0; corner < 8; ++corner) {

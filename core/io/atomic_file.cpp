@@ -158,24 +158,32 @@ void OutputBatch::commit() {
     // each rename still replaces it atomically), and a rename that fails puts back what the
     // earlier ones replaced and removes what they created.
     struct Replaced {
-        fs::path path, kept;  // kept empty: nothing was there
+        fs::path path, kept;   // kept: the old file's second name, empty when none was made
+        bool existed = false;  // something was at `path` before
     };
     std::vector<Replaced> done;
     auto undo = [&] {
         std::error_code ignored;
         for (auto r = done.rbegin(); r != done.rend(); ++r) {
-            if (r->kept.empty()) fs::remove(r->path, ignored);
-            else ::rename(r->kept.c_str(), r->path.c_str());
+            if (!r->kept.empty()) ::rename(r->kept.c_str(), r->path.c_str());
+            else if (!r->existed) fs::remove(r->path, ignored);
+            // An old file that could not be kept stays replaced: removing the new one too would
+            // leave neither.
         }
     };
     for (std::size_t i = 0; i < staged_.size(); ++i) {
         const fs::path& path = staged_[i].path;
-        Replaced r{path, {}};
+        Replaced r{path, {}, false};
         std::error_code ec;
-        if (fs::is_regular_file(fs::symlink_status(path, ec))) {
+        const fs::file_status old = fs::symlink_status(path, ec);
+        r.existed = fs::exists(old);
+        if (fs::is_symlink(old) || fs::is_regular_file(old)) {
             r.kept = temporaryName(path);
-            fs::create_hard_link(path, r.kept, ec);
-            if (ec) fs::copy_file(path, r.kept, ec);
+            if (fs::is_symlink(old)) fs::copy_symlink(path, r.kept, ec);
+            else {
+                fs::create_hard_link(path, r.kept, ec);
+                if (ec) fs::copy_file(path, r.kept, ec);
+            }
             if (ec) r.kept.clear();  // cannot keep it: this one cannot be put back
         }
         if (::rename(staged_[i].temporary.c_str(), path.c_str()) != 0) {

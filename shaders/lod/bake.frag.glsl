@@ -35,11 +35,15 @@ layout(location = 1) out vec4 outAlbedo;
 #endif
 
 void main() {
+#ifdef BAKE_ALBEDO
+    // Fetched before any discard: the level comes from derivatives, undefined in divergent flow.
+    vec4 texel = texture(uBaseColorTexture, transformTexCoord(uBaseColorTransform, vTexCoord));
+    if (!uTextured) texel = vec4(1.0);
+#endif
 #ifdef PEEL
     if (gl_FragCoord.z >= texelFetch(uPreviousDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
 #endif
 #ifdef BAKE_ALBEDO
-    vec4 texel = uTextured ? texture(uBaseColorTexture, transformTexCoord(uBaseColorTransform, vTexCoord)) : vec4(1.0);
     vec4 albedo = texel * vColor;
     if (uAlphaCutoff > 0.0 && uFactorAlpha * albedo.a < uAlphaCutoff) discard;
     outAlbedo = albedo;
