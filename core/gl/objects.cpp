@@ -16,6 +16,17 @@ Texture createTexture2D(GLenum internalFormat, int width, int height) {
     return t;
 }
 
+Framebuffer createFramebuffer(const std::vector<GLuint>& colors) {
+    Framebuffer fbo = Framebuffer::create();
+    std::vector<GLenum> buffers;
+    for (std::size_t i = 0; i < colors.size(); ++i) {
+        glNamedFramebufferTexture(fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), colors[i], 0);
+        buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+    }
+    glNamedFramebufferDrawBuffers(fbo.id(), GLsizei(buffers.size()), buffers.data());
+    return fbo;
+}
+
 std::uint64_t storageBlockElements(std::uint64_t elementBytes, double capMiB) {
     GLint64 limit = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);

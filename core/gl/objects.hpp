@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 namespace strata::gl {
 
@@ -81,6 +82,10 @@ inline std::uint64_t queryResult(const Query& query) {
 
 // A 2D texture with immutable storage, nearest filtering, clamped.
 Texture createTexture2D(GLenum internalFormat, int width, int height);
+
+// A framebuffer drawing into `colors` (textures, level 0) as colour attachments 0, 1, ... in
+// order, each its draw buffer: a multi-target pass's output locations in the same order.
+Framebuffer createFramebuffer(const std::vector<GLuint>& colors);
 
 // How many elements of `elementBytes` the largest shader storage block holds: the device's
 // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, or less when `capMiB` > 0 (a setting, used by tests to

@@ -23,6 +23,11 @@ inline gl::Defines withColorModel(gl::Defines defines, ColorModel model) {
     return defines;
 }
 
+// A full-screen pass (common/fullscreen.vert.glsl + `fragment`) built for `model`.
+inline gl::Program buildFullscreenProgram(const std::string& fragment, ColorModel model, gl::Defines defines = {}) {
+    return gl::buildProgram({"common/fullscreen.vert.glsl", fragment}, withColorModel(std::move(defines), model));
+}
+
 // A technique's program set for each colour model, each built on its first use: `use` picks
 // the frame's and returns it (empty until built), `->` reaches the one picked last.
 template <class Programs>

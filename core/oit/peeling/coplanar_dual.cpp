@@ -102,7 +102,7 @@ private:
         Programs& p = programs_.use(model);
         if (p.init.program) return;
         auto fullscreen = [model](const char* fragment, gl::Defines defines = {}) {
-            return gl::buildProgram({"common/fullscreen.vert.glsl", fragment}, withColorModel(std::move(defines), model));
+            return buildFullscreenProgram(fragment, model, std::move(defines));
         };
         p.init = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
         p.count = buildSceneProgram("oit/peeling/coplanar_dual_count.frag.glsl", withColorModel({}, model));
@@ -118,17 +118,6 @@ private:
         p.side = glGetUniformLocation(p.check.id(), "uSide");
         p.minCount = glGetUniformLocation(p.check.id(), "uMinCount");
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
-    }
-
-    static gl::Framebuffer framebuffer(const std::vector<GLuint>& colors) {
-        gl::Framebuffer fbo = gl::Framebuffer::create();
-        std::vector<GLenum> buffers;
-        for (std::size_t i = 0; i < colors.size(); ++i) {
-            glNamedFramebufferTexture(fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), colors[i], 0);
-            buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-        }
-        glNamedFramebufferDrawBuffers(fbo.id(), GLsizei(buffers.size()), buffers.data());
-        return fbo;
     }
 
     void ensureTargets(glm::ivec2 size, ColorModel model) {
@@ -153,23 +142,23 @@ private:
         }
         bound_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
         const Side &f = side_[0], &b = side_[1];
-        initFbo_ = framebuffer({f.state.id(), b.state.id()});
+        initFbo_ = gl::createFramebuffer({f.state.id(), b.state.id()});
         // The RGB build's second texels follow the first ones, in the shaders' output locations.
         if (!rgb()) {
-            countFbo_ = framebuffer({f.count.id(), b.count.id(), f.minColor.id(), b.minColor.id()});
-            extractFbo_ = framebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id()});
-            resolveFbo_[0] = framebuffer({f.accum.id(), f.layer.id(), b.accum.id(), b.layer.id(), f.state.id(),
+            countFbo_ = gl::createFramebuffer({f.count.id(), b.count.id(), f.minColor.id(), b.minColor.id()});
+            extractFbo_ = gl::createFramebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id()});
+            resolveFbo_[0] = gl::createFramebuffer({f.accum.id(), f.layer.id(), b.accum.id(), b.layer.id(), f.state.id(),
                                           b.state.id(), bound_.id()});
             resolveFbo_[1] = {};
             return;
         }
-        countFbo_ = framebuffer(
+        countFbo_ = gl::createFramebuffer(
             {f.count.id(), b.count.id(), f.minColor.id(), b.minColor.id(), f.minOpacity.id(), b.minOpacity.id()});
-        extractFbo_ = framebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id(),
+        extractFbo_ = gl::createFramebuffer({f.minColor.id(), f.maxColor.id(), b.minColor.id(), b.maxColor.id(),
                                    f.minOpacity.id(), f.maxOpacity.id(), b.minOpacity.id(), b.maxOpacity.id()});
         resolveFbo_[0] =
-            framebuffer({f.accum.id(), f.layer.id(), f.state.id(), f.accumPasses.id(), f.layerPasses.id()});
-        resolveFbo_[1] = framebuffer(
+            gl::createFramebuffer({f.accum.id(), f.layer.id(), f.state.id(), f.accumPasses.id(), f.layerPasses.id()});
+        resolveFbo_[1] = gl::createFramebuffer(
             {b.accum.id(), b.layer.id(), b.state.id(), b.accumPasses.id(), b.layerPasses.id(), bound_.id()});
     }
 

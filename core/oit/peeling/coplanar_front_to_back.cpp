@@ -99,7 +99,7 @@ private:
         Programs& p = programs_.use(model);
         if (p.init.program) return;
         auto fullscreen = [model](const char* fragment, gl::Defines defines = {}) {
-            return gl::buildProgram({"common/fullscreen.vert.glsl", fragment}, withColorModel(std::move(defines), model));
+            return buildFullscreenProgram(fragment, model, std::move(defines));
         };
         auto scene = [model](const char* fragment, gl::Defines defines = {}) {
             return buildSceneProgram(fragment, withColorModel(std::move(defines), model));
@@ -143,10 +143,10 @@ private:
         // output locations.
         auto withRgb = [this](std::vector<GLuint> colors, std::initializer_list<GLuint> rgbColors) {
             if (rgb()) colors.insert(colors.end(), rgbColors);
-            return framebuffer(colors);
+            return gl::createFramebuffer(colors);
         };
-        initFbo_ = framebuffer({state_.id()});
-        countFbo_ = threePass_ ? framebuffer({count_.id()})
+        initFbo_ = gl::createFramebuffer({state_.id()});
+        countFbo_ = threePass_ ? gl::createFramebuffer({count_.id()})
                                : withRgb({count_.id(), minColor_.id()}, {minOpacity_.id()});
         extractFbo_ = withRgb({minColor_.id(), maxColor_.id()}, {minOpacity_.id(), maxOpacity_.id()});
         resolveFbo_ = withRgb({accum_.id(), layer_.id(), state_.id()}, {accumPasses_.id(), layerPasses_.id()});
@@ -156,17 +156,6 @@ private:
             glNamedFramebufferTexture(nextFbo_.id(), GL_DEPTH_ATTACHMENT, nextDepth_.id(), 0);
             glNamedFramebufferDrawBuffer(nextFbo_.id(), GL_NONE);
         }
-    }
-
-    static gl::Framebuffer framebuffer(const std::vector<GLuint>& colors) {
-        gl::Framebuffer fbo = gl::Framebuffer::create();
-        std::vector<GLenum> buffers;
-        for (std::size_t i = 0; i < colors.size(); ++i) {
-            glNamedFramebufferTexture(fbo.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), colors[i], 0);
-            buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-        }
-        glNamedFramebufferDrawBuffers(fbo.id(), GLsizei(buffers.size()), buffers.data());
-        return fbo;
     }
 
     // The geometry passes test against the opaque depth in hardware (early, no writes); the

@@ -90,8 +90,7 @@ private:
         gl::Defines dual = withColorModel(storage_.defines(), model);
         dual["DUAL"] = "";
         p.resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, dual);
-        p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
-                                       withColorModel({{"DUAL", ""}}, model));
+        p.composite = buildFullscreenProgram("oit/peeling/peel_composite.frag.glsl", model, {{"DUAL", ""}});
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
@@ -113,13 +112,7 @@ private:
             backPasses_ = gl::createTexture2D(rgba, size.x, size.y);
             targets = {frontAccum_.id(), frontPasses_.id(), backAccum_.id(), backPasses_.id()};
         }
-        resolveFbo_ = gl::Framebuffer::create();
-        std::vector<GLenum> buffers;
-        for (std::size_t i = 0; i < targets.size(); ++i) {
-            glNamedFramebufferTexture(resolveFbo_.id(), GLenum(GL_COLOR_ATTACHMENT0 + i), targets[i], 0);
-            buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
-        }
-        glNamedFramebufferDrawBuffers(resolveFbo_.id(), GLsizei(buffers.size()), buffers.data());
+        resolveFbo_ = gl::createFramebuffer(targets);
     }
 
     // minMax_[target] (cleared to the empty range) with the frame's opaque depth, MAX blending.

@@ -111,8 +111,7 @@ private:
         gl::Defines anchored = withColorModel(storage_.defines(), model);
         anchored["ANCHOR"] = "";
         p.resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
-        p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
-                                       withColorModel({}, model));
+        p.composite = buildFullscreenProgram("oit/peeling/peel_composite.frag.glsl", model);
         if (total_) return;
         anchors_ = gl::createQuery(GL_SAMPLES_PASSED);
         total_ = gl::Buffer::create();

@@ -93,10 +93,8 @@ private:
             if (twoPass_)
                 p.shade = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl", withColorModel({}, model));
             else
-                p.blend = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/f2b_layer_blend.frag.glsl"},
-                                           withColorModel({}, model));
-            p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
-                                           withColorModel({}, model));
+                p.blend = buildFullscreenProgram("oit/peeling/f2b_layer_blend.frag.glsl", model);
+            p.composite = buildFullscreenProgram("oit/peeling/peel_composite.frag.glsl", model);
         }
         if (counter_) return;
         counter_ = gl::Buffer::create();
