@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Strata builds, tests and plots with, when any is missing.
-# Safe to run repeatedly: it does nothing when everything is present.
+# With --test, also what only the test tree needs: a browser and an HTML validator for the demo
+# report's test (tests/report_browser_test.sh). Safe to run repeatedly: it does nothing when
+# everything is present.
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -9,6 +11,11 @@ packages=(
   doctest-dev libcli11-dev nlohmann-json3-dev libeigen3-dev
   xvfb xauth assimp-testmodels gnuplot-nox
 )
+case "${1:-}" in
+  --test) packages+=(chromium tidy) ;;
+  "") ;;
+  *) echo "usage: install-deps.sh [--test]" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds and runs every test on a fresh machine: the release tree (CPU, headless GL on EGL,
-# viewer smoke test under Xvfb), then an AddressSanitizer + UBSan tree (CPU, loader and GL tests).
+# viewer smoke test under Xvfb, the demo report in headless Chromium), then an AddressSanitizer
+# + UBSan tree (CPU, loader and GL tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh --test
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 
 echo "== release build and tests"

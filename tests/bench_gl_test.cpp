@@ -75,11 +75,32 @@ TEST_CASE("bench reports coplanarity where surfaces coincide") {
     options.size = {16, 16};
     options.frames = 1;
     options.warmupFrames = 0;
+    // The report's hooks: the heatmap of the measured frame, and each first frame with the
+    // reference it was compared against (the reference row: itself).
+    Image heatmap;
+    options.coplanarityHeatmap = [&](const Image& h) { heatmap = h; };
+    std::map<std::string, std::pair<Image, Image>> first;
+    options.firstFrame = [&](const std::string& id, const Image& frame, const Image& reference) {
+        first[id] = {frame, reference};
+    };
     BenchReport report = runBench(scene, options);
     CHECK(report.coplanarityProbability == 1.0);
     CHECK(report.coplanarityOnePerLayerRobustness == doctest::Approx(1.0 / 3.0));
     REQUIRE(report.modes.size() == 1);  // the reference runs but is listed only when asked for
     CHECK(report.modes[0].id == "blend-sorted");
+
+    // Every pixel with fragments holds three in one layer: Fig. 13's blue, and only bin 3 counts.
+    REQUIRE(heatmap.width == 16);
+    REQUIRE(heatmap.height == 16);
+    std::uint64_t blue = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) blue += glm::vec3(heatmap.at(x, y)) == coplanarityColor(3);
+    CHECK(blue > 0);
+    CHECK(report.pixelsByLargestLayer[3] == blue);
+    CHECK(report.pixelsByLargestLayer[2] == 0);
+    REQUIRE(first.size() == 2);
+    CHECK(first["abuffer"].first.rgba == first["abuffer"].second.rgba);
+    CHECK(first["blend-sorted"].second.rgba == first["abuffer"].first.rgba);
 }
 
 TEST_CASE("bench rejects an unknown technique with the list of known ones") {

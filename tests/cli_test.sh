@@ -142,7 +142,8 @@ expect_error "argument '0' must be an integer" bench builtin:layers:0 --images "
 expect_error "size '0x0' is not WxH" demo --headless --size 0x0 --out "$work/rep"
 expect_error "unknown technique" bench builtin:layers:2 --modes nope --images "$work/imgs"
 printf 'x' >"$work/plain-file"
-expect_error "plain-file is not a folder" demo --headless --out "$work/plain-file"
+expect_error "plain-file: is not a folder" demo --headless --out "$work/plain-file"
+expect_error "plain-file: is not a folder" bench builtin:layers:2 --size 8x8 --frames 1 --report "$work/plain-file"
 rm -f "$work/plain-file"
 expect_error "camera.path: no such file" bench builtin:layers:2 --size 8x8 --frames 1 --images "$work/imgs" --camera-path "$tmp/camera.path"
 # Options that would be ignored are refused.
@@ -196,6 +197,19 @@ fi
 if "$strata" bench builtin:layers:3 --size 32x32 --frames 2 --json "$work/bench.json" --csv "$work/bench.csv" \
      >"$tmp/table" 2>/dev/null && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['modes'] and all(m['id'] for m in d['modes'])" "$work/bench.json" &&
    grep -q "abuffer" "$tmp/table" && [ "$(wc -l <"$work/bench.csv")" -ge 2 ]; then ok; else bad "bench JSON/CSV/table"; fi
+# A report folder (bench/report_page.hpp's layout): the page, its chart and every image it shows,
+# the volumetric row against its own reference. Without gnuplot the page says so, and so does
+# stderr, and there is no chart file.
+if "$strata" bench builtin:layers:3 --size 32x24 --frames 1 --warmup 0 --modes floor,wboit,ll-volume \
+     --report "$tmp/rep" >"$tmp/stdout" 2>/dev/null && grep -q "report written to .*/rep/index.html" "$tmp/stdout" &&
+   (cd "$tmp/rep" && ls index.html README.md bench.json bench.csv chart.svg exact.png heatmap.png images/wboit.png \
+      errors/ll-volume.png thumbs/wboit.png thumbs/floor-error.png >/dev/null) &&
+   grep -q "error against <code>abuffer-volume</code>" "$tmp/rep/index.html" && grep -q "<svg" "$tmp/rep/chart.svg"
+then ok; else bad "bench --report: $(cat "$tmp/stdout")"; fi
+if env PATH=/nonexistent "$strata" bench builtin:layers:3 --size 32x24 --frames 1 --warmup 0 --modes wboit \
+     --report "$tmp/rep2" >/dev/null 2>"$tmp/stderr" && grep -q "chart was not drawn: gnuplot was not found" "$tmp/stderr" &&
+   grep -q "chart was not drawn" "$tmp/rep2/index.html" && [ ! -e "$tmp/rep2/chart.svg" ]
+then ok; else bad "bench --report without gnuplot: $(cat "$tmp/stderr")"; fi
 # Under a frame budget along a camera path: one zoom, time and prediction per frame, each zoom in range.
 if "$strata" bench builtin:layers:4 --size 48x32 --frames 6 --warmup 0 --modes ll \
      --camera-path "$root/scenes/paths/zoom-load-jumps.path" --frame-budget-ms 5 --zoom-controller predictive \

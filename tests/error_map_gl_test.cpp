@@ -118,3 +118,32 @@ TEST_CASE("error map: sizes that are not whole groups, and 1x1") {
         CHECK(s.rmse == doctest::Approx(std::sqrt(0.0625 / (3.0 * size.x * size.y))).epsilon(1e-6));
     }
 }
+
+TEST_CASE("error map: the CPU false colour for reports is the GPU pass's, pixel for pixel") {
+    test::Fixture f(makeBuiltinScene("cubes"));
+    // Differences across the whole ramp (0 to twice the scale), some pixels identical.
+    Image reference(37, 21), image(37, 21);
+    for (int y = 0; y < 21; ++y)
+        for (int x = 0; x < 37; ++x) {
+            const glm::vec4 r(float(x) / 36.0f, float(y) / 20.0f, 0.5f, 1.0f);
+            const float d = (x + y) % 5 == 0 ? 0.0f : 0.1f * float((x * 7 + y * 3) % 23) / 22.0f;
+            reference.set(x, y, r);
+            image.set(x, y, r + glm::vec4(0.0f, d, -0.5f * d, 0.0f));
+        }
+    const gl::Texture ti = upload(image), tr = upload(reference);
+    ErrorMap map;
+    map.compare(ti.id(), tr.id(), {37, 21}, 0.05f);
+    gl::checkGl("error map");
+    const Image gpu = readRgbaTexture(map.falseColor(), {37, 21});
+    const Image cpu = errorMapImage(image, reference, 0.05f);
+    float worst = 0.0f;
+    for (int y = 0; y < 21; ++y)
+        for (int x = 0; x < 37; ++x)
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(gpu.at(x, y)[c] - cpu.at(x, y)[c]));
+    CHECK(worst <= 1e-5f);
+    // The ramp's ends as stated: red at and above the scale, dark grey where nothing differs.
+    // At (2, 0) green differs by 0.1 * 14/22 = 0.064, over the scale: the ramp's last stop.
+    CHECK(cpu.at(2, 0) == glm::vec4(0.95f, 0.05f, 0.03f, 1.0f));
+    CHECK(cpu.at(0, 0) == glm::vec4(glm::vec3(0.03f + 0.22f * glm::dot(glm::vec3(reference.at(0, 0)), glm::vec3(0.2126f, 0.7152f, 0.0722f))), 1.0f));
+    CHECK_THROWS_AS(errorMapImage(image, Image(3, 3)), std::invalid_argument);
+}

@@ -3,6 +3,7 @@
 #include "open_scene.hpp"
 
 #include "bench/bench.hpp"
+#include "bench/report_folder.hpp"
 #include "oit/technique.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"
@@ -27,7 +28,7 @@ struct BenchArgs {
     int frames = 10;
     int warmup = 2;
     std::string cameraPath;
-    std::string json, csv, images;
+    std::string json, csv, images, report;
     SettingsArgs settings;
     ZoomArgs zoom;
     LodArgs lod;
@@ -63,6 +64,7 @@ void run(const BenchArgs& a) {
     options.budget = a.zoom.budget();
     if (options.budget) options.zoomController = a.zoom.controllerKind();
     if (!a.images.empty()) checkFolderCreatable(a.images);
+    if (!a.report.empty()) checkFolderCreatable(a.report);
     const lod::LodOptions lodOptions = a.lod.options();
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
@@ -74,10 +76,16 @@ void run(const BenchArgs& a) {
     // Every output (images as they are rendered, then JSON and CSV) appears only once the whole
     // run succeeded; the images folder is made last, after every input was checked.
     OutputBatch outputs;
+    std::optional<ReportFolder> reportFolder;
+    if (!a.report.empty()) {
+        reportFolder.emplace(outputs, a.report, options.size);
+        reportFolder->attach(options);
+    }
     if (!a.images.empty()) {
         outputs.createFolder(a.images);
-        options.firstFrame = [&](const std::string& id, const Image& frame) {
+        options.firstFrame = [&, report = options.firstFrame](const std::string& id, const Image& frame, const Image& reference) {
             writeImage(outputs, std::filesystem::path(a.images) / (id + ".png"), frame);
+            if (report) report(id, frame, reference);
         };
     }
     // Level of detail: impostors baked and the cost model calibrated before the first timed frame.
@@ -106,10 +114,21 @@ void run(const BenchArgs& a) {
         report.lod = lodReport(*lodController);  // meshes baked during the run counted too
         std::fprintf(stderr, "%s\n", lodSummary(*lodController).c_str());
     }
+    std::string reportWarning;
+    if (reportFolder) {
+        ReportPageText text;
+        text.description = "Every technique asked for against the exact reference, on this device.";
+        text.command = "strata bench " + a.scene + " --modes " + a.modes + " --size " + a.size + " --frames " +
+                       std::to_string(a.frames) + " --report " + a.report;
+        reportWarning = reportFolder->finish(report, text);
+    }
     if (!a.json.empty()) outputs.addText(a.json, benchToJson(report).dump(2) + "\n");
     if (!a.csv.empty()) outputs.addText(a.csv, benchToCsv(report));
     outputs.commit();
     std::cout << benchToTable(report);
+    if (!reportWarning.empty()) std::fprintf(stderr, "%s\n", reportWarning.c_str());
+    if (reportFolder)
+        std::cout << "report written to " << std::filesystem::absolute(a.report).string() << "/index.html\n";
 }
 
 }  // namespace
@@ -126,6 +145,8 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--json", args->json, "write the JSON report here");
     cmd->add_option("--csv", args->csv, "write one CSV row per technique here");
     cmd->add_option("--images", args->images, "write each technique's first frame as PNG into this folder");
+    cmd->add_option("--report", args->report, "write a report folder here: index.html (chart, heatmap, contact sheet of "
+                    "images and error maps, sortable table), README.md, bench.json, bench.csv, images");
     addZoomOptions(cmd, args->zoom, true, "size");
     addLodOptions(cmd, args->lod);
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,

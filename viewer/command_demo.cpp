@@ -1,9 +1,11 @@
 // `strata demo`: the main job on the built-in default scene. With a display it opens the
-// viewer; without one it benchmarks every technique and writes a short report to a folder.
+// viewer; without one it benchmarks every technique and writes a report folder (an HTML page
+// with the chart, heatmap and contact sheet: bench/report_folder.hpp).
 #include "commands.hpp"
 #include "open_scene.hpp"
 
 #include "bench/bench.hpp"
+#include "bench/report_folder.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
@@ -32,7 +34,7 @@ void writeReport(const DemoArgs& a) {
     options.frames = a.frames;
     options.warmupFrames = 1;
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
-    checkFolderCreatable(dir / "images");
+    checkFolderCreatable(dir);
 
     gl::HeadlessContext context;
     checkFrameSize(options.size);
@@ -40,26 +42,24 @@ void writeReport(const DemoArgs& a) {
     // The report folder is made once every input was checked, and is removed again (with every
     // file in it) when the run fails: the report appears whole or not at all.
     OutputBatch outputs;
-    outputs.createFolder(dir / "images");
-    options.firstFrame = [&](const std::string& id, const Image& frame) {
-        writeImage(outputs, dir / "images" / (id + ".png"), frame);
-    };
+    ReportFolder folder(outputs, dir, options.size);
+    folder.attach(options);
     BenchReport report = runBench(gpu, options);
-    std::string table = benchToTable(report);
-    outputs.addText(dir / "bench.json", benchToJson(report).dump(2) + "\n");
-    outputs.addText(dir / "bench.csv", benchToCsv(report));
-
-    std::string md =
-        "# Strata demo report\n\nScene `builtin:default` (interpenetrating glass, a decal on a transparent panel in "
-        "front of coloured glass behind glass, a stained-glass pane, a foliage card, a wireframe over its own surface, "
-        "volumes, dense opaque detail behind), every technique against the exact reference `abuffer`. The techniques "
-        "whose `strata modes` filters column says `scalar` draw the coloured glass grey (its tint lost): part of their "
-        "error here. Produced by `strata demo` without a display.\n\n```\n" + table + "```\n\n";
-    for (const auto& m : report.modes) md += "![" + m.id + "](images/" + m.id + ".png)\n";
-    outputs.addText(dir / "README.md", md);
+    ReportPageText text;
+    text.title = "Strata demo report";
+    text.description =
+        "Scene builtin:default: interpenetrating glass, a decal on a transparent panel in front of coloured glass behind "
+        "glass, a stained-glass pane, a foliage card, a wireframe over its own surface, volumes, dense opaque detail "
+        "behind. Every technique against the exact reference; the volumetric family against its own (abuffer-volume, "
+        "which integrates the volumes as media). Techniques whose filters column in strata modes says scalar draw the "
+        "coloured glass grey (its tint lost): part of their error here.";
+    text.command = "strata demo --headless --size " + a.size + " --frames " + std::to_string(a.frames);
+    const std::string warning = folder.finish(report, text);
     outputs.commit();
-    std::cout << table << "\nreport written to " << fs::absolute(dir).string() << "/ (README.md, bench.json, "
-              << "bench.csv, images/)\n";
+    std::cout << benchToTable(report);
+    if (!warning.empty()) std::fprintf(stderr, "%s\n", warning.c_str());
+    std::cout << "\nreport written to " << fs::absolute(dir).string() << "/: open index.html (README.md, bench.json, "
+              << "bench.csv, images/ beside it)\n";
 }
 
 }  // namespace

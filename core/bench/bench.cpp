@@ -116,6 +116,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         const FrameResult r = detector.render(scene, cameras.front(), options.size, nullptr, detect);
         report.coplanarityProbability = r.coplanarity->coplanarityProbability();
         report.coplanarityOnePerLayerRobustness = r.coplanarity->oneFragmentPerLayerRobustness();
+        report.pixelsByLargestLayer = r.coplanarity->pixelsByLargestLayer;
+        if (options.coplanarityHeatmap)
+            options.coplanarityHeatmap(coplanarityHeatmap(detector.coplanarity()->readPixels().largestLayer,
+                                                          r.renderSize.x, r.renderSize.y));
     }
 
     // Every frame is compared as soon as it is read back, against the reference frame for the same
@@ -249,10 +253,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 reference.image = std::move(image);
                 reference.key = keyOf(f);
                 if (options.referenceFrame && id == "abuffer") options.referenceFrame(f, reference.image);
-                if (f == 0 && options.firstFrame) options.firstFrame(id, reference.image);
+                if (f == 0 && options.firstFrame) options.firstFrame(id, reference.image, reference.image);
             } else {
                 error.add(image, reference.image);
-                if (f == 0 && options.firstFrame) options.firstFrame(id, image);
+                if (f == 0 && options.firstFrame) options.firstFrame(id, image, reference.image);
             }
         }
         // A fixed camera needs no more reference renders: free the reference's buffers now.

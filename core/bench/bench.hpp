@@ -11,12 +11,14 @@
 #include "gl/context.hpp"
 #include "image/image.hpp"
 #include "oit/technique_settings.hpp"
+#include "render/coplanarity.hpp"
 #include "render/deflection_warp.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/stand_in.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -40,9 +42,13 @@ struct BenchOptions {
     int warmupFrames = 2;
     std::optional<CameraPath> cameraPath;   // else the scene's default camera, fixed
     SettingsById settings;                  // from resolveSettings(benchModeIds(modes), ...); defaults where absent
-    // Sees the first frame of each mode (the reference's too) with its id, e.g. to save it; may
-    // be empty. The bench itself writes no files.
-    std::function<void(const std::string& id, const Image& frame)> firstFrame;
+    // Sees the first frame of each mode (the reference's too) with its id and the reference frame
+    // it is compared against (for a reference row, the frame itself), e.g. to save both or their
+    // error map; may be empty. The bench itself writes no files.
+    std::function<void(const std::string& id, const Image& frame, const Image& reference)> firstFrame;
+    // Sees the coplanarity heatmap of the first camera at the bench's size (the frame C_p is
+    // measured on, render/coplanarity.hpp's colours); may be empty, and then none is read back.
+    std::function<void(const Image& heatmap)> coplanarityHeatmap;
     std::function<void(const std::string&)> progress;  // one line per step, may be empty
     // Sees every reference frame the techniques are compared against, with its frame index, as
     // soon as it is read back; may be empty. The reference is what every error figure rests on,
@@ -129,6 +135,7 @@ struct BenchReport {
     // under the reference's tie rule (the GPU coplanarity detector, render/coplanarity.hpp).
     double coplanarityProbability = 0.0;
     double coplanarityOnePerLayerRobustness = 1.0;  // layers / fragments: R_h of plain f2b, dual, bun
+    std::array<std::uint64_t, kCoplanarityBins> pixelsByLargestLayer{};  // the heatmap's histogram
     std::size_t triangles = 0;     // drawn, over the objects
     std::size_t textureBytes = 0;  // decoded textures on the GPU, mip levels included
     std::size_t objects = 0;
@@ -158,5 +165,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options);
 nlohmann::json benchToJson(const BenchReport& report);
 std::string benchToTable(const BenchReport& report);
 std::string benchToCsv(const BenchReport& report);
+
+// The floor row's median GPU time, when the run measured one (it is in the registry, so `--modes
+// all` includes it): every technique's time is also given as a multiple of it ("x floor").
+std::optional<double> floorMs(const BenchReport& report);
+
+// "2.4 MiB", "250.0 KiB", "12 B": memory as the table shows it.
+std::string humanBytes(std::uint64_t bytes);
 
 }  // namespace strata

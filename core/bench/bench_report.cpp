@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -19,21 +20,19 @@ std::string fmt(const char* format, double v) {
     return buffer;
 }
 
+}  // namespace
+
 std::string humanBytes(std::uint64_t bytes) {
     if (bytes >= (1ull << 20)) return fmt("%.1f MiB", double(bytes) / double(1 << 20));
     if (bytes >= 1024) return fmt("%.1f KiB", double(bytes) / 1024.0);
     return std::to_string(bytes) + " B";
 }
 
-// The floor row's median time, when the run measured one (it is in the registry, so
-// `--modes all` includes it): every technique's time is also given as a multiple of it.
 std::optional<double> floorMs(const BenchReport& r) {
     for (const auto& m : r.modes)
         if (m.id == "floor" && m.msMedian > 0.0) return m.msMedian;
     return std::nullopt;
 }
-
-}  // namespace
 
 nlohmann::json benchToJson(const BenchReport& r) {
     nlohmann::json modes = nlohmann::json::array();
@@ -97,6 +96,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"modes", modes},
         {"coplanarity_probability", finite(r.coplanarityProbability)},
         {"coplanarity_one_per_layer_robustness", finite(r.coplanarityOnePerLayerRobustness)},
+        {"coplanarity_pixels_by_largest_layer", r.pixelsByLargestLayer},
         {"triangles", r.triangles},
         {"texture_bytes", r.textureBytes},
         {"objects", r.objects},
@@ -118,7 +118,14 @@ std::string benchToTable(const BenchReport& r) {
         << r.meshTriangles << " triangles, " << fmt("%.1f", double(r.meshBytes) / (1024.0 * 1024.0)) << " MiB)\n";
     out << "device " << r.device.renderer << " (" << r.device.vendor << ", " << r.device.version << ")\n";
     out << "coplanarity probability C_p " << fmt("%.3f", r.coplanarityProbability) << "  R_h one per layer "
-        << fmt("%.3f", r.coplanarityOnePerLayerRobustness) << "  reference " << r.reference << "\n";
+        << fmt("%.3f", r.coplanarityOnePerLayerRobustness) << "  reference " << r.reference;
+    // Rows measured against another reference (the volumetric family's) are named, so no error
+    // figure reads as measured against the header's reference when it was not.
+    std::map<std::string, std::string> otherReferences;
+    for (const auto& m : r.modes)
+        if (m.reference != r.reference && m.reference != m.id) otherReferences[m.reference] += (otherReferences[m.reference].empty() ? "" : ", ") + m.id;
+    for (const auto& [reference, rows] : otherReferences) out << " (" << reference << " for " << rows << ")";
+    out << "\n";
     if (r.budget)
         out << "zoom chosen per frame by the " << r.zoomController << " controller for " << fmt("%.2f", r.budget->targetMs)
             << " ms (+-" << fmt("%.0f", r.budget->band * 100.0) << " %), zoom " << r.budget->minZoom << ".."
@@ -175,15 +182,17 @@ std::string benchToCsv(const BenchReport& r) {
     std::ostringstream out;
     out << "scene,width,height,frames,mode,family,robust,handles_coplanarity,ms_median,ms_p95,cpu_ms_median,"
            "passes,bytes,fragments_total,fragments_captured,robustness_ratio,overflowed,rmse,psnr,max_abs_error";
-    // Appended last, so the columns before it keep their positions with or without a floor row.
+    // The floor's column is last, so the columns before it keep their positions with or without
+    // a floor row.
     const std::optional<double> floorTime = floorMs(r);
-    out << (floorTime ? ",ms_over_floor\n" : "\n");
+    out << ",reference" << (floorTime ? ",ms_over_floor\n" : "\n");
     for (const auto& m : r.modes) {
         out << r.scene << ',' << r.size.x << ',' << r.size.y << ',' << r.frames << ',' << m.id << ',' << m.family
             << ',' << m.robust << ',' << m.handlesCoplanarity << ',' << finite(m.msMedian) << ',' << finite(m.msP95)
             << ',' << finite(m.cpuMsMedian) << ',' << m.passes << ',' << m.bytes << ',' << m.fragmentsTotal << ','
             << m.fragmentsCaptured << ',' << finite(m.robustnessRatio) << ',' << m.overflowed << ','
             << finite(m.rmse) << ',' << finite(m.psnr) << ',' << finite(m.maxAbsError);
+        out << ',' << m.reference;
         if (floorTime) out << ',' << finite(m.msMedian / *floorTime);
         out << '\n';
     }

@@ -160,4 +160,19 @@ Image readImage(const fs::path& path) {
     return image;
 }
 
+Image boxDownscale(const Image& image, int factor) {
+    if (factor < 1) throw std::invalid_argument("boxDownscale: factor must be at least 1");
+    const int w = (image.width + factor - 1) / factor, h = (image.height + factor - 1) / factor;
+    Image out(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            glm::vec4 sum(0.0f);
+            int n = 0;
+            for (int sy = y * factor; sy < std::min(image.height, (y + 1) * factor); ++sy)
+                for (int sx = x * factor; sx < std::min(image.width, (x + 1) * factor); ++sx, ++n) sum += image.at(sx, sy);
+            out.set(x, y, sum / float(n));
+        }
+    return out;
+}
+
 }  // namespace strata

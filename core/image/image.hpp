@@ -69,6 +69,10 @@ void checkImageWritable(const std::filesystem::path& path);
 void writeImage(OutputBatch& batch, const std::filesystem::path& path, const Image& image);
 Image readImage(const std::filesystem::path& path);  // .exr linear; .png decoded from sRGB
 
+// `image` reduced by an integer `factor` (>= 1) with a box filter in linear RGB (alpha too); the
+// last partial row and column average what they cover. For thumbnails.
+Image boxDownscale(const Image& image, int factor);
+
 float linearToSrgb(float v);
 float srgbToLinear(float v);
 

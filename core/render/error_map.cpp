@@ -6,12 +6,48 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
 namespace strata {
 
 static_assert(sizeof(gpu::ErrorPartial) == 16, "ErrorPartial is four 32-bit scalars in std430");
+
+namespace {
+constexpr float kRampStops[] = {ERROR_RAMP_STOPS};
+static_assert(std::size(kRampStops) == 18, "six RGB stops");
+}  // namespace
+
+glm::vec3 errorMapRamp(float t) {
+    // As the compute pass's ramp(): five segments over [0, 1].
+    const float x = std::clamp(t, 0.0f, 1.0f) * 5.0f;
+    const int i = std::min(int(x), 4);
+    const glm::vec3 a(kRampStops[3 * i], kRampStops[3 * i + 1], kRampStops[3 * i + 2]);
+    const glm::vec3 b(kRampStops[3 * i + 3], kRampStops[3 * i + 4], kRampStops[3 * i + 5]);
+    return glm::mix(a, b, x - float(i));
+}
+
+Image errorMapImage(const Image& image, const Image& reference, float scale) {
+    if (image.width != reference.width || image.height != reference.height)
+        throw std::invalid_argument("error map: the image is " + std::to_string(image.width) + "x" +
+                                    std::to_string(image.height) + ", its reference " + std::to_string(reference.width) +
+                                    "x" + std::to_string(reference.height));
+    if (!(scale > 0.0f)) throw std::invalid_argument("error map: scale must be > 0");
+    Image out(image.width, image.height);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 r = glm::vec3(reference.at(x, y));
+            const glm::vec3 d = glm::abs(glm::vec3(image.at(x, y)) - r);
+            const float worst = std::max(d.r, std::max(d.g, d.b));
+            const float luminance = std::clamp(glm::dot(r, glm::vec3(0.2126f, 0.7152f, 0.0722f)), 0.0f, 1.0f);
+            const glm::vec3 shown = worst == 0.0f ? glm::vec3(float(ERROR_SAME_BASE) + float(ERROR_SAME_GAIN) * luminance)
+                                                  : errorMapRamp(worst / scale);
+            out.set(x, y, glm::vec4(shown, 1.0f));
+        }
+    return out;
+}
 
 ErrorMap::ErrorMap() : program_(gl::buildProgram({"debug/error_map.comp.glsl"})) {
     scaleLocation_ = glGetUniformLocation(program_.id(), "uScale");

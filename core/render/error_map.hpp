@@ -5,6 +5,7 @@
 // image/image.hpp, so the view agrees with the bench) and the worst pixel with its value.
 // The reduction runs on the GPU per 8x8 group; the host adds the groups in double.
 #include "gl/objects.hpp"
+#include "image/image.hpp"
 
 #include <glm/glm.hpp>
 
@@ -44,5 +45,13 @@ private:
     gl::Buffer partials_;
     std::size_t partialCapacity_ = 0;
 };
+
+// The same false colour on the CPU, for images already read back (the bench report's error maps):
+// per pixel what ErrorMap::compare writes for `image` against `reference` at `scale`. Throws
+// std::invalid_argument when the sizes differ or scale is not > 0.
+Image errorMapImage(const Image& image, const Image& reference, float scale = 0.05f);
+
+// The false colour of an error of `t` x scale (0 < t; clamped at 1): the legend's ramp.
+glm::vec3 errorMapRamp(float t);
 
 }  // namespace strata

@@ -26,11 +26,12 @@ shared float sMax[kGroupPixels];
 shared uint sPixel[kGroupPixels];
 
 vec3 ramp(float t) {
-    const vec3 stops[6] = vec3[6](vec3(0.02, 0.02, 0.25), vec3(0.05, 0.2, 0.9), vec3(0.0, 0.75, 0.85),
-                                  vec3(0.1, 0.8, 0.15), vec3(0.95, 0.85, 0.05), vec3(0.95, 0.05, 0.03));
+    const float stops[18] = float[18](ERROR_RAMP_STOPS);
     float x = clamp(t, 0.0, 1.0) * 5.0;
     int i = min(int(x), 4);
-    return mix(stops[i], stops[i + 1], x - float(i));
+    vec3 a = vec3(stops[3 * i], stops[3 * i + 1], stops[3 * i + 2]);
+    vec3 b = vec3(stops[3 * i + 3], stops[3 * i + 4], stops[3 * i + 5]);
+    return mix(a, b, x - float(i));
 }
 
 void main() {
@@ -45,7 +46,7 @@ void main() {
         sum = dot(d, d);
         worst = max(d.r, max(d.g, d.b));
         pixel = uint(p.y) * uint(size.x) + uint(p.x);
-        vec3 shown = worst == 0.0 ? vec3(0.03 + 0.22 * clamp(dot(reference, vec3(0.2126, 0.7152, 0.0722)), 0.0, 1.0))
+        vec3 shown = worst == 0.0 ? vec3(ERROR_SAME_BASE + ERROR_SAME_GAIN * clamp(dot(reference, vec3(0.2126, 0.7152, 0.0722)), 0.0, 1.0))
                                   : ramp(worst / uScale);
         imageStore(uFalseColor, p, vec4(shown, 1.0));
     }

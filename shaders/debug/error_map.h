@@ -5,6 +5,15 @@
 #define STRATA_ERROR_MAP_H
 #include "common/host_device.h"
 
+// The false colour of an error e (the largest per-channel difference) at t = e / scale: six stops,
+// dark blue (t -> 0) through blue, cyan, green, yellow to red (t >= 1), linear RGB, three floats
+// each; a pixel with e == 0 shows the reference's luminance L as ERROR_SAME_BASE +
+// ERROR_SAME_GAIN * L. The GPU pass and the CPU copy for reports (errorMapImage) both read these.
+#define ERROR_RAMP_STOPS 0.02, 0.02, 0.25, 0.05, 0.2, 0.9, 0.0, 0.75, 0.85, \
+                         0.1, 0.8, 0.15, 0.95, 0.85, 0.05, 0.95, 0.05, 0.03
+#define ERROR_SAME_BASE 0.03
+#define ERROR_SAME_GAIN 0.22
+
 GPU_NAMESPACE_BEGIN
 
 GPU_CONST uint BIND_ERROR_IMAGE = 0u;      // texture unit: the image under test (RGBA32F, linear)
