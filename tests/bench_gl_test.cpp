@@ -2,6 +2,7 @@
 #include "gl_test_support.hpp"
 
 #include "bench/bench.hpp"
+#include "io/interrupt.hpp"
 #include "reference/raycast.hpp"
 #include "scene/builtin_scenes.hpp"
 
@@ -10,6 +11,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <csignal>
 #include <map>
 
 using namespace strata;
@@ -177,4 +179,39 @@ TEST_CASE("bench's reference frames equal the CPU ray cast, with a fixed camera 
         // camera (the bench keeps one reference frame at a time).
         CHECK(seen == std::map<int, int>{{0, 2}, {1, 2}, {2, 2}});
     }
+}
+
+TEST_CASE("bench stopped by a signal keeps exactly the techniques that completed, and says so") {
+    test::glContext();
+    installInterruptHandlers();
+    clearInterrupt();
+    GpuScene scene(makeLayersScene(3));
+    BenchOptions options;
+    options.sceneName = "builtin:layers:3";
+    options.modes = {"abuffer", "wboit", "ll"};
+    options.size = {16, 16};
+    options.frames = 3;
+    options.warmupFrames = 0;
+    // SIGTERM arrives while wboit draws its first frame: abuffer completed, wboit is dropped, ll never starts.
+    std::vector<std::string> started;
+    options.firstFrame = [&](const std::string& id, const Image&, const Image&) {
+        started.push_back(id);
+        if (id == "wboit") std::raise(SIGTERM);
+    };
+    const BenchReport report = runBench(scene, options);
+    CHECK(interruptSignal() == SIGTERM);
+    clearInterrupt();
+    CHECK(report.interrupted);
+    CHECK(report.modesPlanned == 3);
+    REQUIRE(report.modes.size() == 1);
+    CHECK(report.modes[0].id == "abuffer");
+    CHECK(started == std::vector<std::string>{"abuffer", "wboit"});
+    CHECK(benchToJson(report)["interrupted"] == true);
+    CHECK(benchToTable(report).find("INTERRUPTED: 1 of 3 techniques completed") != std::string::npos);
+    // Without a signal the same run completes.
+    options.firstFrame = nullptr;
+    const BenchReport whole = runBench(scene, options);
+    CHECK_FALSE(whole.interrupted);
+    CHECK(whole.modes.size() == 3);
+    CHECK(benchToJson(whole)["interrupted"] == false);
 }

@@ -266,5 +266,56 @@ assert rows["kbuffer"] == {"capacity": 5, "tail": False, "precision": 16}, rows[
 assert isinstance(rows["ll"]["capacity"], int)
 PY
 
+# Interrupts (io/interrupt.hpp). A bench sent SIGINT, then one sent SIGTERM, while a later
+# technique runs: status 128 + the signal, one line naming it, JSON and CSV with exactly the
+# techniques that completed (a prefix of those asked for, "interrupted": true) and no temporary.
+# A demo sent SIGINT leaves no report folder at all. (Python sends the signals: a shell's
+# background job starts with SIGINT ignored, and Strata leaves an ignored signal ignored.)
+for signal in INT TERM; do
+  mkdir -p "$tmp/int-$signal"
+  if python3 - "$strata" "$tmp/int-$signal" "$signal" <<'PY'; then ok; else bad "bench interrupted by SIG$signal"; fi
+import json, os, signal, subprocess, sys, time
+strata, folder, name = sys.argv[1], sys.argv[2], sys.argv[3]
+modes = ["abuffer", "wboit", "ll", "kbuffer", "fab"]
+err = open(os.path.join(folder, "stderr"), "w+")
+p = subprocess.Popen([strata, "bench", "builtin:layers:8", "--size", "96x96", "--frames", "400", "--warmup", "0",
+                      "--modes", ",".join(modes), "--json", os.path.join(folder, "b.json"),
+                      "--csv", os.path.join(folder, "b.csv")], stdout=subprocess.DEVNULL, stderr=err)
+deadline = time.time() + 240
+while time.time() < deadline and "[3/5]" not in open(err.name).read():
+    time.sleep(0.05)
+p.send_signal(getattr(signal, "SIG" + name))
+rc = p.wait(timeout=240)
+text = open(err.name).read()
+assert rc == 128 + getattr(signal, "SIG" + name), (rc, text)
+assert text.strip().splitlines()[-1] == "strata: interrupted by SIG" + name, text
+started = max(int(line.split("[")[1].split("/")[0]) for line in text.splitlines() if line.startswith("bench: ["))
+d = json.load(open(os.path.join(folder, "b.json")))
+ids = [m["id"] for m in d["modes"]]
+assert d["interrupted"] is True
+# The technique running when the signal came is dropped; one that had just finished is kept.
+assert ids == modes[:len(ids)] and started - 1 <= len(ids) <= started and 2 <= len(ids) < 5, (ids, started)
+csv_rows = open(os.path.join(folder, "b.csv")).read().strip().splitlines()[1:]
+assert [r.split(",")[4] for r in csv_rows] == ids
+assert sorted(os.listdir(folder)) == ["b.csv", "b.json", "stderr"], os.listdir(folder)
+PY
+done
+mkdir -p "$tmp/int-demo"
+if python3 - "$strata" "$tmp/int-demo" <<'PY'; then ok; else bad "demo interrupted by SIGINT"; fi
+import os, signal, subprocess, sys, time
+strata, folder = sys.argv[1], sys.argv[2]
+p = subprocess.Popen([strata, "demo", "--headless", "--size", "96x64", "--frames", "200", "--out",
+                      os.path.join(folder, "report")], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+seen = ""
+while "[3/" not in seen:
+    line = p.stderr.readline()
+    assert line, seen
+    seen += line
+p.send_signal(signal.SIGINT)
+rest = p.communicate(timeout=240)[1]
+assert p.returncode == 130, (p.returncode, rest)
+assert os.listdir(folder) == [], os.listdir(folder)  # the report folder and its temporaries are gone
+PY
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -8,6 +8,7 @@
 #include "gl/context.hpp"
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
+#include "io/interrupt.hpp"
 #include "render/frame_size.hpp"
 #include "lod_options.hpp"
 #include "zoom_options.hpp"
@@ -129,6 +130,8 @@ void run(const BenchArgs& a) {
     if (!reportWarning.empty()) std::fprintf(stderr, "%s\n", reportWarning.c_str());
     if (reportFolder)
         std::cout << "report written to " << std::filesystem::absolute(a.report).string() << "/index.html\n";
+    // The completed rows are written and marked; the status still says the run did not finish.
+    if (report.interrupted) throw Interrupted(interruptSignal());
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "gl/context.hpp"
 #include "image/image.hpp"
 #include "io/atomic_file.hpp"
+#include "io/interrupt.hpp"
 #include "render/frame_size.hpp"
 #include "view_app.hpp"
 
@@ -45,6 +46,8 @@ void writeReport(const DemoArgs& a) {
     ReportFolder folder(outputs, dir, options.size);
     folder.attach(options);
     BenchReport report = runBench(gpu, options);
+    // The demo's report is whole or absent: an interrupted run leaves nothing (the batch unwinds).
+    if (report.interrupted) throw Interrupted(interruptSignal());
     ReportPageText text;
     text.title = "Strata demo report";
     text.description =

@@ -5,6 +5,7 @@
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
 #include "gl/debug.hpp"
+#include "io/interrupt.hpp"
 #include "io/atomic_file.hpp"
 #include "oit/technique.hpp"
 #include "oit/technique_settings.hpp"
@@ -86,7 +87,9 @@ void run(const RenderArgs& a) {
         if (!a.highlight.empty()) highlighted = coplanarityHighlight(image, largest);
         gl::checkGl("coplanarity read back");
     }
-    // The image and its heatmap appear together or not at all.
+    // The image and its heatmap appear together or not at all; a signal during the frame or its
+    // bake stops here, before anything is written.
+    throwIfInterrupted();
     OutputBatch outputs;
     writeImage(outputs, a.out, image);
     if (!a.heatmap.empty()) writeImage(outputs, a.heatmap, heat);

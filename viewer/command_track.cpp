@@ -2,6 +2,7 @@
 // image deflection, and reports the viewing error each combination leaves and what an update
 // costs. No GL: everything here runs on the CPU (tracking/ library).
 #include "io/atomic_file.hpp"
+#include "io/interrupt.hpp"
 #include "io/parse_integers.hpp"
 #include "io/printable.hpp"
 #include "tracking/activity_motion.hpp"
@@ -172,6 +173,7 @@ std::string sweepCsv(const std::vector<std::unique_ptr<Predictor>>& predictors, 
             out += "," + std::string(p->name()) + (d == Deflect::None ? "" : "+" + std::string(deflectName(d)));
     out += "\n";
     for (int ms = 0; ms <= 100; ms += 5) {
+        throwIfInterrupted();
         TwoStepConfig c = base;
         c.latency = ms * 1e-3;
         out += std::to_string(ms);
@@ -266,6 +268,7 @@ void runTrack(const TrackOptions& o) {
     std::vector<Row> rows;
     std::vector<Adapted> adapted;
     for (const auto& p : predictors) {
+        throwIfInterrupted();  // between predictors: nothing is written before the end
         if (auto a = adaptedNoise(*p, measured)) adapted.push_back(*a);
         const auto frames = simulateTwoStep(*p, measured, truth, config);
         if (frames.empty()) {
@@ -324,6 +327,7 @@ void runTrack(const TrackOptions& o) {
         outputs.addText(o.json, j.dump(2) + "\n");
     }
     if (!o.sweepCsv.empty()) outputs.addText(o.sweepCsv, sweepCsv(predictors, deflects, measured, truth, config, k));
+    throwIfInterrupted();
     outputs.commit();
 }
 

@@ -1,6 +1,7 @@
 // strata: the command line. Errors are caught here, once, and printed as one line.
 #include "commands.hpp"
 
+#include "io/interrupt.hpp"
 #include "io/printable.hpp"
 
 #include <cstdio>
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
 #ifdef STRATA_HAVE_TRACKING
     strata::registerTrackCommand(app);
 #endif
+    strata::installInterruptHandlers();
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -66,6 +68,13 @@ int main(int argc, char** argv) {
         std::string name = commandName(app);
         std::fprintf(stderr, "%s: %s (see %s --help)\n", name.c_str(), oneLine(e.what()).c_str(), name.c_str());
         return 1;
+        // A command that finished its work anyway (the viewer closes its window on the signal)
+        // still reports that it was stopped.
+        if (strata::interruptSignal()) throw strata::Interrupted(strata::interruptSignal());
+    } catch (const strata::Interrupted& e) {
+        // Everything unwound on the way here: temporaries removed, completed outputs written.
+        std::fprintf(stderr, "strata: %s\n", e.what());
+        return e.exitStatus();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "strata: %s\n", oneLine(e.what()).c_str());
         return 1;

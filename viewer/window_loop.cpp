@@ -3,6 +3,7 @@
 #include "window_capture.hpp"
 
 #include "gl/debug.hpp"
+#include "io/interrupt.hpp"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -42,7 +43,8 @@ void runLoop(GLFWwindow* window, WindowMode& mode, Presenter& presenter, const W
     std::uint64_t frames = 0;
     double last = glfwGetTime();
     mode.start(last);
-    while (!glfwWindowShouldClose(window)) {
+    // Ctrl-C in the terminal closes the window as its close button would (recordings are saved).
+    while (!glfwWindowShouldClose(window) && !interruptSignal()) {
         glfwPollEvents();
         const double now = glfwGetTime();
         const double dt = now - last;

@@ -1,6 +1,7 @@
 #include "bench/bench.hpp"
 
 #include "gl/debug.hpp"
+#include "io/interrupt.hpp"
 #include "oit/technique.hpp"
 #include "frame/frame_renderer.hpp"
 #include "frame/zoom_calibration.hpp"
@@ -149,11 +150,17 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         }
         return ref.image;
     };
-    for (std::size_t m = 0; m < modes.size(); ++m) {
+    report.modesPlanned = 0;
+    for (const auto& id : modes) report.modesPlanned += benchReferenceOf(id) != id || requested(id);  // rows, as below
+    for (std::size_t m = 0; m < modes.size() && !report.interrupted; ++m) {
         const std::string& id = modes[m];
         const std::string referenceId = benchReferenceOf(id);
         // Zoomed, an unrequested reference needs no rows of its own (referenceFor draws its frames).
         if (zoomed && referenceId == id && !requested(id)) continue;
+        if (interruptSignal()) {
+            report.interrupted = true;
+            break;
+        }
         if (options.progress)
             options.progress("bench: [" + std::to_string(m + 1) + "/" + std::to_string(modes.size()) + "] " + id);
         std::unique_ptr<Technique> owned = createConfiguredTechnique(id, options.settings);
@@ -193,6 +200,11 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
         for (int f = 0; f < options.frames; ++f) {
+            // A signal ends the run between frames; this technique's rows are incomplete and dropped.
+            if (interruptSignal()) {
+                report.interrupted = true;
+                break;
+            }
             // The reference frame first (when it is not in hand), so the technique's frame is the
             // last one rendered when its output is read.
             if (!isReference) referenceFor(reference, referenceId, f);
@@ -259,6 +271,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 if (f == 0 && options.firstFrame) options.firstFrame(id, image, reference.image);
             }
         }
+        if (report.interrupted) break;
         // A fixed camera needs no more reference renders: free the reference's buffers now.
         if (isReference && !options.cameraPath) reference.technique.reset();
         mode.msMedian = percentile(gpu, 0.5);

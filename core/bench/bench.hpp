@@ -146,6 +146,9 @@ struct BenchReport {
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
     nlohmann::json lod;                // BenchOptions::lodReport (null without LOD)
+    // A signal stopped the run: `modes` are those that completed, of `modesPlanned`.
+    bool interrupted = false;
+    std::size_t modesPlanned = 0;
 };
 
 // Maximal runs of frames over targetMs x (1 + band).
@@ -159,7 +162,9 @@ std::vector<std::string> benchModeIds(const std::vector<std::string>& modes);
 // (whose model draws volumes as media), abuffer for every other.
 std::string benchReferenceOf(const std::string& id);
 
-// Needs a current GL context. Throws std::invalid_argument for an unknown mode.
+// Needs a current GL context. Throws std::invalid_argument for an unknown mode. Stops early when
+// SIGINT or SIGTERM arrives (io/interrupt.hpp): the report then holds the techniques that
+// completed every frame, and says `interrupted`.
 BenchReport runBench(const GpuScene& scene, const BenchOptions& options);
 
 nlohmann::json benchToJson(const BenchReport& report);

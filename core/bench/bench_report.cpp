@@ -108,6 +108,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
         {"zoom_controller", r.zoomController},
         {"lod", r.lod},
+        {"interrupted", r.interrupted},
     };
 }
 
@@ -133,6 +134,9 @@ std::string benchToTable(const BenchReport& r) {
     else if (r.zoom > 1)
         out << "zoom " << r.zoom << " (" << r.zoomFilter << "): drawn at 1/" << r.zoom
             << " size and enlarged; errors against the reference at zoom 1\n";
+    if (r.interrupted)
+        out << "INTERRUPTED: " << r.modes.size() << " of " << r.modesPlanned
+            << " techniques completed before the signal; only they are listed\n";
     out << "\n";
     const std::optional<double> floorTime = floorMs(r);
     char line[256];

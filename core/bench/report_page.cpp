@@ -279,6 +279,9 @@ std::string reportHtml(const BenchReport& r, const ReportPageText& text) {
         << r.objects << " objects, " << r.triangles << " triangles</p>\n<p class=\"meta\">Device " << htmlEscape(r.device.renderer)
         << " (" << htmlEscape(r.device.vendor) << ", " << htmlEscape(r.device.version) << "), " << htmlEscape(text.date) << "</p>\n";
     if (!text.command.empty()) out << "<p class=\"meta\">Made by <code>" << htmlEscape(text.command) << "</code></p>\n";
+    if (r.interrupted)
+        out << "<p class=\"bad\">Interrupted: " << r.modes.size() << " of " << r.modesPlanned
+            << " techniques completed before the signal; only they are shown.</p>\n";
     out << "<p id=\"broken\" hidden></p>\n";
 
     out << "<h2>The scene</h2>\n";
