@@ -118,6 +118,14 @@ TEST_CASE("head-movement CSV: numeric and date-time timestamps, Unity frame conv
     CHECK(parseDateTimeSeconds("1970-01-02T00:00:01.5", s));
     CHECK(s == doctest::Approx(86401.5));
     CHECK_FALSE(parseDateTimeSeconds("yesterday", s));
+    // Every field zero-padded digits: no sign, no space, no short field (sscanf took all three).
+    CHECK_FALSE(parseDateTimeSeconds("1970-1-02T00:00:01", s));
+    CHECK_FALSE(parseDateTimeSeconds("1970-01-02T+0:00:01", s));
+    CHECK_FALSE(parseDateTimeSeconds(" 1970-01-02T00:00:01", s));
+    CHECK_FALSE(parseDateTimeSeconds("1970-01-02X00:00:01", s));
+    CHECK_FALSE(parseDateTimeSeconds("1970-01-02T00:00", s));
+    CHECK(parseDateTimeSeconds("1970-01-01 00:01:02", s));
+    CHECK(s == 62.0);
     CHECK(errorOf("h.csv", "Timestamp,Foo\n1,2\n") == tempPath("h.csv") + ":1: header lacks column `UnitQuaternion.x`");
     CHECK(errorOf("i.csv", header + "0,0,0,0,0,1,0,0,0\nnoon,0,0,0,0,1,0,0,0\n").rfind(tempPath("i.csv") + ":3: Timestamp", 0) == 0);
     CHECK(errorOf("j.csv", header + "0,0,0,0,0,1,0,0\n").rfind(tempPath("j.csv") + ":2: expected 9", 0) == 0);

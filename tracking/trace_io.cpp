@@ -128,14 +128,23 @@ long long daysFromCivil(long long y, unsigned m, unsigned d) {
 }  // namespace
 
 bool parseDateTimeSeconds(const std::string& text, double& seconds) {
+    // "YYYY-MM-DD[T ]HH:MM:SS[.fff]", every field zero-padded to its width: digits only, read
+    // with from_chars (no sign, no space, nothing sscanf would guess at).
+    auto digits = [&](std::size_t at, std::size_t width, int& out) {
+        if (text.size() < at + width) return false;
+        for (std::size_t i = at; i < at + width; ++i)
+            if (text[i] < '0' || text[i] > '9') return false;
+        return std::from_chars(text.data() + at, text.data() + at + width, out).ptr == text.data() + at + width;
+    };
+    auto is = [&](std::size_t at, const char* allowed) {
+        return at < text.size() && std::string_view(allowed).find(text[at]) != std::string_view::npos;
+    };
     int y = 0, mo = 0, d = 0, h = 0, mi = 0;
-    char sep = 0;
-    int consumed = 0;
-    if (std::sscanf(text.c_str(), "%4d-%2d-%2d%c%2d:%2d:%n", &y, &mo, &d, &sep, &h, &mi, &consumed) != 6 ||
-        consumed == 0 || (sep != ' ' && sep != 'T'))
+    if (!digits(0, 4, y) || !is(4, "-") || !digits(5, 2, mo) || !is(7, "-") || !digits(8, 2, d) || !is(10, "T ") ||
+        !digits(11, 2, h) || !is(13, ":") || !digits(14, 2, mi) || !is(16, ":"))
         return false;
     double sec = 0.0;
-    if (!parseDouble(trim(text.substr(static_cast<std::size_t>(consumed))), sec)) return false;
+    if (!parseDouble(trim(text.substr(17)), sec)) return false;
     if (mo < 1 || mo > 12 || d < 1 || d > 31 || h < 0 || h > 23 || mi < 0 || mi > 59 || sec < 0.0 || sec >= 61.0)
         return false;
     seconds = double(daysFromCivil(y, unsigned(mo), unsigned(d))) * 86400.0 + h * 3600.0 + mi * 60.0 + sec;

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -96,9 +97,10 @@ constexpr double kMaxFramesScored = 1e6;        // ~200 MB of frame poses per pr
 CLI::Validator finiteIn(double low, double high, bool open, const char* unit) {
     return CLI::Validator(
         [=](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            const bool number = !text.empty() && end == text.c_str() + text.size();
+            // from_chars: the whole text, as written (no locale, no leading space or '+').
+            double v = 0.0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+            const bool number = !text.empty() && error == std::errc() && end == text.data() + text.size();
             if (number && std::isfinite(v) && (open ? v > low : v >= low) && v <= high) return {};
             char message[160];
             std::snprintf(message, sizeof message, "must be a number in %s%g, %g] %s, got ", open ? "(" : "[", low,

@@ -3,6 +3,7 @@
 #include "io/printable.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <map>
 #include <set>
@@ -44,7 +45,7 @@ bool indexedSemantic(const std::string& name, std::string& set, int& index) {
             !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit((unsigned char)c); }))
             return false;
         set = s;
-        index = std::stoi(digits);
+        std::from_chars(digits.data(), digits.data() + digits.size(), index);  // at most 6 digits: fits
         return true;
     }
     return false;

@@ -21,6 +21,7 @@
 #include "oit/peeling/coplanar_ids.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peel_loop.hpp"
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 
@@ -41,47 +42,42 @@ public:
         const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, model);
-        stats_ = {};
+        PeelLoop loop(frame, stats_, skipper_, settings_.skipPeeled);
         if (!ids_.bind(frame)) stats_.overflowed = true;
-        skipper_.beginFrame(frame, settings_.skipPeeled);
         for (const gl::Framebuffer* fbo : {&initFbo_, &countFbo_, &extractFbo_})
             glNamedFramebufferTexture(fbo->id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
         const float frontClear[4] = {-1.0f, 0.0f, -kNoId, 0.0f};
         const float backClear[4] = {2.0f, 0.0f, -kNoId, 0.0f};  // MIN-blended by the init
-        const float empty[4] = {0, 0, 0, 1};
         const float nothingLeft[4] = {-1.0f, -2.0f, 0.0f, 0.0f};
         glClearTexImage(side_[0].state.id(), 0, GL_RGBA, GL_FLOAT, frontClear);
         glClearTexImage(side_[1].state.id(), 0, GL_RGBA, GL_FLOAT, backClear);
-        const float nothingAbsorbed[4] = {1, 1, 1, 1};
         for (Side& s : side_) {
-            glClearTexImage(s.accum.id(), 0, GL_RGBA, GL_FLOAT, empty);
-            glClearTexImage(s.layer.id(), 0, GL_RGBA, GL_FLOAT, empty);
-            if (!rgb()) continue;
-            glClearTexImage(s.accumPasses.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-            glClearTexImage(s.layerPasses.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+            clearAccumulation(s.accum.id(), rgb() ? s.accumPasses.id() : 0);
+            clearAccumulation(s.layer.id(), rgb() ? s.layerPasses.id() : 0);
         }
         glClearTexImage(bound_.id(), 0, GL_RGBA, GL_FLOAT, nothingLeft);
         setDepthOrderUniforms(frame, programs_->count.id());
         setDepthOrderUniforms(frame, programs_->extract.id());
 
-        const std::uint64_t total = initialise(frame);
-        for (int iteration = 0; total > 0; ++iteration) {
-            if (iteration >= settings_.maxPasses) {
-                stats_.overflowed = true;
-                break;
-            }
-            count(frame);
-            const Checked c = check(frame);
-            if (c.coplanar > 0) extract(frame);
-            resolve(frame);
-            const std::uint64_t captured = c.coplanar + c.any;
-            stats_.fragmentsCaptured += captured;
-            if (stats_.fragmentsCaptured >= total || captured == 0) break;
-            skipper_.query(frame, bound_.id(), {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
+        loop.setTotal(initialise(frame));
+        if (loop.total() > 0) {
+            PeelLoopOptions options;
+            options.maxPasses = settings_.maxPasses;
+            // What is left lies between the two sides' layers just resolved (the skip bound).
+            options.between = [&](int) {
+                skipper_.query(frame, bound_.id(), {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
+            };
+            // Both sides' layers are captured whole, coplanar fragments included.
+            loop.run(options, [&](int) {
+                count(frame);
+                const Checked c = check(frame);
+                if (c.coplanar > 0) extract(frame);
+                resolve(frame);
+                return PeelStep{c.coplanar + c.any, c.coplanar + c.any};
+            });
         }
         if (stats_.fragmentsCaptured > 0) composite(frame);
-        skipper_.endFrame(stats_);
-        stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
+        loop.finish();
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Per side: state and count RGBA32F (16 B each), min and max colour, layer part and
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), as many again with coloured

@@ -28,6 +28,7 @@
 #include "oit/peeling/coplanar_ids.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peel_loop.hpp"
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 
@@ -43,47 +44,41 @@ public:
         const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, model);
-        stats_ = {};
+        PeelLoop loop(frame, stats_, skipper_, settings_.skipPeeled);
         if (!ids_.bind(frame)) stats_.overflowed = true;
-        skipper_.beginFrame(frame, settings_.skipPeeled);
         attachOpaqueDepth(frame);
         const float noLayer[4] = {-1.0f, 0.0f, -kNoId, 0.0f};
-        const float empty[4] = {0, 0, 0, 1};
         glClearTexImage(state_.id(), 0, GL_RGBA, GL_FLOAT, noLayer);
-        glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, empty);
-        glClearTexImage(layer_.id(), 0, GL_RGBA, GL_FLOAT, empty);
-        if (rgb()) {
-            const float nothingAbsorbed[4] = {1, 1, 1, 1};
-            glClearTexImage(accumPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-            glClearTexImage(layerPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-        }
+        clearAccumulation(accum_.id(), rgb() ? accumPasses_.id() : 0);
+        clearAccumulation(layer_.id(), rgb() ? layerPasses_.id() : 0);
         for (GLuint p : {programs_->count.id(), programs_->extract.id(), programs_->next.id()})
             if (p) setDepthOrderUniforms(frame, p);
 
-        const std::uint64_t total = initialise(frame);
-        for (int iteration = 0; total > 0; ++iteration) {
-            if (iteration >= settings_.maxPasses) {
-                stats_.overflowed = true;
-                break;
-            }
-            if (threePass_) nextAnchors(frame);
-            count(frame);
-            std::uint64_t captured = 0;
-            if (threePass_) {
-                captured = extract(frame);
-                resolve(frame);
-            } else {
-                const std::uint64_t coplanar = check(frame);
-                if (coplanar > 0) extract(frame);
-                captured = resolve(frame) + coplanar;
-            }
-            stats_.fragmentsCaptured += captured;
-            if (stats_.fragmentsCaptured >= total || captured == 0) break;
-            skipper_.query(frame, state_.id(), {RemainingSide::NotNearerThanR});
+        loop.setTotal(initialise(frame));
+        if (loop.total() > 0) {
+            PeelLoopOptions options;
+            options.maxPasses = settings_.maxPasses;
+            // What is left lies behind the layer just resolved (the state's depth).
+            options.between = [&](int) { skipper_.query(frame, state_.id(), {RemainingSide::NotNearerThanR}); };
+            // Every fragment of a layer is captured, coplanar ones included: what an iteration
+            // takes out of the range is what it keeps.
+            loop.run(options, [&](int) {
+                if (threePass_) nextAnchors(frame);
+                count(frame);
+                std::uint64_t captured = 0;
+                if (threePass_) {
+                    captured = extract(frame);
+                    resolve(frame);
+                } else {
+                    const std::uint64_t coplanar = check(frame);
+                    if (coplanar > 0) extract(frame);
+                    captured = resolve(frame) + coplanar;
+                }
+                return PeelStep{captured, captured};
+            });
         }
         if (stats_.fragmentsCaptured > 0) composite(frame);
-        skipper_.endFrame(stats_);
-        stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
+        loop.finish();
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // State and count RGBA32F (16 B each), min and max colour, layer far part and
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), as many again with coloured

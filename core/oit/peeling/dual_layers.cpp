@@ -21,6 +21,7 @@
 #include "oit/peeling/layer_storage.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peel_loop.hpp"
 #include "oit/precision.hpp"
 
 #include <vector>
@@ -36,43 +37,31 @@ public:
         const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, s.precision, model);
-        stats = {};
-        skipper_.beginFrame(frame, s.skipPeeled);
+        PeelLoop loop(frame, stats, skipper_, s.skipPeeled);
         storage_.prepare(frame.size, 2, s.capacity, s.maxBlockMiB);
         setDepthOrderUniforms(frame, programs_->peel.id());
-        const std::uint64_t total = initialise(frame, stats);
-        std::uint64_t remaining = total, overflow = 0;
-        if (total > 0) {
-            const float clearAccum[4] = {0, 0, 0, 1};
-            glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-            glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-            if (rgb()) {
-                const float nothingAbsorbed[4] = {1, 1, 1, 1};
-                glClearTexImage(frontPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-                glClearTexImage(backPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-            }
-            for (int iteration = 1;; ++iteration) {
-                if (iteration > s.maxPasses) {
-                    stats.overflowed = true;
-                    break;
-                }
-                const int cur = iteration % 2;
-                const LayerCounts c = peel(frame, cur, stats);
-                if (c.inLayer == 0) break;  // a guard: a non-empty range has a front layer
-                resolve(frame, stats);
-                stats.fragmentsCaptured += c.stored;
-                overflow += c.overflow;
-                if (c.inLayer >= remaining) break;
-                remaining -= c.inLayer;
-                skipper_.query(frame, minMax_[cur].id(),
+        loop.setTotal(initialise(frame, stats));
+        if (loop.total() > 0) {
+            clearAccumulation(frontAccum_.id(), rgb() ? frontPasses_.id() : 0);
+            clearAccumulation(backAccum_.id(), rgb() ? backPasses_.id() : 0);
+            PeelLoopOptions options;
+            options.maxPasses = s.maxPasses;
+            // What is left lies inside the next range, between its nearest and farthest depth.
+            options.between = [&](int iteration) {
+                skipper_.query(frame, minMax_[(iteration + 1) % 2].id(),
                                {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
-            }
+            };
+            // Iteration i peels from minMax_[i % 2] into minMax_[(i + 1) % 2] (the init wrote minMax_[0]).
+            loop.run(options, [&](int iteration) {
+                const LayerCounts c = peel(frame, (iteration + 1) % 2, stats);
+                if (c.inLayer == 0) return PeelStep{};  // a guard: a non-empty range has a front layer
+                resolve(frame, stats);
+                return PeelStep{c.inLayer, c.stored, c.overflow};
+            });
             composite(frame, stats);
         }
-        skipper_.endFrame(stats);
         storage_.endFrame();
-        stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
-        if (overflow > 0) stats.overflowed = true;
+        loop.finish();
         // Two RG32F min-max targets (8 B each), front and back accumulations (RGBA16F, 8 B, or
         // RGBA32F, 16 B, each; twice with coloured filters) and the layer storage of both sides.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);

@@ -15,6 +15,7 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peel_loop.hpp"
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 
@@ -29,33 +30,27 @@ public:
         const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, model);
-        stats_ = {};
-        skipper_.beginFrame(frame, settings_.skipPeeled);
-        std::uint64_t total = initialise(frame);
-        if (total > 0) {
-            const float clearAccum[4] = {0, 0, 0, 1};
-            glClearTexImage(frontAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-            glClearTexImage(backAccum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-            if (rgb()) {
-                const float nothingAbsorbed[4] = {1, 1, 1, 1};
-                glClearTexImage(frontAccumFilter_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-                glClearTexImage(backAccumFilter_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-            }
-            for (int pass = 1;; ++pass) {
-                if (pass > settings_.maxPasses) {
-                    stats_.overflowed = true;
-                    break;
-                }
-                int cur = pass % 2;
-                peel(frame, cur);
-                if (!blend(frame, cur)) break;
-                skipper_.query(frame, minMax_[cur].id(),
+        PeelLoop loop(frame, stats_, skipper_, settings_.skipPeeled);
+        loop.setTotal(initialise(frame));
+        if (loop.total() > 0) {
+            clearAccumulation(frontAccum_.id(), rgb() ? frontAccumFilter_.id() : 0);
+            clearAccumulation(backAccum_.id(), rgb() ? backAccumFilter_.id() : 0);
+            PeelLoopOptions options;
+            options.maxPasses = settings_.maxPasses;
+            // What is left lies inside the next range, between its nearest and farthest depth.
+            options.between = [&](int pass) {
+                skipper_.query(frame, minMax_[(pass + 1) % 2].id(),
                                {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
-            }
+            };
+            // Pass p peels from minMax_[p % 2] into minMax_[(p + 1) % 2] (the init wrote minMax_[0]).
+            loop.run(options, [&](int pass) {
+                const int cur = (pass + 1) % 2;
+                peel(frame, cur);
+                return blend(frame, cur);
+            });
             composite(frame);
         }
-        skipper_.endFrame(stats_);
-        stats_.fragmentsDropped = total - std::min(total, stats_.fragmentsCaptured);
+        loop.finish();
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Two RG32F min-max targets (8 B), front and back layers and front and back
         // accumulations (RGBA16F, 8 B, or RGBA32F, 16 B, each).
@@ -173,11 +168,11 @@ private:
         ++stats_.passes;
     }
 
-    // Blends the layers just peeled and adds them to fragmentsCaptured; returns whether any
-    // pixel has fragments left strictly inside the next range (minMax_[cur]). Three full-screen
-    // draws under occlusion queries (dual_blend.frag.glsl): counting with atomics instead cost
-    // half of this pass on llvmpipe.
-    bool blend(const FrameContext& frame, int cur) {
+    // Blends the layers just peeled; returns their fragments and whether any pixel has fragments
+    // left strictly inside the next range (minMax_[cur]). Three full-screen draws under occlusion
+    // queries (dual_blend.frag.glsl): counting with atomics instead cost half of this pass on
+    // llvmpipe.
+    PeelStep blend(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "dual blend");
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
@@ -227,10 +222,10 @@ private:
         glGetQueryObjectui64v(frontLayers_.id(), GL_QUERY_RESULT, &front);
         glGetQueryObjectui64v(backLayers_.id(), GL_QUERY_RESULT, &back);
         glGetQueryObjectuiv(interiorLeft_.id(), GL_QUERY_RESULT, &left);
-        stats_.fragmentsCaptured += front + back;
         // A pass that captured nothing had an empty range everywhere, so nothing is left
-        // whatever the interior query says (a guard against a driver that skips the masked draw).
-        return left != 0 && front + back > 0;
+        // whatever the interior query says (PeelLoop's guard against a driver that skips the
+        // masked draw).
+        return PeelStep{front + back, front + back, 0, left != 0};
     }
 
     void composite(const FrameContext& frame) {

@@ -33,6 +33,7 @@
 #include "oit/peeling/layer_storage.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peel_loop.hpp"
 #include "oit/precision.hpp"
 
 namespace strata::peeling {
@@ -46,51 +47,39 @@ public:
         const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, s.precision, model);
-        stats = {};
-        skipper_.beginFrame(frame, s.skipPeeled);
+        PeelLoop loop(frame, stats, skipper_, s.skipPeeled);
         // The anchor is one of the K a bounded layer keeps.
         storage_.prepare(frame.size, 1, s.capacity - 1, s.maxBlockMiB);
-        const float clearAccum[4] = {0, 0, 0, 1};
-        glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-        if (rgb()) {
-            const float nothingAbsorbed[4] = {1, 1, 1, 1};
-            glClearTexImage(accumPasses_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-        }
+        clearAccumulation(accum_.id(), rgb() ? accumPasses_.id() : 0);
         for (GLuint p : {programs_->anchor.id(), programs_->capture.id(), programs_->band.id()})
             setDepthOrderUniforms(frame, p);
 
-        std::uint64_t overflow = 0;
-        const std::uint64_t total = firstDepthPass(frame, stats);
-        std::uint64_t remaining = total;
+        loop.setTotal(firstDepthPass(frame, stats));
         bool composited = false;
-        // Layer i is anchored in depth_[i % 3] and anchor_[i % 2]; its capture also reads the
-        // previous layer's anchor depth.
-        for (int layer = 0; remaining > 0; ++layer) {
-            if (layer >= s.maxPasses) {
-                stats.overflowed = true;
-                break;
-            }
-            const int cur = layer % 3, next = (layer + 1) % 3, previous = (layer + 2) % 3;
-            band(frame, cur, stats);
-            const LayerCounts c = capture(frame, layer, previous, cur, stats);
-            const std::uint64_t anchors = resolve(frame, layer % 2, c.inLayer > 0, stats);
-            composited = true;
-            const std::uint64_t inLayer = anchors + c.inLayer;
-            if (inLayer == 0) break;  // a guard: a layer left to peel has anchors
-            stats.fragmentsCaptured += anchors + c.stored;
-            overflow += c.overflow;
-            if (inLayer >= remaining) break;
-            remaining -= inLayer;
-            // What is left lies behind this layer's anchor, by more than the tie band: the bound
-            // f2b uses too.
-            skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
-            anchorPass(frame, cur, next, (layer + 1) % 2, stats);
+        if (loop.total() > 0) {
+            // Layer i is anchored in depth_[i % 3] and anchor_[i % 2]; its capture also reads the
+            // previous layer's anchor depth.
+            PeelLoopOptions options;
+            options.maxPasses = s.maxPasses;
+            options.between = [&](int layer) {
+                const int cur = layer % 3;
+                // What is left lies behind this layer's anchor, by more than the tie band: the
+                // bound f2b uses too. The next layer's anchor follows.
+                skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
+                anchorPass(frame, cur, (layer + 1) % 3, (layer + 1) % 2, stats);
+            };
+            loop.run(options, [&](int layer) {
+                const int cur = layer % 3, previous = (layer + 2) % 3;
+                band(frame, cur, stats);
+                const LayerCounts c = capture(frame, layer, previous, cur, stats);
+                const std::uint64_t anchors = resolve(frame, layer % 2, c.inLayer > 0, stats);
+                composited = true;
+                return PeelStep{anchors + c.inLayer, anchors + c.stored, c.overflow};
+            });
         }
         if (composited) composite(frame, stats);
-        skipper_.endFrame(stats);
         storage_.endFrame();
-        stats.fragmentsDropped = total > stats.fragmentsCaptured ? total - stats.fragmentsCaptured : 0;
-        if (overflow > 0) stats.overflowed = true;
+        loop.finish();
         // Four depth buffers (3 anchors, 1 band edge; 4 B each), two anchors (RGBA32UI, 16 B each), the accumulation
         // (RGBA16F, 8 B, or RGBA32F, 16 B; twice with coloured filters), the layer storage and the total counter.
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);

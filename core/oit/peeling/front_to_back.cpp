@@ -22,6 +22,7 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
 #include "oit/peeling/peel_bindings.h"
+#include "oit/peeling/peel_loop.hpp"
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 
@@ -36,41 +37,26 @@ public:
         const ColorModel model = colorModelFor(frame.scene);
         ensurePrograms(model);
         ensureTargets(frame.size, model);
-        stats_ = {};
-        skipper_.beginFrame(frame, settings_.skipPeeled);
-        const float clearAccum[4] = {0, 0, 0, 1};
-        glClearTexImage(accum_.id(), 0, GL_RGBA, GL_FLOAT, clearAccum);
-        if (rgb()) {
-            const float nothingAbsorbed[4] = {1, 1, 1, 1};
-            glClearTexImage(accumFilter_.id(), 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
-        }
-
-        std::uint64_t firstRemaining = 0, remaining = 0;
-        for (int layer = 0;; ++layer) {
-            if (layer >= settings_.maxPasses) {
-                stats_.overflowed = true;
-                break;
-            }
-            int cur = layer % 2;
-            bool anyLeft = peel(frame, layer, cur);
-            if (layer == 0) firstRemaining = remaining = readCounter();
-            if (remaining == 0 || !anyLeft) break;
-            std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
-            stats_.fragmentsCaptured += captured;
-            if (captured >= remaining || captured == 0) break;
-            // What lies strictly behind this layer: what lay behind the previous one less the one
-            // fragment per pixel just captured. Counting it on the GPU would cost an atomic per
-            // fragment per pass (a third of a peel pass on llvmpipe). Coincident fragments, which
-            // f2b drops, make this an overestimate: the loop then ends on the peel that finds
-            // nothing left (its ANY_SAMPLES_PASSED query), as an exact count would.
-            remaining -= captured;
-            skipper_.query(frame, depth_[cur].id(), {RemainingSide::NotNearerThanR});
-        }
+        PeelLoop loop(frame, stats_, skipper_, settings_.skipPeeled);
+        clearAccumulation(accum_.id(), rgb() ? accumFilter_.id() : 0);
+        PeelLoopOptions options;
+        options.maxPasses = settings_.maxPasses;
+        // What is left lies behind the layer just peeled.
+        options.between = [&](int layer) { skipper_.query(frame, depth_[layer % 2].id(), {RemainingSide::NotNearerThanR}); };
+        loop.run(options, [&](int layer) {
+            const int cur = layer % 2;
+            const bool anyLeft = peel(frame, layer, cur);
+            // The first peel counts every transparent fragment (its atomic counter). Later
+            // peels do not: an atomic per fragment per pass costs a third of a peel pass on
+            // llvmpipe. What lies strictly behind a layer is then what lay behind the previous
+            // one less the fragments just captured (the loop's remaining count).
+            if (layer == 0) loop.setTotal(readCounter());
+            if (loop.remaining() == 0 || !anyLeft) return PeelStep{};
+            const std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
+            return PeelStep{captured, captured};
+        });
         if (stats_.fragmentsCaptured > 0) composite(frame);
-        skipper_.endFrame(stats_);
-        stats_.fragmentsDropped = firstRemaining - stats_.fragmentsCaptured;
-        // Dropped: coincident fragments a strict depth test never peels (not an overflow), and
-        // what max_passes left behind (an overflow).
+        loop.finish();
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // Two depth buffers (4 B; f2b2: depth-stencil, 8 B), f2b's layer colour and the
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each).

@@ -1,0 +1,54 @@
+#include "oit/peeling/peel_loop.hpp"
+
+#include "oit/peeling/object_skipper.hpp"
+
+#include <algorithm>
+
+namespace strata::peeling {
+
+PeelLoop::PeelLoop(const FrameContext& frame, TechniqueStats& stats, ObjectSkipper& skipper, bool skip)
+    : stats_(stats), skipper_(skipper) {
+    stats_ = {};
+    skipper_.beginFrame(frame, skip);
+}
+
+void PeelLoop::setTotal(std::uint64_t total) { total_ = remaining_ = total; }
+
+int PeelLoop::run(const PeelLoopOptions& options, const std::function<PeelStep(int)>& step) {
+    int iteration = 0;
+    for (;; ++iteration) {
+        if (iteration >= options.maxPasses) {
+            stats_.overflowed = true;
+            break;
+        }
+        const PeelStep s = step(iteration);
+        stats_.fragmentsCaptured += s.kept;
+        overflow_ += s.overflow;
+        if (s.layer == 0 || !s.more || s.layer >= remaining_) {
+            ++iteration;
+            break;
+        }
+        remaining_ -= s.layer;
+        if (options.between) options.between(iteration);
+    }
+    return iteration;
+}
+
+void PeelLoop::finish() {
+    skipper_.endFrame(stats_);
+    // Dropped: coincident fragments a strict test never peels (not an overflow), what did not fit
+    // (overflow), and what the pass bound left behind (an overflow).
+    stats_.fragmentsDropped = total_ - std::min(total_, stats_.fragmentsCaptured);
+    if (overflow_ > 0) stats_.overflowed = true;
+}
+
+void clearAccumulation(GLuint color, GLuint passes) {
+    const float nothingComposited[4] = {0, 0, 0, 1};
+    glClearTexImage(color, 0, GL_RGBA, GL_FLOAT, nothingComposited);
+    if (passes) {
+        const float nothingAbsorbed[4] = {1, 1, 1, 1};
+        glClearTexImage(passes, 0, GL_RGBA, GL_FLOAT, nothingAbsorbed);
+    }
+}
+
+}  // namespace strata::peeling
