@@ -21,7 +21,10 @@
 #   - `strata view` gets `--size 64x40` where not given and `--exit-after-frames 2`, and runs
 #     under `xvfb-run -a -s "-screen 0 1024x768x24"` with LIBGL_ALWAYS_SOFTWARE=1.
 # Each block runs in a fresh temporary folder (cd there; outputs land there, and are removed at
-# the end), its lines in order, so a line may read what an earlier line of its block wrote.
+# the end), its lines in order, so a line may read what an earlier line of its block wrote. A
+# relative output path with a folder (`--out docs/images/demo.png`; also --heatmap,
+# --highlight-coplanar, --json, --csv, --sweep-csv, --screenshot) gets that folder made there
+# first, as it exists in the repository; nothing in the repository is written.
 # EGL_PLATFORM defaults to surfaceless.
 #
 # It prints each command as written, with its file and line, and at the end
@@ -140,6 +143,14 @@ while IFS=$'\t' read -r block where text; do
         ran=$((ran + 1))
         continue
     fi
+    read -ra words <<<"$text"
+    for ((i = 0; i + 1 < ${#words[@]}; i++)); do
+        case ${words[i]} in
+            --out | --heatmap | --highlight-coplanar | --json | --csv | --sweep-csv | --screenshot)
+                next=${words[i + 1]}
+                [[ $next != /* && $next != *..* && $next == */* ]] && mkdir -p "$dir/$(dirname "$next")" ;;
+        esac
+    done
     started=$EPOCHREALTIME
     (cd "$dir" && timeout "$per_command_timeout" bash -c "$cmd") >"$work/stdout" 2>"$work/stderr" </dev/null
     status=$?

@@ -66,7 +66,7 @@ TEST_CASE("lod calibration gl: finite positive coefficients, a 4x mesh costs mor
     CHECK_FALSE(glIsEnabled(GL_DEPTH_TEST));
     CHECK(glIsEnabled(GL_BLEND));
     glDisable(GL_BLEND);
-    // The crossover from the measured model (printed for the README's table).
+    // The crossover from the measured model (printed for docs/results.md's table).
     for (int slices : {16, 64}) {
         for (double size : {32.0, 64.0, 128.0})
             MESSAGE("crossover " << slices << " slices at " << size << " px: " << crossoverTriangles(m, size, slices) << " triangles");

@@ -3,7 +3,7 @@
 // limit for its format, then read it in pieces, never past the limit. A model, a scene, a path
 // or a trace that is /dev/zero, a FIFO, a folder or a 2 GB sparse file is refused at once with a
 // message naming the file, the limit and the size, instead of being read whole until memory
-// runs out. The limits are stated in README.md ("Input limits"); keep the two in step.
+// runs out. The limits are stated in docs/command-line.md ("Input limits"); keep the two in step.
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
@@ -37,7 +37,7 @@ inline constexpr InputLimit kTraceLimit{std::uintmax_t(64) << 20, "a head-pose t
 // reading, so a file that grows or lies about its size is stopped at the limit too).
 std::string readBoundedFile(const std::filesystem::path& path, const InputLimit& limit);
 
-// "512 MiB", "1.5 GiB", "300 bytes": a size as the messages and the README write it.
+// "512 MiB", "1.5 GiB", "300 bytes": a size as the messages and the docs write it.
 std::string formatBytes(std::uintmax_t bytes);
 
 }  // namespace strata

@@ -239,7 +239,7 @@ struct Converter {
     }
 
     // KHR_materials_transmission's factor and KHR_materials_ior (no refraction is drawn: the
-    // README's materials section says what is modelled).
+    // docs/command-line.md's glTF materials section says what is modelled).
     void convertTransmission(const tinygltf::Material& g, const std::string& what, Material& m) {
         auto transmission = g.extensions.find("KHR_materials_transmission");
         if (transmission != g.extensions.end()) {
