@@ -53,6 +53,7 @@ int ImpostorSet::bake(const std::vector<bool>& ids) {
     const Scene& s = scene_->scene();
     const auto& objects = scene_->objects();
     int total = 0, done = 0;
+    const int loadedBefore = loaded_;
     for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) total += ids[k] && !tried_[k];
     if (total == 0) return 0;
     for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) {
@@ -72,10 +73,23 @@ int ImpostorSet::bake(const std::vector<bool>& ids) {
             if (objects[i].mesh == m) mesh = &scene_->meshOf(int(i));
         BakeMaterial material;
         if (keys_.bakeObject[k] >= 0) material = {scene_, keys_.bakeObject[k]};
-        auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[std::size_t(m)].bounds(), own, material);
-        if (impostor->valid()) impostors_[k] = std::move(impostor);
-        else reasons_[k] = impostor->reason();
         ++done;
+        const std::uint64_t key = cache_ ? impostorKey(s, m, own, material) : 0;
+        if (cache_) {
+            if (std::optional<LayeredImpostor> kept = cache_->load(key)) {
+                impostors_[k] = std::make_unique<LayeredImpostor>(std::move(*kept));
+                ++loaded_;
+                if (progress_) *progress_ << "baking impostors: " << done << "/" << total << " (from the cache)" << std::endl;
+                continue;
+            }
+        }
+        auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[std::size_t(m)].bounds(), own, material);
+        if (impostor->valid()) {
+            if (cache_) cache_->store(key, *impostor);
+            impostors_[k] = std::move(impostor);
+        } else {
+            reasons_[k] = impostor->reason();
+        }
         if (progress_) *progress_ << "baking impostors: " << done << "/" << total << std::endl;
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -84,12 +98,22 @@ int ImpostorSet::bake(const std::vector<bool>& ids) {
         const ImpostorMemory b = bytes();
         char line[256];
         std::snprintf(line, sizeof line,
-                      "impostors: %d baked in %.0f ms; %d in all, %llu bytes (images %llu, rectangles %llu, vertices %llu)",
-                      done, ms, bakedImpostors(), (unsigned long long)b.total(), (unsigned long long)b.images,
+                      "impostors: %d baked, %d from the cache, in %.0f ms; %d in all, %llu bytes (images %llu, "
+                      "rectangles %llu, vertices %llu)",
+                      done - (loaded_ - loadedBefore), loaded_ - loadedBefore, ms, bakedImpostors(), (unsigned long long)b.total(), (unsigned long long)b.images,
                       (unsigned long long)b.rectangles, (unsigned long long)b.vertexBuffer);
         *progress_ << line << std::endl;
     }
     return done;
+}
+
+bool ImpostorSet::cached(int id) const {
+    if (!cache_ || id < 0 || tried_[std::size_t(id)]) return false;
+    ImpostorSettings own = settings_;
+    if (transparent_[std::size_t(id)]) own.peels = transparentPeels_, own.overlap = 0.0f;
+    BakeMaterial material;
+    if (keys_.bakeObject[std::size_t(id)] >= 0) material = {scene_, keys_.bakeObject[std::size_t(id)]};
+    return cache_->contains(impostorKey(scene_->scene(), keys_.mesh[std::size_t(id)], own, material));
 }
 
 const LayeredImpostor* ImpostorSet::impostorOfId(int id) const {

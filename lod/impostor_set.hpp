@@ -4,6 +4,7 @@
 // whose base colour texture, COLOR_0 or MASK the bake keeps (kSceneBakedDetail), one per mesh
 // and material; baked at load with a progress line, and the per-object stand-ins for a camera
 // (FrameOptions::standIns).
+#include "lod/impostor_cache.hpp"
 #include "lod/layered_impostor.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/stand_in.hpp"
@@ -35,6 +36,13 @@ public:
     // selection could use).
     ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels = 2,
                 std::ostream* progress = nullptr, bool bakeNow = true);
+
+    // Loads from `cache` what it holds and stores what is baked (null: bake everything, keep
+    // nothing). The cache must outlive the set.
+    void setCache(ImpostorCache* cache) { cache_ = cache; }
+    // Whether bake(id) would load instead of baking.
+    bool cached(int id) const;
+    int loadedImpostors() const { return loaded_; }
 
     const ImpostorKeys& keys() const { return keys_; }
     int idOf(int objectIndex) const { return keys_.ofObject[std::size_t(objectIndex)]; }
@@ -78,6 +86,8 @@ private:
     std::vector<bool> transparent_, tried_;                    // per id
     int transparentPeels_ = 2;
     std::ostream* progress_ = nullptr;
+    ImpostorCache* cache_ = nullptr;
+    int loaded_ = 0;
     std::vector<StandInDraw> draws_;                                // per object
     double bakeMs_ = 0.0;
 };

@@ -95,17 +95,19 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+gl::Texture LayeredImpostor::layerTexture(GLenum format, int resolution, int layers) {
+    gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(t.id(), 1, format, resolution, resolution, layers);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
 void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const BakeMaterial& material) {
     const int res = settings_.resolution, peels = settings_.peels;
-    auto arrayTexture = [&](GLenum format) {
-        gl::Texture t = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-        glTextureStorage3D(t.id(), 1, format, res, res, settings_.views * peels);
-        glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        return t;
-    };
+    auto arrayTexture = [&](GLenum format) { return layerTexture(format, res, settings_.views * peels); };
     atlas_ = arrayTexture(GL_RGBA8);
     const bool withAlbedo = material.scene != nullptr;
     // sRGB-encoded: 8 bits where the eye sees steps, as the textures it comes from.

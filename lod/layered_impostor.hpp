@@ -73,6 +73,15 @@ public:
     LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds, const ImpostorSettings& settings,
                     BakeMaterial material = {});
     LayeredImpostor(LayeredImpostor&&) noexcept = default;
+
+    // The baked state as bytes (an on-disk cache's file, impostor_cache.hpp): the settings, the
+    // bounding sphere, the atlas's and the albedo's texels, the rectangles and the hole-filling
+    // slices; the frames, quads and vertex buffer are rebuilt from those on load. Valid impostors only.
+    std::vector<std::uint8_t> serialize() const;
+    // An impostor from serialize()'s bytes, uploaded on the current GL context (no bake: bakeMs is
+    // the load's time). Throws std::runtime_error naming what is malformed: the bytes may come
+    // from a file another version wrote or a disk damaged.
+    static LayeredImpostor deserialize(const std::vector<std::uint8_t>& bytes);
     LayeredImpostor& operator=(LayeredImpostor&&) noexcept = default;
 
     bool valid() const { return reason_.empty(); }
@@ -111,6 +120,9 @@ public:
     GLuint vertexArray() const { return quadArray_.id(); }
 
 private:
+    LayeredImpostor() = default;
+    // An array texture of `layers` square images, nearest-sampled, clamped: the atlas and albedo.
+    static gl::Texture layerTexture(GLenum format, int resolution, int layers);
     std::size_t rangeIndex(int view, int peel, int slice) const {
         return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) * std::size_t(settings_.slices) +
                std::size_t(slice);

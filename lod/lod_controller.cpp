@@ -53,8 +53,13 @@ LodController::~LodController() = default;
 // judged as if baked (view angle 0, a disc's share pi/4 of every slice square drawn), so a scene
 // whose objects all stay geometry bakes nothing.
 void LodController::bakeCandidates(const LodView& view, const LodCostModel& model) {
-    if (!impostors_)
+    if (!impostors_) {
         impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_, false);
+        if (!options_.impostorCache.empty()) {
+            cache_ = std::make_unique<ImpostorCache>(options_.impostorCache, options_.impostorCacheMaxBytes);
+            impostors_->setCache(cache_.get());
+        }
+    }
     const auto& objects = scene_.objects();
     const std::size_t ids = std::size_t(keys_.count());
     std::vector<bool> wanted(ids, false);
@@ -94,7 +99,9 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             if (!wanted[id]) continue;
             const int peels = impostors_->transparent(int(id)) ? options_.transparentPeels : options_.impostor.peels;
             const int draws = options_.impostor.views * peels + holeFillingPairs_;
-            const double drawsMs = predictedBakeMs(model, triangles[id], draws, options_.impostor.resolution);
+            // An impostor the cache holds is loaded, not baked: it costs next to nothing.
+            const bool cached = impostors_->cached(int(id));
+            const double drawsMs = cached ? 0.0 : predictedBakeMs(model, triangles[id], draws, options_.impostor.resolution);
             const double bakeMs = bakeScale() * drawsMs;
             const double savedMs = saving[id] * double(std::max(framesLeft, 0LL));
             declined_[id] = savedMs > bakeMs ? 0 : 1;

@@ -11,6 +11,7 @@
 #include "render/gpu_scene.hpp"
 #include "render/stand_in.hpp"
 
+#include <filesystem>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -31,6 +32,9 @@ struct LodOptions {
     // Auto's cost model as given, not calibrated on this device (tests that state decisions; a
     // model saved from an earlier calibration).
     std::optional<LodCostModel> costModel;
+    // Where baked impostors are kept between runs (impostor_cache.hpp); empty: none.
+    std::filesystem::path impostorCache;
+    std::uint64_t impostorCacheMaxBytes = ImpostorCache::kDefaultMaxBytes;
 };
 
 // What auto declines to bake because it would not pay over the frames planned: the impostors
@@ -60,6 +64,7 @@ public:
     void setMode(LodMode mode) { options_.mode = mode; }
     void setMaxErrorPx(double px) { options_.maxErrorPx = px; }
     const ImpostorSet* impostors() const { return impostors_.get(); }
+    const ImpostorCache* cache() const { return cache_.get(); }  // null without one (or before the first bake)
     const std::optional<LodCalibration>& calibration() const { return calibration_; }
     LodBakeDecisions bakeDecisions() const;
     // An object's decision explained in one line (the panel's list).
@@ -71,6 +76,7 @@ private:
     const GpuScene& scene_;
     LodOptions options_;
     std::ostream* progress_;
+    std::unique_ptr<ImpostorCache> cache_;  // before impostors_, which points into it
     std::unique_ptr<ImpostorSet> impostors_;
     std::optional<LodCalibration> calibration_;
     std::vector<LodObjectInput> inputs_;

@@ -10,6 +10,8 @@ export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
 tmp=$(mktemp -d)
 trap 'chmod -R u+w "$tmp" 2>/dev/null; rm -rf "$tmp"' EXIT
 work=$tmp/work      # every output of every command goes here
+# Impostors baked by one case are not loaded by another: the cache lives and dies with this run.
+export XDG_CACHE_HOME=$tmp/cache
 mkdir -p "$work/a-folder"
 passed=0
 failed=0
@@ -230,6 +232,18 @@ PY
 if "$strata" render builtin:field:4 --lod impostors --size 64x48 --out "$tmp/field.png" >"$tmp/stdout" 2>"$tmp/stderr" &&
    grep -q "lod impostors: 4 of 5 objects as impostors (1 distinct)" "$tmp/stdout" && [ ! -s "$tmp/stderr" ]
 then ok; else bad "render --lod impostors: $(cat "$tmp/stdout" "$tmp/stderr")"; fi
+# The impostor cache: a second identical render loads what the first baked; `none` keeps nothing.
+ic=$tmp/impostor-cache
+if "$strata" render builtin:field:4 --lod impostors --impostor-cache "$ic" --size 64x48 --out "$tmp/f1.png" >"$tmp/stdout" 2>/dev/null &&
+   grep -q "1 impostors baked (0 from the cache)" "$tmp/stdout" && [ "$(ls "$ic" | grep -c '\.strata-impostor$')" -eq 1 ] &&
+   "$strata" render builtin:field:4 --lod impostors --impostor-cache "$ic" --size 64x48 --out "$tmp/f2.png" >"$tmp/stdout" 2>/dev/null &&
+   grep -q "1 impostors baked (1 from the cache)" "$tmp/stdout" && cmp -s "$tmp/f1.png" "$tmp/f2.png"
+then ok; else bad "render --impostor-cache: $(cat "$tmp/stdout")"; fi
+if env XDG_CACHE_HOME="$tmp/none-cache" "$strata" render builtin:field:4 --lod impostors --impostor-cache none --size 64x48 \
+     --out "$tmp/f3.png" >/dev/null 2>&1 && [ ! -e "$tmp/none-cache/strata" ] &&
+   env XDG_CACHE_HOME="$tmp/default-cache" "$strata" render builtin:field:4 --lod impostors --size 64x48 \
+     --out "$tmp/f4.png" >/dev/null 2>&1 && ls "$tmp/default-cache/strata/impostors/"*.strata-impostor >/dev/null
+then ok; else bad "render --impostor-cache none wrote a cache, or the default folder got none"; fi
 if "$strata" bench builtin:field:4 --lod impostors --size 48x32 --frames 1 --warmup 0 --modes blend-sorted \
      --impostor-resolution 32 --impostor-slices 8 --json "$tmp/lod.json" >/dev/null 2>&1 &&
    python3 - "$tmp/lod.json" <<'PY'; then ok; else bad "bench --lod impostors JSON"; fi

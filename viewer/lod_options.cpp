@@ -12,6 +12,9 @@ lod::LodOptions LodArgs::options() const {
     o.impostor.resolution = resolution;
     o.impostor.slices = slices;
     o.impostor.overlap = overlap;
+    if (cache == "default") o.impostorCache = lod::defaultImpostorCacheFolder();  // empty without a home: none
+    else if (cache != "none") o.impostorCache = cache;
+    o.impostorCacheMaxBytes = std::uint64_t(cacheMiB * double(1 << 20));
     return o;
 }
 
@@ -37,6 +40,14 @@ void addLodOptions(CLI::App* cmd, LodArgs& args) {
                     "slice widths each slice's depth interval reaches into its neighbours' (opaque only)")
         ->check(CLI::Range(0.0, 16.0))
         ->capture_default_str();
+    cmd->add_option("--impostor-cache", args.cache,
+                    "where baked impostors are kept between runs, keyed by what they bake: none, default "
+                    "($XDG_CACHE_HOME/strata/impostors, else ~/.cache/strata/impostors) or a folder")
+        ->capture_default_str();
+    cmd->add_option("--impostor-cache-mb", args.cacheMiB,
+                    "the cache folder's cap: past it the least recently used impostors are removed")
+        ->check(CLI::Range(0.0, 1e7))
+        ->capture_default_str();
 }
 
 nlohmann::json lodReport(const lod::LodController& controller) {
@@ -48,6 +59,7 @@ nlohmann::json lodReport(const lod::LodController& controller) {
         {"resolution", o.impostor.resolution},
         {"slices", o.impostor.slices},
         {"overlap", o.impostor.overlap},
+        {"impostor_cache", o.impostorCache.string()},
     };
     if (const lod::ImpostorSet* set = controller.impostors()) {
         const lod::ImpostorMemory m = set->bytes();
@@ -55,9 +67,15 @@ nlohmann::json lodReport(const lod::LodController& controller) {
         j["bakes_declined"] = controller.bakeDecisions().declined;  // would not pay over the frames planned
         j["declined_bake_ms"] = controller.bakeDecisions().declinedBakeMs;
         j["bake_ms"] = set->bakeMs();
+        j["loaded_impostors"] = set->loadedImpostors();  // of baked_impostors, loaded from the cache
         j["image_bytes"] = m.images;
         j["rectangle_bytes"] = m.rectangles;
         j["vertex_bytes"] = m.vertexBuffer;
+    }
+    if (const lod::ImpostorCache* cache = controller.cache()) {
+        const lod::ImpostorCacheCounts& c = cache->counts();
+        j["cache"] = {{"hits", c.hits}, {"misses", c.misses}, {"stores", c.stores}, {"evicted", c.evicted},
+                      {"unreadable", c.unreadable}, {"load_ms", c.loadMs}};
     }
     if (const auto& c = controller.calibration()) {
         j["model"] = {{"geometry_fixed_ms", c->model.geometryFixedMs},
@@ -77,8 +95,8 @@ std::string lodSummary(const lod::LodController& controller) {
                           lod::to_string(controller.options().mode), s.impostorObjects, s.objects.size(),
                           s.impostorsUsed, double(s.impostorBytes) / 1e6);
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
-        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked in %.0f ms", set->bakedImpostors(),
-                           set->bakeMs());
+        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked (%d from the cache) in %.0f ms",
+                           set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());
     if (const lod::LodBakeDecisions d = controller.bakeDecisions(); d.declined > 0)
         n += std::snprintf(line + n, sizeof line - std::size_t(n),
                            "; %d not baked: predicted bake %.0f ms > %.0f ms saved over the %lld frames planned",

@@ -19,6 +19,8 @@ struct LodArgs {
     int slices = 64;
     float overlap = 0.5f;
     double maxErrorPx = lod::kDefaultMaxErrorPx;
+    std::string cache = "default";  // "none", "default" ($XDG_CACHE_HOME/strata/impostors) or a folder
+    double cacheMiB = double(lod::ImpostorCache::kDefaultMaxBytes >> 20);
 
     lod::LodOptions options() const;  // throws naming a bad mode
 };
