@@ -212,4 +212,14 @@ TEST_CASE("impostor cache: a second controller loads what the first baked, and o
     CHECK(second.cache()->counts().hits == 1);
     CHECK(second.cache()->counts().stores == 0);
     CHECK(second.selection().impostorObjects > 0);
+
+    // Evicted (here: the folder emptied), the impostor is baked again and stored again.
+    for (const auto& e : fs::directory_iterator(folder.path)) fs::remove(e.path());
+    LodController third(*fx.gpu, cachedImpostors(LodMode::Impostors, folder.path));
+    third.select(fx.camera, {64, 48});
+    REQUIRE(third.impostors());
+    CHECK(third.impostors()->loadedImpostors() == 0);
+    CHECK(third.impostors()->bakedImpostors() == baked);
+    CHECK(third.cache()->counts().misses == baked);
+    CHECK(third.cache()->counts().stores == baked);
 }
