@@ -33,6 +33,11 @@ void drawLodSection(lod::LodController& lod) {
                     double(m.vertexBuffer) / 1e6);
         const lod::ImpostorSettings& is = set->settings();
         ImGui::Text("%d views, %d px, %d slices, overlap %.2f", is.views, is.resolution, is.slices, is.overlap);
+        if (const lod::ImpostorCache* cache = lod.cache()) {
+            const lod::ImpostorCacheCounts& c = cache->counts();
+            ImGui::Text("cache %s: %d loaded (%.0f ms), %d stored, %d evicted, %d unreadable", cache->folder().c_str(),
+                        c.hits, c.loadMs, c.stores, c.evicted, c.unreadable);
+        }
     }
     if (s.objects.empty() || !ImGui::TreeNode("objects")) return;
     if (ImGui::BeginTable("lod objects", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY, ImVec2(0, 200))) {
