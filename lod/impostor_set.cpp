@@ -107,6 +107,14 @@ int ImpostorSet::bake(const std::vector<bool>& ids) {
     return done;
 }
 
+void ImpostorSet::evict(int id, const std::string& why) {
+    auto& impostor = impostors_[std::size_t(id)];
+    if (!impostor) return;
+    impostor.reset();
+    reasons_[std::size_t(id)] = why;
+    ++evicted_;
+}
+
 bool ImpostorSet::cached(int id) const {
     if (!cache_ || id < 0 || tried_[std::size_t(id)]) return false;
     ImpostorSettings own = settings_;

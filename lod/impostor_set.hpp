@@ -74,6 +74,10 @@ public:
 
     ImpostorMemory bytes() const;          // over all baked impostors
     int bakedImpostors() const;
+    // Frees impostor `id` (the memory cap, LodOptions::impostorMemoryBytes); its objects draw
+    // geometry from then on and reasonOf says `why`. It is not baked again.
+    void evict(int id, const std::string& why);
+    int evictedImpostors() const { return evicted_; }
     double bakeMs() const { return bakeMs_; }
     const ImpostorSettings& settings() const { return settings_; }
 
@@ -87,7 +91,7 @@ private:
     int transparentPeels_ = 2;
     std::ostream* progress_ = nullptr;
     ImpostorCache* cache_ = nullptr;
-    int loaded_ = 0;
+    int loaded_ = 0, evicted_ = 0;
     std::vector<StandInDraw> draws_;                                // per object
     double bakeMs_ = 0.0;
 };

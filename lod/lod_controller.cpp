@@ -3,6 +3,7 @@
 #include "lod/view_directions.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <ostream>
 #include <stdexcept>
 
@@ -115,8 +116,36 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             wanted[id] = false;
         }
     }
+    if (any && options_.impostorMemoryBytes > 0) {
+        // Under a memory cap, bake the most useful (geometry time saved per byte) while they fit
+        // beside what is held; the vertex buffer is not known before the bake (the cap is
+        // enforced again after the selection).
+        auto predictedBytes = [&](std::size_t id) { return std::uint64_t(memoryScale_ * double(formulaBytes(id))); };
+        std::vector<std::size_t> order;
+        for (std::size_t id = 0; id < ids; ++id)
+            if (wanted[id]) order.push_back(id);
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return saving[a] / double(predictedBytes(a)) > saving[b] / double(predictedBytes(b));
+        });
+        std::uint64_t held = impostors_->bytes().total();
+        any = false;
+        for (std::size_t id : order) {
+            if (held + predictedBytes(id) > options_.impostorMemoryBytes) {
+                wanted[id] = false;
+                continue;
+            }
+            held += predictedBytes(id);
+            any = true;
+        }
+    }
     const double bakedBefore = impostors_->bakeMs();
     if (!any || impostors_->bake(wanted) == 0) return;
+    // What the formulas leave out (the vertex buffer) is learnt from what was baked, so the next
+    // bake under the cap is not one the selection must evict at once.
+    for (std::size_t id = 0; id < ids; ++id)
+        if (wanted[id] && impostors_->impostorOfId(int(id)))
+            memoryScale_ = std::max(memoryScale_, double(impostors_->impostorOfId(int(id))->bytes().total()) /
+                                                      double(std::max<std::uint64_t>(formulaBytes(id), 1)));
     if (predictedMs > 0.0) {
         measuredBakeMs_ += impostors_->bakeMs() - bakedBefore;
         predictedBakeMs_ += predictedMs;
@@ -180,11 +209,50 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
         inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofObject[i])][std::size_t(nearest)];
     }
     selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
+    if (enforceMemoryCap()) selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     std::vector<bool> use(inputs_.size());
     for (std::size_t i = 0; i < use.size(); ++i) use[i] = selection_.objects[i].impostor;
     standIns_ = impostors_->drawsFor(camera.position, use);
     framesDrawn_ += std::max(frames, 0);
     return selection_.impostorObjects > 0 ? &standIns_ : nullptr;
+}
+
+std::uint64_t LodController::formulaBytes(std::size_t id) const {
+    const int peels = impostors_->transparent(int(id)) ? options_.transparentPeels : options_.impostor.peels;
+    const bool albedo = keys_.bakeObject[id] >= 0;
+    return impostorImageBytes(options_.impostor.resolution, options_.impostor.views, peels) * (albedo ? 2 : 1) +
+           impostorRectangleBytes(options_.impostor.views, peels, options_.impostor.slices);
+}
+
+bool LodController::enforceMemoryCap() {
+    if (options_.impostorMemoryBytes == 0 || !impostors_) return false;
+    std::uint64_t held = impostors_->bytes().total();
+    if (held <= options_.impostorMemoryBytes) return false;
+    // This frame's use of each impostor: the predicted geometry time its objects save.
+    const std::size_t ids = std::size_t(keys_.count());
+    std::vector<double> useful(ids, 0.0);
+    for (std::size_t i = 0; i < selection_.objects.size(); ++i) {
+        const LodDecision& d = selection_.objects[i];
+        if (d.impostor && keys_.ofObject[i] >= 0)
+            useful[std::size_t(keys_.ofObject[i])] += std::max(0.0, d.geometryMs - d.impostorMs) + 1e-9;
+    }
+    std::vector<std::size_t> order;
+    for (std::size_t id = 0; id < ids; ++id)
+        if (impostors_->impostorOfId(int(id))) order.push_back(id);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return useful[a] < useful[b]; });
+    char why[96];
+    std::snprintf(why, sizeof why, "evicted: impostors held more than the memory cap (%.2f MB)",
+                  double(options_.impostorMemoryBytes) / 1e6);
+    bool evicted = false;
+    for (std::size_t id : order) {
+        if (held <= options_.impostorMemoryBytes) break;
+        held -= impostors_->impostorOfId(int(id))->bytes().total();
+        impostors_->evict(int(id), why);
+        evicted = true;
+    }
+    for (std::size_t i = 0; i < inputs_.size(); ++i)
+        if (inputs_[i].hasImpostor && !impostors_->impostorOf(int(i))) inputs_[i].hasImpostor = false;
+    return evicted;
 }
 
 std::string LodController::explainObject(int objectIndex) const {

@@ -35,6 +35,11 @@ struct LodOptions {
     // Where baked impostors are kept between runs (impostor_cache.hpp); empty: none.
     std::filesystem::path impostorCache;
     std::uint64_t impostorCacheMaxBytes = ImpostorCache::kDefaultMaxBytes;
+    // The most impostor memory held at once (images, rectangles, vertices); 0: no cap. Bakes that
+    // would pass it are skipped, most useful first (the geometry time saved per byte); when the
+    // held impostors pass it anyway, the least useful this frame are evicted (unused first) and
+    // their objects draw geometry.
+    std::uint64_t impostorMemoryBytes = 0;
 };
 
 // What auto declines to bake because it would not pay over the frames planned: the impostors
@@ -76,6 +81,12 @@ private:
     const GpuScene& scene_;
     LodOptions options_;
     std::ostream* progress_;
+    // Evicts the least useful impostors of this frame's selection until the held memory fits
+    // options_.impostorMemoryBytes; returns whether any was evicted.
+    bool enforceMemoryCap();
+    // Impostor `id`'s images and rectangles by the formulas (impostor_memory.hpp), before a bake.
+    std::uint64_t formulaBytes(std::size_t id) const;
+    double memoryScale_ = 1.0;  // baked bytes over formulaBytes, the largest seen (the vertex buffer)
     std::unique_ptr<ImpostorCache> cache_;  // before impostors_, which points into it
     std::unique_ptr<ImpostorSet> impostors_;
     std::optional<LodCalibration> calibration_;

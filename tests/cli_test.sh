@@ -244,6 +244,12 @@ if env XDG_CACHE_HOME="$tmp/none-cache" "$strata" render builtin:field:4 --lod i
    env XDG_CACHE_HOME="$tmp/default-cache" "$strata" render builtin:field:4 --lod impostors --size 64x48 \
      --out "$tmp/f4.png" >/dev/null 2>&1 && ls "$tmp/default-cache/strata/impostors/"*.strata-impostor >/dev/null
 then ok; else bad "render --impostor-cache none wrote a cache, or the default folder got none"; fi
+# A memory cap below one impostor's images: nothing is baked, every object draws geometry, and the
+# JSON says the cap.
+if "$strata" bench builtin:field:4 --lod impostors --impostor-memory-mb 0.5 --impostor-cache none --size 48x32 --frames 1 \
+     --warmup 0 --modes blend-sorted --json "$tmp/cap.json" >/dev/null 2>&1 &&
+   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['lod']['memory_cap_bytes']==524288 and d['modes'][0]['impostor_objects']==0, d['lod']" "$tmp/cap.json"
+then ok; else bad "bench --impostor-memory-mb"; fi
 if "$strata" bench builtin:field:4 --lod impostors --size 48x32 --frames 1 --warmup 0 --modes blend-sorted \
      --impostor-resolution 32 --impostor-slices 8 --json "$tmp/lod.json" >/dev/null 2>&1 &&
    python3 - "$tmp/lod.json" <<'PY'; then ok; else bad "bench --lod impostors JSON"; fi

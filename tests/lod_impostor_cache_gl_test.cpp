@@ -2,7 +2,8 @@
 // baked (texels, rectangles, quads, hole slices, memory); the key follows the content and the
 // settings; a damaged file is removed and counted, never read as an impostor; the folder keeps
 // to its cap, least recently used first; and a second LOD controller on the same scene loads
-// what the first baked, and then finds its impostors worth using over one frame.
+// what the first baked, and then finds its impostors worth using over one frame. And the memory
+// cap on impostors held: the most useful kept, the rest skipped or evicted.
 #include "gl_test_support.hpp"
 
 #include "lod/impostor_cache.hpp"
@@ -12,6 +13,8 @@
 #include "scene/mesh_builders.hpp"
 
 #include <doctest/doctest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -222,4 +225,62 @@ TEST_CASE("impostor cache: a second controller loads what the first baked, and o
     CHECK(third.impostors()->bakedImpostors() == baked);
     CHECK(third.cache()->counts().misses == baked);
     CHECK(third.cache()->counts().stores == baked);
+}
+
+TEST_CASE("impostor memory cap: the more useful impostor is baked, the other evicted or skipped, its object geometry") {
+    // Two distinct meshes side by side, far from the eye: a dense sphere (more triangles, so more
+    // geometry time saved) and a box, each its own impostor of the same predicted size.
+    Scene s;
+    s.name = "two-meshes";
+    s.materials = {Material{}};
+    auto place = [&](Mesh mesh, glm::vec3 at) {
+        Node node;
+        node.local = glm::translate(glm::mat4(1.0f), at);
+        node.meshes = {s.addMesh(std::move(mesh))};
+        s.addNode(node);
+    };
+    place(makeSphere(1.0f, 96, 48), {-1.5f, 0.0f, 0.0f});
+    place(makeBox(glm::vec3(-1.0f), glm::vec3(1.0f)), {1.5f, 0.0f, 0.0f});
+    test::Fixture fx(std::move(s));
+    Camera far = fx.camera;
+    far.position = glm::vec3(0.0f, 0.0f, 40.0f);
+    far.fitClipPlanes(fx.gpu->bounds());
+    LodOptions o = cachedImpostors(LodMode::Impostors, {});
+    LodController all(*fx.gpu, o);
+    all.select(far, {64, 48});
+    REQUIRE(all.impostors());
+    REQUIRE(all.impostors()->bakedImpostors() == 2);
+    const std::uint64_t one = all.impostors()->impostorOfId(0)->bytes().total();
+    CHECK(all.selection().impostorObjects == 2);
+
+    // A cap of one and a half impostors: one is kept, and it is the sphere's (more saved per byte).
+    o.impostorMemoryBytes = one + one / 2;
+    LodController capped(*fx.gpu, o);
+    capped.select(far, {64, 48});
+    REQUIRE(capped.impostors());
+    CHECK(capped.impostors()->bakedImpostors() == 1);
+    CHECK(capped.impostors()->bytes().total() <= o.impostorMemoryBytes);
+    CHECK(capped.selection().impostorObjects == 1);
+    CHECK(capped.impostors()->impostorOf(0) != nullptr);  // the sphere
+    CHECK(capped.impostors()->impostorOf(1) == nullptr);  // the box draws geometry
+    CHECK_FALSE(capped.selection().objects[1].impostor);
+
+    // A cap of one impostor's images and rectangles: the bake fits the prediction (which cannot
+    // know the vertex buffer), the baked impostor does not, and the selection evicts it.
+    const ImpostorMemory m = all.impostors()->impostorOfId(0)->bytes();
+    REQUIRE(m.vertexBuffer > 0);
+    o.impostorMemoryBytes = m.images + m.rectangles;
+    LodController tight(*fx.gpu, o);
+    tight.select(far, {64, 48});
+    REQUIRE(tight.impostors());
+    CHECK(tight.impostors()->evictedImpostors() == 1);
+    CHECK(tight.impostors()->bytes().total() == 0);
+    CHECK(tight.selection().impostorObjects == 0);
+    CHECK(tight.impostors()->reasonOf(0).find("memory cap") != std::string::npos);
+    // Evicted is not baked again, and the box, whose bake the controller now knows would not fit
+    // (it learnt the vertex buffer's share), is not baked either: nothing is baked to be evicted.
+    tight.select(far, {64, 48});
+    CHECK(tight.impostors()->evictedImpostors() == 1);
+    CHECK(tight.impostors()->bakedImpostors() == 0);
+    CHECK_FALSE(tight.impostors()->tried(1));
 }

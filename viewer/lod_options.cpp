@@ -15,6 +15,7 @@ lod::LodOptions LodArgs::options() const {
     if (cache == "default") o.impostorCache = lod::defaultImpostorCacheFolder();  // empty without a home: none
     else if (cache != "none") o.impostorCache = cache;
     o.impostorCacheMaxBytes = std::uint64_t(cacheMiB * double(1 << 20));
+    o.impostorMemoryBytes = std::uint64_t(memoryMiB * double(1 << 20));
     return o;
 }
 
@@ -44,6 +45,11 @@ void addLodOptions(CLI::App* cmd, LodArgs& args) {
                     "where baked impostors are kept between runs, keyed by what they bake: none, default "
                     "($XDG_CACHE_HOME/strata/impostors, else ~/.cache/strata/impostors) or a folder")
         ->capture_default_str();
+    cmd->add_option("--impostor-memory-mb", args.memoryMiB,
+                    "the most impostor memory held at once (0: no cap): the most useful are baked first, the "
+                    "least useful evicted, and their objects draw geometry")
+        ->check(CLI::Range(0.0, 1e7))
+        ->capture_default_str();
     cmd->add_option("--impostor-cache-mb", args.cacheMiB,
                     "the cache folder's cap: past it the least recently used impostors are removed")
         ->check(CLI::Range(0.0, 1e7))
@@ -68,6 +74,8 @@ nlohmann::json lodReport(const lod::LodController& controller) {
         j["declined_bake_ms"] = controller.bakeDecisions().declinedBakeMs;
         j["bake_ms"] = set->bakeMs();
         j["loaded_impostors"] = set->loadedImpostors();  // of baked_impostors, loaded from the cache
+        j["evicted_impostors"] = set->evictedImpostors();  // by the memory cap (memory_cap_bytes, 0: none)
+        j["memory_cap_bytes"] = o.impostorMemoryBytes;
         j["image_bytes"] = m.images;
         j["rectangle_bytes"] = m.rectangles;
         j["vertex_bytes"] = m.vertexBuffer;
@@ -97,6 +105,9 @@ std::string lodSummary(const lod::LodController& controller) {
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
         n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked (%d from the cache) in %.0f ms",
                            set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());
+    if (const lod::ImpostorSet* set = controller.impostors(); set && set->evictedImpostors() > 0)
+        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d evicted by the %.2f MB cap", set->evictedImpostors(),
+                           double(controller.options().impostorMemoryBytes) / 1e6);
     if (const lod::LodBakeDecisions d = controller.bakeDecisions(); d.declined > 0)
         n += std::snprintf(line + n, sizeof line - std::size_t(n),
                            "; %d not baked: predicted bake %.0f ms > %.0f ms saved over the %lld frames planned",
