@@ -65,7 +65,9 @@ std::uint64_t impostorKey(const Scene& scene, int meshIndex, const ImpostorSetti
         h.add(m.baseColor), h.add(m.alpha), h.add(m.alphaMode), h.add(m.alphaCutoff);
         if (d.textured && m.baseColorTexture.present()) {
             h.add(m.baseColorTexture.sampler);
-            h.addVector(material.scene->scene().images[std::size_t(m.baseColorTexture.image)].rgba);
+            const TextureImage& image = material.scene->scene().images[std::size_t(m.baseColorTexture.image)];
+            h.add(image.width), h.add(image.height);  // the same bytes in another shape are another texture
+            h.addVector(image.rgba);
             h.addVector(mesh.texCoords[std::clamp(d.texCoord, 0, 1)]);
         }
         if (d.vertexColor) h.addVector(mesh.colors);
@@ -128,6 +130,7 @@ bool ImpostorCache::store(std::uint64_t key, const LayeredImpostor& impostor) {
 }
 
 void ImpostorCache::evict() {
+    if (maxBytes_ == 0) return;  // no cap
     struct Entry {
         std::filesystem::path path;
         std::filesystem::file_time_type time;
@@ -139,6 +142,7 @@ void ImpostorCache::evict() {
     for (const auto& e : std::filesystem::directory_iterator(folder_, error)) {
         if (!e.is_regular_file(error) || e.path().extension() != kExtension) continue;
         const std::uint64_t bytes = e.file_size(error);
+        if (error) continue;  // gone meanwhile (another run evicting)
         entries.push_back({e.path(), e.last_write_time(error), bytes});
         total += bytes;
     }

@@ -33,7 +33,8 @@ struct ImpostorCacheCounts {
 
 class ImpostorCache {
 public:
-    // `maxBytes`: the folder's cap (files of other programs in it are not counted or touched).
+    // `maxBytes`: the folder's cap, 0 for none (files of other programs in it are not counted or
+    // touched).
     explicit ImpostorCache(std::filesystem::path folder, std::uint64_t maxBytes = kDefaultMaxBytes);
 
     static constexpr std::uint64_t kDefaultMaxBytes = 2ull << 30;  // 2 GiB

@@ -134,8 +134,8 @@ LayeredImpostor LayeredImpostor::deserialize(const std::vector<std::uint8_t>& by
     m.rects_.resize(ranges);
     for (SliceRect& rect : m.rects_) {
         rect = r.get<SliceRect>("the rectangles");
-        if (!rect.empty() && (int(rect.x1) >= s.resolution || int(rect.y1) >= s.resolution))
-            throw std::runtime_error("a rectangle lies outside the image");
+        if (!rect.empty() && (int(rect.x1) >= s.resolution || int(rect.y1) >= s.resolution || rect.y0 > rect.y1))
+            throw std::runtime_error("a rectangle lies outside the image or is inverted");
     }
     auto view = [&](std::int32_t v) {
         if (v < 0 || v >= s.views) throw std::runtime_error("a view index out of range");
@@ -165,6 +165,7 @@ LayeredImpostor LayeredImpostor::deserialize(const std::vector<std::uint8_t>& by
         gl::Texture t = layerTexture(format, s.resolution, layers);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTextureSubImage3D(t.id(), 0, 0, 0, 0, s.resolution, s.resolution, layers, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);  // GL's default, which other uploads assume
         return t;
     };
     m.atlas_ = upload(GL_RGBA8, atlas);

@@ -10,6 +10,17 @@
 
 namespace strata::lod {
 
+namespace {
+
+bool sameSettings(const ImpostorSettings& a, const ImpostorSettings& b) {
+    // As a bake uses them: overlap is 0 with more than one peel.
+    const float overlapA = a.peels > 1 ? 0.0f : a.overlap, overlapB = b.peels > 1 ? 0.0f : b.overlap;
+    return a.views == b.views && a.resolution == b.resolution && a.slices == b.slices && a.peels == b.peels &&
+           overlapA == overlapB && a.apexFactor == b.apexFactor && a.holeFilling == b.holeFilling;
+}
+
+}  // namespace
+
 ImpostorKeys impostorKeys(const GpuScene& scene) {
     ImpostorKeys keys;
     const auto& objects = scene.objects();
@@ -74,9 +85,12 @@ int ImpostorSet::bake(const std::vector<bool>& ids) {
         BakeMaterial material;
         if (keys_.bakeObject[k] >= 0) material = {scene_, keys_.bakeObject[k]};
         ++done;
-        const std::uint64_t key = cache_ ? impostorKey(s, m, own, material) : 0;
+        const std::uint64_t key = cache_ ? keyOf(int(k)) : 0;
         if (cache_) {
-            if (std::optional<LayeredImpostor> kept = cache_->load(key)) {
+            std::optional<LayeredImpostor> kept = cache_->load(key);
+            // What was loaded is what this bake would make (a key collision would show here).
+            if (kept && !sameSettings(kept->settings(), own)) kept.reset();
+            if (kept) {
                 impostors_[k] = std::make_unique<LayeredImpostor>(std::move(*kept));
                 ++loaded_;
                 if (progress_) *progress_ << "baking impostors: " << done << "/" << total << " (from the cache)" << std::endl;
@@ -117,11 +131,22 @@ void ImpostorSet::evict(int id, const std::string& why) {
 
 bool ImpostorSet::cached(int id) const {
     if (!cache_ || id < 0 || tried_[std::size_t(id)]) return false;
-    ImpostorSettings own = settings_;
-    if (transparent_[std::size_t(id)]) own.peels = transparentPeels_, own.overlap = 0.0f;
-    BakeMaterial material;
-    if (keys_.bakeObject[std::size_t(id)] >= 0) material = {scene_, keys_.bakeObject[std::size_t(id)]};
-    return cache_->contains(impostorKey(scene_->scene(), keys_.mesh[std::size_t(id)], own, material));
+    return cache_->contains(keyOf(id));
+}
+
+std::uint64_t ImpostorSet::keyOf(int id) const {
+    // Hashing a mesh (and its texture) every frame an untried impostor is considered would cost
+    // more than the frame: each key is computed once.
+    if (keyMemo_.size() != tried_.size()) keyMemo_.assign(tried_.size(), std::nullopt);
+    std::optional<std::uint64_t>& key = keyMemo_[std::size_t(id)];
+    if (!key) {
+        ImpostorSettings own = settings_;
+        if (transparent_[std::size_t(id)]) own.peels = transparentPeels_, own.overlap = 0.0f;
+        BakeMaterial material;
+        if (keys_.bakeObject[std::size_t(id)] >= 0) material = {scene_, keys_.bakeObject[std::size_t(id)]};
+        key = impostorKey(scene_->scene(), keys_.mesh[std::size_t(id)], own, material);
+    }
+    return *key;
 }
 
 const LayeredImpostor* ImpostorSet::impostorOfId(int id) const {

@@ -11,6 +11,7 @@
 
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,7 +91,9 @@ private:
     std::vector<bool> transparent_, tried_;                    // per id
     int transparentPeels_ = 2;
     std::ostream* progress_ = nullptr;
+    std::uint64_t keyOf(int id) const;  // impostorKey of impostor `id` as this set bakes it
     ImpostorCache* cache_ = nullptr;
+    mutable std::vector<std::optional<std::uint64_t>> keyMemo_;  // per id
     int loaded_ = 0, evicted_ = 0;
     std::vector<StandInDraw> draws_;                                // per object
     double bakeMs_ = 0.0;

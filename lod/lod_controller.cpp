@@ -87,7 +87,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
     declined_.resize(ids, 0);
     declinedBakeMs_.resize(ids, 0.0);
     declinedSavingMs_.resize(ids, 0.0);
-    double predictedMs = 0.0;  // of what is baked now, unscaled
+    std::vector<double> drawsMsOf(ids, 0.0);  // auto's predicted bake of each id, unscaled
     // This selection's frames included: they are drawn with what is baked now.
     const long long framesLeft = options_.plannedFrames > 0 ? options_.plannedFrames - framesDrawn_ : 0;
     if (any && options_.mode == LodMode::Auto && options_.plannedFrames > 0) {
@@ -110,7 +110,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             declinedSavingMs_[id] = savedMs;
             if (!declined_[id]) {
                 any = true;
-                predictedMs += drawsMs;
+                drawsMsOf[id] = drawsMs;
                 continue;
             }
             wanted[id] = false;
@@ -138,7 +138,12 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             any = true;
         }
     }
+    // What the bake-time scale learns from: the bakes made now (loads cost ~0 and predict 0).
+    double predictedMs = 0.0;
+    for (std::size_t id = 0; id < ids; ++id)
+        if (wanted[id]) predictedMs += drawsMsOf[id];
     const double bakedBefore = impostors_->bakeMs();
+    const double loadedBefore = cache_ ? cache_->counts().loadMs : 0.0;
     if (!any || impostors_->bake(wanted) == 0) return;
     // What the formulas leave out (the vertex buffer) is learnt from what was baked, so the next
     // bake under the cap is not one the selection must evict at once.
@@ -147,7 +152,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             memoryScale_ = std::max(memoryScale_, double(impostors_->impostorOfId(int(id))->bytes().total()) /
                                                       double(std::max<std::uint64_t>(formulaBytes(id), 1)));
     if (predictedMs > 0.0) {
-        measuredBakeMs_ += impostors_->bakeMs() - bakedBefore;
+        measuredBakeMs_ += impostors_->bakeMs() - bakedBefore - ((cache_ ? cache_->counts().loadMs : 0.0) - loadedBefore);
         predictedBakeMs_ += predictedMs;
     }
     viewFractions_.resize(std::size_t(keys_.count()));

@@ -115,6 +115,8 @@ void run(const BenchArgs& a) {
         report.lod = lodReport(*lodController);  // meshes baked during the run counted too
         std::fprintf(stderr, "%s\n", lodSummary(*lodController).c_str());
     }
+    // Stopped before any technique completed: nothing to write.
+    if (report.interrupted && report.modes.empty()) throw Interrupted(interruptSignal());
     std::string reportWarning;
     if (reportFolder) {
         ReportPageText text;

@@ -51,7 +51,7 @@ void addLodOptions(CLI::App* cmd, LodArgs& args) {
         ->check(CLI::Range(0.0, 1e7))
         ->capture_default_str();
     cmd->add_option("--impostor-cache-mb", args.cacheMiB,
-                    "the cache folder's cap: past it the least recently used impostors are removed")
+                    "the cache folder's cap (0: none): past it the least recently used impostors are removed")
         ->check(CLI::Range(0.0, 1e7))
         ->capture_default_str();
 }
@@ -98,24 +98,26 @@ nlohmann::json lodReport(const lod::LodController& controller) {
 
 std::string lodSummary(const lod::LodController& controller) {
     const lod::LodSelection& s = controller.selection();
-    char line[320];
-    int n = std::snprintf(line, sizeof line, "lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors",
-                          lod::to_string(controller.options().mode), s.impostorObjects, s.objects.size(),
-                          s.impostorsUsed, double(s.impostorBytes) / 1e6);
+    // Appended piece by piece: a long line (large counts, many frames) is never cut or overrun.
+    std::string line;
+    auto add = [&line](const char* format, auto... values) {
+        char piece[256];
+        std::snprintf(piece, sizeof piece, format, values...);
+        line += piece;
+    };
+    add("lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors", lod::to_string(controller.options().mode),
+        s.impostorObjects, s.objects.size(), s.impostorsUsed, double(s.impostorBytes) / 1e6);
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
-        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d impostors baked (%d from the cache) in %.0f ms",
-                           set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());
+        add("; %d impostors baked (%d from the cache) in %.0f ms", set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->evictedImpostors() > 0)
-        n += std::snprintf(line + n, sizeof line - std::size_t(n), "; %d evicted by the %.2f MB cap", set->evictedImpostors(),
-                           double(controller.options().impostorMemoryBytes) / 1e6);
+        add("; %d evicted by the %.2f MB cap", set->evictedImpostors(), double(controller.options().impostorMemoryBytes) / 1e6);
     if (const lod::LodBakeDecisions d = controller.bakeDecisions(); d.declined > 0)
-        n += std::snprintf(line + n, sizeof line - std::size_t(n),
-                           "; %d not baked: predicted bake %.0f ms > %.0f ms saved over the %lld frames planned",
-                           d.declined, d.declinedBakeMs, d.declinedSavingMs, controller.options().plannedFrames);
+        add("; %d not baked: predicted bake %.0f ms > %.0f ms saved over the %lld frames planned", d.declined, d.declinedBakeMs,
+            d.declinedSavingMs, controller.options().plannedFrames);
     if (const auto& c = controller.calibration(); c && c->device == "given")
-        std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model given");
+        line += "; cost model given";
     else if (c)
-        std::snprintf(line + n, sizeof line - std::size_t(n), "; cost model calibrated in %.0f ms", c->wallMs);
+        add("; cost model calibrated in %.0f ms", c->wallMs);
     return line;
 }
 

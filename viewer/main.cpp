@@ -68,9 +68,6 @@ int main(int argc, char** argv) {
         std::string name = commandName(app);
         std::fprintf(stderr, "%s: %s (see %s --help)\n", name.c_str(), oneLine(e.what()).c_str(), name.c_str());
         return 1;
-        // A command that finished its work anyway (the viewer closes its window on the signal)
-        // still reports that it was stopped.
-        if (strata::interruptSignal()) throw strata::Interrupted(strata::interruptSignal());
     } catch (const strata::Interrupted& e) {
         // Everything unwound on the way here: temporaries removed, completed outputs written.
         std::fprintf(stderr, "strata: %s\n", e.what());
@@ -78,6 +75,12 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
         std::fprintf(stderr, "strata: %s\n", oneLine(e.what()).c_str());
         return 1;
+    }
+    // A command that finished its work anyway (the viewer closes its window on the signal; a
+    // signal after the bench's last check) still reports that it was stopped.
+    if (const int signal = strata::interruptSignal()) {
+        std::fprintf(stderr, "strata: %s\n", strata::Interrupted(signal).what());
+        return 128 + signal;
     }
     return 0;
 }

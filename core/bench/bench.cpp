@@ -199,6 +199,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
+        std::pair<Image, Image> first;  // the first frame and its reference
         for (int f = 0; f < options.frames; ++f) {
             // A signal ends the run between frames; this technique's rows are incomplete and dropped.
             if (interruptSignal()) {
@@ -259,19 +260,21 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.primitivesBounded += r.stats.primitivesBounded;
 
             Image image = renderer.readOutput();
+            // Handed to firstFrame once the technique completed: a technique a signal stops
+            // leaves no row and no image.
+            if (f == 0 && options.firstFrame) first = {image, isReference ? image : reference.image};
             if (isReference) {
                 // The reference against itself: zero by definition. Its frame is the one in hand.
                 error.add(image, image);
                 reference.image = std::move(image);
                 reference.key = keyOf(f);
                 if (options.referenceFrame && id == "abuffer") options.referenceFrame(f, reference.image);
-                if (f == 0 && options.firstFrame) options.firstFrame(id, reference.image, reference.image);
             } else {
                 error.add(image, reference.image);
-                if (f == 0 && options.firstFrame) options.firstFrame(id, image, reference.image);
             }
         }
         if (report.interrupted) break;
+        if (options.firstFrame) options.firstFrame(id, first.first, first.second);
         // A fixed camera needs no more reference renders: free the reference's buffers now.
         if (isReference && !options.cameraPath) reference.technique.reset();
         mode.msMedian = percentile(gpu, 0.5);

@@ -1,5 +1,6 @@
 #include "bench/report_folder.hpp"
 
+#include "io/interrupt.hpp"
 #include "io/printable.hpp"
 #include "io/run_program.hpp"
 #include "render/error_map.hpp"
@@ -15,10 +16,16 @@ namespace {
 // Thumbnails about 240 pixels wide: two per card, cards of ~430 pixels on the page.
 constexpr int kThumbnailWidth = 240;
 
-// A gnuplot single-quoted string: a quote inside is written twice.
-std::string gnuplotString(const std::string& text) {
+// A gnuplot single-quoted string: a quote inside is written twice. gnuplot ends an open string
+// at the end of a line and runs the next line as a command, so no control character may pass:
+// in text it becomes a space; a path that holds one is refused (renaming it would write elsewhere).
+std::string gnuplotString(const std::string& text, bool path = false) {
     std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+    for (char c : text) {
+        const bool control = (unsigned char)c < 0x20 || c == 0x7f;
+        if (control && path) throw std::runtime_error(text + ": a path with control characters cannot be given to gnuplot");
+        out += c == '\'' ? std::string("''") : control ? std::string(" ") : std::string(1, c);
+    }
     return out + "'";
 }
 
@@ -77,11 +84,13 @@ std::string ReportFolder::finish(const BenchReport& report, ReportPageText text)
         outputs_.add(folder_ / "chart.svg", [&](const std::filesystem::path& temporary) {
             const std::string subtitle = report.scene + ", " + std::to_string(report.size.x) + "x" +
                                          std::to_string(report.size.y) + ", " + report.device.renderer;
-            const std::string program = chart.datablocks + "out = " + gnuplotString(temporary.string()) +
+            const std::string program = chart.datablocks + "out = " + gnuplotString(temporary.string(), true) +
                                         "\nfamilies = " + gnuplotString(chart.families) + "\nytics = " + gnuplotString(chart.yTics) +
                                         "\nsubtitle = " + gnuplotString(subtitle) +
-                                        "\nload " + gnuplotString(script) + "\n";
+                                        "\nload " + gnuplotString(script, true) + "\n";
             const ProgramResult plotted = runProgram({"gnuplot"}, program);
+            // Ctrl-C reaches gnuplot too (one process group): that is the interrupt, not its failure.
+            throwIfInterrupted();
             if (plotted.exitCode != 0)
                 throw std::runtime_error("gnuplot failed on " + script + ": " + printableMessage(plotted.output));
         });

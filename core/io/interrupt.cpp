@@ -14,7 +14,11 @@ static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void onInterrupt(int signal) {
     int none = 0;
-    received.compare_exchange_strong(none, signal);
+    if (received.compare_exchange_strong(none, signal)) return;
+    // A second request, of either kind (SA_RESETHAND resets only the one that came first): the
+    // default action, now. signal() and raise() are async-signal-safe.
+    ::signal(signal, SIG_DFL);
+    ::raise(signal);
 }
 
 // The signals handled (not those ignored at startup), so clearInterrupt can re-arm them.
@@ -26,7 +30,8 @@ void arm(int signal) {
     action.sa_handler = onInterrupt;
     sigemptyset(&action.sa_mask);
     // SA_RESETHAND: the first signal asks; a second one gets the default action and ends us.
-    action.sa_flags = SA_RESETHAND;
+    // SA_RESTART: a blocking call the signal interrupts resumes (the work polls the flag).
+    action.sa_flags = SA_RESETHAND | SA_RESTART;
     sigaction(signal, &action, nullptr);
 }
 

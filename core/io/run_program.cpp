@@ -70,38 +70,53 @@ ProgramResult runProgram(const std::vector<std::string>& arguments, std::string_
     fcntl(in.fd[1], F_SETFL, fcntl(in.fd[1], F_GETFL) | O_NONBLOCK);
 
     // Feed the input and read the output together, so neither side blocks on a full pipe.
-    // A program that exits without reading its input must not kill us with SIGPIPE.
-    struct sigaction ignore {}, previous {};
-    ignore.sa_handler = SIG_IGN;
-    sigaction(SIGPIPE, &ignore, &previous);
+    // A program that exits without reading its input must not kill us with SIGPIPE (restored
+    // however this ends).
+    struct IgnoreSigpipe {
+        struct sigaction previous {};
+        IgnoreSigpipe() {
+            struct sigaction ignore {};
+            ignore.sa_handler = SIG_IGN;
+            sigaction(SIGPIPE, &ignore, &previous);
+        }
+        ~IgnoreSigpipe() { sigaction(SIGPIPE, &previous, nullptr); }
+    } ignoreSigpipe;
     ProgramResult result;
-    std::size_t written = 0;
-    if (input.empty()) in.closeEnd(1);
-    while (out.fd[0] >= 0) {
-        pollfd fds[2] = {{out.fd[0], POLLIN, 0}, {in.fd[1], POLLOUT, 0}};
-        const nfds_t count = in.fd[1] >= 0 ? 2 : 1;
-        if (poll(fds, count, -1) < 0) {
-            if (errno == EINTR) continue;
-            break;
+    try {
+        std::size_t written = 0;
+        if (input.empty()) in.closeEnd(1);
+        while (out.fd[0] >= 0) {
+            pollfd fds[2] = {{out.fd[0], POLLIN, 0}, {in.fd[1], POLLOUT, 0}};
+            const nfds_t count = in.fd[1] >= 0 ? 2 : 1;
+            if (poll(fds, count, -1) < 0) {
+                if (errno == EINTR) continue;
+                break;
+            }
+            if (count == 2 && (fds[1].revents & (POLLOUT | POLLERR | POLLHUP))) {
+                const ssize_t n = ::write(in.fd[1], input.data() + written, input.size() - written);
+                if (n > 0) written += std::size_t(n);
+                if (n < 0 && errno != EINTR && errno != EAGAIN) written = input.size();  // the reader is gone
+                if (written == input.size()) in.closeEnd(1);
+            }
+            if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
+                char buffer[4096];
+                const ssize_t n = ::read(out.fd[0], buffer, sizeof buffer);
+                if (n > 0) result.output.append(buffer, std::size_t(n));
+                else if (n == 0 || errno != EINTR) out.closeEnd(0);
+            }
         }
-        if (count == 2 && (fds[1].revents & (POLLOUT | POLLERR | POLLHUP))) {
-            const ssize_t n = ::write(in.fd[1], input.data() + written, input.size() - written);
-            if (n > 0) written += std::size_t(n);
-            if (n < 0 && errno != EINTR && errno != EAGAIN) written = input.size();  // the reader is gone
-            if (written == input.size()) in.closeEnd(1);
-        }
-        if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
-            char buffer[4096];
-            const ssize_t n = ::read(out.fd[0], buffer, sizeof buffer);
-            if (n > 0) result.output.append(buffer, std::size_t(n));
-            else if (n == 0 || errno != EINTR) out.closeEnd(0);
-        }
+    } catch (...) {
+        // (An allocation failed.) The child is not left running or unreaped.
+        kill(pid, SIGKILL);
+        waitpid(pid, nullptr, 0);
+        throw;
     }
+    // Both ends closed before waiting: a child still writing gets EPIPE, not a full pipe forever.
     in.closeEnd(1);
+    out.closeEnd(0);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
-    sigaction(SIGPIPE, &previous, nullptr);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
     return result;
 }
