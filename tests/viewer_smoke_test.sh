@@ -133,3 +133,17 @@ echo "$line"
 [[ $line =~ ^zoom:\ [1-4]\ \(predictive\),\ frame\ [0-9.]+\ ms\ GPU,\ predicted\ [0-9.]+\ ms$ ]] ||
     fail "unexpected zoom line under a budget: $line"
 echo "viewer_smoke: zoom ok"
+
+# Ctrl-C in the terminal closes the window as its close button would: status 130 and one line.
+# (Python sends the signal: a shell's background job starts with SIGINT ignored.)
+out=$(LIBGL_ALWAYS_SOFTWARE=1 timeout 300 xvfb-run -a -s "-screen 0 1024x768x24" python3 -c '
+import signal, subprocess, sys, time
+p = subprocess.Popen([sys.argv[1], "view", "builtin:layers:4", "--size", "320x200", "--lod", "geometry"],
+                     stderr=subprocess.PIPE, text=True)
+time.sleep(5)
+p.send_signal(signal.SIGINT)
+err = p.communicate(timeout=120)[1].strip().splitlines()
+print(p.returncode, err[-1] if err else "")
+' "$strata" 2>&1) || fail "the interrupt check did not run: $out"
+[[ $(tail -n 1 <<<"$out") == "130 strata: interrupted by SIGINT" ]] || fail "strata view after SIGINT: $out"
+echo "viewer_smoke: SIGINT closes the window (status 130)"
