@@ -59,7 +59,7 @@ ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings
     if (bakeNow) bake(std::vector<bool>(n, true));
 }
 
-int ImpostorSet::bake(const std::vector<bool>& ids) {
+int ImpostorSet::bake(const std::vector<bool>& ids, double budgetMs) {
     const auto start = std::chrono::steady_clock::now();
     const Scene& s = scene_->scene();
     const auto& objects = scene_->objects();
@@ -67,9 +67,16 @@ int ImpostorSet::bake(const std::vector<bool>& ids) {
     const int loadedBefore = loaded_;
     for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) total += ids[k] && !tried_[k];
     if (total == 0) return 0;
+    pending_ = total;
     for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) {
         if (!ids[k] || tried_[k]) continue;
+        // Under a budget, one bake at least, then none that would start past it: the rest wait
+        // for the next call (their objects draw geometry meanwhile).
+        if (budgetMs > 0.0 && done > 0 &&
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= budgetMs)
+            break;
         tried_[k] = true;
+        --pending_;
         ImpostorSettings own = settings_;
         if (transparent_[k]) {
             // Disjoint intervals whatever the peel count: an overlapping slice would blend a

@@ -48,8 +48,11 @@ public:
     const ImpostorKeys& keys() const { return keys_; }
     int idOf(int objectIndex) const { return keys_.ofObject[std::size_t(objectIndex)]; }
     // Bakes the impostors flagged (indexed by id) that objects draw and that were not tried
-    // before; returns how many it tried. A progress line per impostor and a total.
-    int bake(const std::vector<bool>& ids);
+    // before; returns how many it tried. A progress line per impostor and a total. With
+    // `budgetMs` > 0 it starts no bake once that much time has passed (one bake at least): the
+    // others stay untried for a later call, and pendingBakes() says how many.
+    int bake(const std::vector<bool>& ids, double budgetMs = 0.0);
+    int pendingBakes() const { return pending_; }  // flagged by the last bake() and not reached
     bool tried(int id) const { return tried_[std::size_t(id)]; }
     // Whether a transparent object draws impostor `id` (it gets the transparent peel count).
     bool transparent(int id) const { return transparent_[std::size_t(id)]; }
@@ -94,7 +97,7 @@ private:
     std::uint64_t keyOf(int id) const;  // impostorKey of impostor `id` as this set bakes it
     ImpostorCache* cache_ = nullptr;
     mutable std::vector<std::optional<std::uint64_t>> keyMemo_;  // per id
-    int loaded_ = 0, evicted_ = 0;
+    int loaded_ = 0, evicted_ = 0, pending_ = 0;
     std::vector<StandInDraw> draws_;                                // per object
     double bakeMs_ = 0.0;
 };

@@ -144,13 +144,15 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         if (wanted[id]) predictedMs += drawsMsOf[id];
     const double bakedBefore = impostors_->bakeMs();
     const double loadedBefore = cache_ ? cache_->counts().loadMs : 0.0;
-    if (!any || impostors_->bake(wanted) == 0) return;
+    if (!any || impostors_->bake(wanted, options_.bakeBudgetMs) == 0) return;
     // What the formulas leave out (the vertex buffer) is learnt from what was baked, so the next
     // bake under the cap is not one the selection must evict at once.
     for (std::size_t id = 0; id < ids; ++id)
         if (wanted[id] && impostors_->impostorOfId(int(id)))
             memoryScale_ = std::max(memoryScale_, double(impostors_->impostorOfId(int(id))->bytes().total()) /
                                                       double(std::max<std::uint64_t>(formulaBytes(id), 1)));
+    for (std::size_t id = 0; id < ids; ++id)
+        if (wanted[id] && !impostors_->tried(int(id))) predictedMs -= drawsMsOf[id];  // waits for a later frame
     if (predictedMs > 0.0) {
         measuredBakeMs_ += impostors_->bakeMs() - bakedBefore - ((cache_ ? cache_->counts().loadMs : 0.0) - loadedBefore);
         predictedBakeMs_ += predictedMs;

@@ -40,6 +40,9 @@ struct LodOptions {
     // held impostors pass it anyway, the least useful this frame are evicted (unused first) and
     // their objects draw geometry.
     std::uint64_t impostorMemoryBytes = 0;
+    // Baking time per frame (select call), 0: none. The viewer's: a frame starts no bake past it
+    // (one at least), and the objects whose impostor waits draw geometry until it is ready.
+    double bakeBudgetMs = 0.0;
 };
 
 // What auto declines to bake because it would not pay over the frames planned: the impostors

@@ -284,3 +284,37 @@ TEST_CASE("impostor memory cap: the more useful impostor is baked, the other evi
     CHECK(tight.impostors()->bakedImpostors() == 0);
     CHECK_FALSE(tight.impostors()->tried(1));
 }
+
+TEST_CASE("bake budget: one bake per frame under a tiny budget, geometry until an impostor is ready") {
+    Scene s;
+    s.name = "two-meshes";
+    s.materials = {Material{}};
+    for (float x : {-1.5f, 1.5f}) {
+        Node node;
+        node.local = glm::translate(glm::mat4(1.0f), glm::vec3(x, 0.0f, 0.0f));
+        node.meshes = {s.addMesh(x < 0.0f ? makeSphere(1.0f, 48, 24) : makeBox(glm::vec3(-1.0f), glm::vec3(1.0f)))};
+        s.addNode(node);
+    }
+    test::Fixture fx(std::move(s));
+    Camera far = fx.camera;
+    far.position = glm::vec3(0.0f, 0.0f, 40.0f);
+    far.fitClipPlanes(fx.gpu->bounds());
+    LodOptions o = cachedImpostors(LodMode::Impostors, {});
+    o.bakeBudgetMs = 1e-6;
+    LodController lod(*fx.gpu, o);
+    lod.select(far, {64, 48});
+    REQUIRE(lod.impostors());
+    CHECK(lod.impostors()->bakedImpostors() == 1);
+    CHECK(lod.impostors()->pendingBakes() == 1);
+    CHECK(lod.selection().impostorObjects == 1);  // the other draws its geometry meanwhile
+    lod.select(far, {64, 48});
+    CHECK(lod.impostors()->bakedImpostors() == 2);
+    CHECK(lod.impostors()->pendingBakes() == 0);
+    CHECK(lod.selection().impostorObjects == 2);
+    // Without a budget both bake in the first frame.
+    o.bakeBudgetMs = 0.0;
+    LodController all(*fx.gpu, o);
+    all.select(far, {64, 48});
+    CHECK(all.impostors()->bakedImpostors() == 2);
+    CHECK(all.impostors()->pendingBakes() == 0);
+}

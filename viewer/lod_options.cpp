@@ -109,6 +109,8 @@ std::string lodSummary(const lod::LodController& controller) {
         s.impostorObjects, s.objects.size(), s.impostorsUsed, double(s.impostorBytes) / 1e6);
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
         add("; %d impostors baked (%d from the cache) in %.0f ms", set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());
+    if (const lod::ImpostorSet* set = controller.impostors(); set && set->pendingBakes() > 0)
+        add("; %d waiting to bake (geometry until then)", set->pendingBakes());
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->evictedImpostors() > 0)
         add("; %d evicted by the %.2f MB cap", set->evictedImpostors(), double(controller.options().impostorMemoryBytes) / 1e6);
     if (const lod::LodBakeDecisions d = controller.bakeDecisions(); d.declined > 0)

@@ -12,6 +12,9 @@
 
 namespace strata {
 
+// The viewer's impostor baking per frame (LodOptions::bakeBudgetMs): about one frame at 60 Hz.
+inline constexpr double kViewerBakeBudgetMs = 16.0;
+
 struct LodArgs {
     std::string mode = "auto";
     int views = 20;
