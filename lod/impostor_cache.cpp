@@ -7,8 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
+#include <span>
 #include <system_error>
 #include <type_traits>
 
@@ -16,6 +15,9 @@ namespace strata::lod {
 namespace {
 
 constexpr const char* kExtension = ".strata-impostor";
+// The largest file a bake writes: 256 px, 32 views, 4 peels, atlas and albedo (128 MiB of
+// texels) and its rectangles; anything larger is not ours.
+constexpr InputLimit kImpostorFileLimit{std::uintmax_t(160) << 20, "an impostor cache file"};
 
 // FNV-1a, 64 bits: a content key, not a defence against a crafted collision (the cache is the
 // user's own folder).
@@ -98,10 +100,9 @@ std::optional<LayeredImpostor> ImpostorCache::load(std::uint64_t key) {
     }
     const auto start = std::chrono::steady_clock::now();
     try {
-        std::ifstream in(path, std::ios::binary);
-        std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (!in.good() && !in.eof()) throw std::runtime_error("cannot read");
-        LayeredImpostor impostor = LayeredImpostor::deserialize(bytes);
+        const std::string bytes = readBoundedFile(path, kImpostorFileLimit);
+        LayeredImpostor impostor = LayeredImpostor::deserialize(
+            std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
         // Touched: eviction removes the least recently used first.
         std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), error);
         ++counts_.hits;

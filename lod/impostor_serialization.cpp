@@ -38,7 +38,7 @@ public:
 
 class Reader {
 public:
-    explicit Reader(const std::vector<std::uint8_t>& bytes) : bytes_(bytes) {}
+    explicit Reader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
     template <class T>
     T get(const char* what) {
         static_assert(std::is_trivially_copyable_v<T>);
@@ -48,9 +48,10 @@ public:
         at_ += sizeof(T);
         return v;
     }
-    std::vector<std::uint8_t> getBytes(std::size_t n, const char* what) {
+    // The next `n` bytes, in place (the texels are uploaded from the file's bytes, not copied).
+    std::span<const std::uint8_t> getBytes(std::size_t n, const char* what) {
         need(n, what);
-        std::vector<std::uint8_t> out(bytes_.begin() + std::ptrdiff_t(at_), bytes_.begin() + std::ptrdiff_t(at_ + n));
+        const auto out = bytes_.subspan(at_, n);
         at_ += n;
         return out;
     }
@@ -66,16 +67,9 @@ private:
     void need(std::size_t n, const char* what) const {
         if (bytes_.size() - at_ < n) throw std::runtime_error(std::string("ends inside ") + what);
     }
-    const std::vector<std::uint8_t>& bytes_;
+    std::span<const std::uint8_t> bytes_;
     std::size_t at_ = 0;
 };
-
-std::vector<std::uint8_t> readTexels(GLuint texture, std::size_t size) {
-    std::vector<std::uint8_t> texels(size);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(size), texels.data());
-    return texels;
-}
 
 }  // namespace
 
@@ -89,10 +83,8 @@ std::vector<std::uint8_t> LayeredImpostor::serialize() const {
     w.put(std::uint8_t(settings_.holeFilling));
     w.put(centre_), w.put(radius_);
     w.put(std::uint8_t(albedo_.id() != 0));
-    const std::size_t imageBytes = std::size_t(settings_.resolution) * std::size_t(settings_.resolution) * 4u *
-                                   std::size_t(settings_.views * settings_.peels);
-    w.putBytes(readTexels(atlas_.id(), imageBytes));
-    if (albedo_.id()) w.putBytes(readTexels(albedo_.id(), imageBytes));
+    w.putBytes(readLayers(atlas_.id()));
+    if (albedo_.id()) w.putBytes(readLayers(albedo_.id()));
     w.put(std::uint32_t(rects_.size()));
     for (const SliceRect& r : rects_) w.put(r);
     w.put(std::uint32_t(adjacency_.size()));
@@ -105,7 +97,7 @@ std::vector<std::uint8_t> LayeredImpostor::serialize() const {
     return std::move(w.bytes);
 }
 
-LayeredImpostor LayeredImpostor::deserialize(const std::vector<std::uint8_t>& bytes) {
+LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes) {
     const auto start = std::chrono::steady_clock::now();
     Reader r(bytes);
     for (char c : kMagic)
@@ -127,8 +119,8 @@ LayeredImpostor LayeredImpostor::deserialize(const std::vector<std::uint8_t>& by
     const bool albedo = r.get<std::uint8_t>("the albedo flag") != 0;
     const int layers = s.views * s.peels;
     const std::size_t imageBytes = std::size_t(s.resolution) * std::size_t(s.resolution) * 4u * std::size_t(layers);
-    const std::vector<std::uint8_t> atlas = r.getBytes(imageBytes, "the atlas");
-    const std::vector<std::uint8_t> albedoTexels = albedo ? r.getBytes(imageBytes, "the albedo") : std::vector<std::uint8_t>();
+    const std::span<const std::uint8_t> atlas = r.getBytes(imageBytes, "the atlas");
+    const std::span<const std::uint8_t> albedoTexels = albedo ? r.getBytes(imageBytes, "the albedo") : atlas.first(0);
     const std::size_t ranges = std::size_t(layers) * std::size_t(s.slices);
     if (r.count(sizeof(SliceRect), "the rectangles") != ranges) throw std::runtime_error("rectangle count does not match the settings");
     m.rects_.resize(ranges);
@@ -161,7 +153,7 @@ LayeredImpostor LayeredImpostor::deserialize(const std::vector<std::uint8_t>& by
 
     m.directions_ = viewDirections(s.views);
     for (const auto& d : m.directions_) m.frames_.push_back(makeImpostorFrame(m.centre_, m.radius_, d, s.apexFactor));
-    auto upload = [&](GLenum format, const std::vector<std::uint8_t>& texels) {
+    auto upload = [&](GLenum format, std::span<const std::uint8_t> texels) {
         gl::Texture t = layerTexture(format, s.resolution, layers);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTextureSubImage3D(t.id(), 0, 0, 0, 0, s.resolution, s.resolution, layers, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());

@@ -83,12 +83,7 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     gl::SavedDrawState saved;
     bakeImages(vertexArray, indexCount, material);
     // One read-back: the rectangles need every texel's depth code.
-    const int layers = settings_.views * settings_.peels;
-    const std::size_t size = std::size_t(settings_.resolution) * std::size_t(settings_.resolution) * 4u * std::size_t(layers);
-    std::vector<std::uint8_t> texels(size);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(atlas_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(size), texels.data());
-    buildRectangles(texels);
+    buildRectangles(readLayers(atlas_.id()));
     buildQuads();
     if (settings_.holeFilling) findHoleSlices(vertexArray, indexCount);
     glFinish();
@@ -103,6 +98,14 @@ gl::Texture LayeredImpostor::layerTexture(GLenum format, int resolution, int lay
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return t;
+}
+
+std::vector<std::uint8_t> LayeredImpostor::readLayers(GLuint texture) const {
+    std::vector<std::uint8_t> texels(std::size_t(settings_.resolution) * std::size_t(settings_.resolution) * 4u *
+                                     std::size_t(settings_.views * settings_.peels));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(texels.size()), texels.data());
+    return texels;
 }
 
 void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const BakeMaterial& material) {

@@ -28,6 +28,7 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -81,7 +82,7 @@ public:
     // An impostor from serialize()'s bytes, uploaded on the current GL context (no bake: bakeMs is
     // the load's time). Throws std::runtime_error naming what is malformed: the bytes may come
     // from a file another version wrote or a disk damaged.
-    static LayeredImpostor deserialize(const std::vector<std::uint8_t>& bytes);
+    static LayeredImpostor deserialize(std::span<const std::uint8_t> bytes);
     LayeredImpostor& operator=(LayeredImpostor&&) noexcept = default;
 
     bool valid() const { return reason_.empty(); }
@@ -123,6 +124,8 @@ private:
     LayeredImpostor() = default;
     // An array texture of `layers` square images, nearest-sampled, clamped: the atlas and albedo.
     static gl::Texture layerTexture(GLenum format, int resolution, int layers);
+    // Every layer of an atlas-shaped texture (the atlas or the albedo) as RGBA8 bytes.
+    std::vector<std::uint8_t> readLayers(GLuint texture) const;
     std::size_t rangeIndex(int view, int peel, int slice) const {
         return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) * std::size_t(settings_.slices) +
                std::size_t(slice);

@@ -175,6 +175,9 @@ std::string benchToCsv(const BenchReport& report);
 // all` includes it): every technique's time is also given as a multiple of it ("x floor").
 std::optional<double> floorMs(const BenchReport& report);
 
+// One number through a printf format ("%.2f"): the report's and the table's figures.
+std::string formatNumber(const char* format, double value);
+
 // "2.4 MiB", "250.0 KiB", "12 B": memory as the table shows it.
 std::string humanBytes(std::uint64_t bytes);
 

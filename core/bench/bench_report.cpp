@@ -14,13 +14,15 @@ namespace {
 // JSON has no NaN or infinity; the contract promises finite numbers.
 double finite(double v) { return std::isfinite(v) ? v : 0.0; }
 
-std::string fmt(const char* format, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
-}
+std::string fmt(const char* format, double v) { return formatNumber(format, v); }
 
 }  // namespace
+
+std::string formatNumber(const char* format, double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, value);
+    return buffer;
+}
 
 std::string humanBytes(std::uint64_t bytes) {
     if (bytes >= (1ull << 20)) return fmt("%.1f MiB", double(bytes) / double(1 << 20));

@@ -14,11 +14,7 @@
 namespace strata {
 namespace {
 
-std::string fmt(const char* format, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
-}
+std::string fmt(const char* format, double v) { return formatNumber(format, v); }
 
 // A linear RGB colour as CSS "#rrggbb" (sRGB-encoded, as the PNGs are).
 std::string cssColor(const glm::vec3& linear) {
