@@ -49,18 +49,22 @@ std::filesystem::path defaultImpostorCacheFolder() {
     return {};
 }
 
-std::uint64_t impostorKey(const Scene& scene, int meshIndex, const ImpostorSettings& settings, const BakeMaterial& material) {
+std::uint64_t impostorKey(const Scene& scene, const std::vector<ImpostorKeyPart>& parts, const Bounds& bounds,
+                          const ImpostorSettings& settings) {
     Hash h;
-    const char tag[] = "strata impostor 1";  // bump with the bake or the file layout
+    const char tag[] = "strata impostor 2";  // bump with the bake or the file layout
     h.bytes(tag, sizeof tag);
     h.add(settings.views), h.add(settings.resolution), h.add(settings.slices), h.add(settings.peels);
     h.add(settings.peels > 1 ? 0.0f : settings.overlap), h.add(settings.apexFactor), h.add(settings.holeFilling);
-    const Mesh& mesh = scene.meshes[std::size_t(meshIndex)];
-    h.addVector(mesh.positions), h.addVector(mesh.normals), h.addVector(mesh.indices);
-    const Bounds bounds = mesh.bounds();
     h.add(bounds.min), h.add(bounds.max);
-    h.add(material.scene != nullptr);
-    if (material.scene) {
+    h.add(std::uint64_t(parts.size()));
+    for (const ImpostorKeyPart& part : parts) {
+        const Mesh& mesh = scene.meshes[std::size_t(part.mesh)];
+        h.addVector(mesh.positions), h.addVector(mesh.normals), h.addVector(mesh.indices);
+        h.add(part.transform);
+        const BakeMaterial& material = part.material;
+        h.add(material.scene != nullptr);
+        if (!material.scene) continue;
         const BaseColorDetail d = material.scene->baseColorDetail(material.objectIndex);
         h.add(d.textured), h.add(d.transform), h.add(d.texCoord), h.add(d.vertexColor), h.add(d.factorAlpha), h.add(d.alphaCutoff);
         const Material& m = material.scene->scene().materials[std::size_t(material.scene->objects()[std::size_t(material.objectIndex)].material)];
@@ -75,6 +79,11 @@ std::uint64_t impostorKey(const Scene& scene, int meshIndex, const ImpostorSetti
         if (d.vertexColor) h.addVector(mesh.colors);
     }
     return h.value;
+}
+
+std::uint64_t impostorKey(const Scene& scene, int meshIndex, const ImpostorSettings& settings, const BakeMaterial& material) {
+    return impostorKey(scene, {{meshIndex, glm::mat4(1.0f), material}}, scene.meshes[std::size_t(meshIndex)].bounds(),
+                       settings);
 }
 
 ImpostorCache::ImpostorCache(std::filesystem::path folder, std::uint64_t maxBytes)

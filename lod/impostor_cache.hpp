@@ -1,7 +1,7 @@
 #pragma once
 // Baked impostors kept on disk, so a second run loads what the first baked (issue: "baking costs
-// nothing twice"). A bake is keyed by the content of what it bakes, not by file names: the mesh's
-// positions, normals and indices and its bounds; for a bake that keeps material detail
+// nothing twice"). A bake is keyed by the content of what it bakes, not by file names: each part's
+// mesh (positions, normals, indices) and placement, and the bounds; for a bake that keeps material detail
 // (BakeMaterial) what of the material it keeps (the base colour detail, the texture's texels
 // and sampler, the texture coordinates, COLOR_0); and the impostor settings. Change any of them
 // and the key changes; a stale file is never read for a new input.
@@ -21,8 +21,18 @@ namespace strata::lod {
 // $XDG_CACHE_HOME/strata/impostors, else $HOME/.cache/strata/impostors; empty when neither is set.
 std::filesystem::path defaultImpostorCacheFolder();
 
-// The content key of baking `meshIndex` of `scene` with `settings` (and `material`'s detail when
-// its scene is set).
+// One part of a bake as its key sees it: the mesh, its placement in the impostor's space, and
+// the material detail its albedo keeps (when the scene is set).
+struct ImpostorKeyPart {
+    int mesh = 0;
+    glm::mat4 transform{1.0f};
+    BakeMaterial material;
+};
+
+// The content key of baking `parts` of `scene` inside `bounds` with `settings`.
+std::uint64_t impostorKey(const Scene& scene, const std::vector<ImpostorKeyPart>& parts, const Bounds& bounds,
+                          const ImpostorSettings& settings);
+// Of baking one mesh, in its own space and bounds (and `material`'s detail when its scene is set).
 std::uint64_t impostorKey(const Scene& scene, int meshIndex, const ImpostorSettings& settings,
                           const BakeMaterial& material);
 

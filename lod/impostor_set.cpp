@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <string>
 #include <ostream>
 #include <utility>
 
@@ -24,19 +25,37 @@ bool sameSettings(const ImpostorSettings& a, const ImpostorSettings& b) {
 ImpostorKeys impostorKeys(const GpuScene& scene) {
     ImpostorKeys keys;
     const auto& objects = scene.objects();
+    const Scene& s = scene.scene();
+    std::vector<bool> excluded(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i) excluded[i] = scene.objectVolumes()[i].volume;
+    std::vector<Bounds> meshBounds;
+    std::vector<std::uint64_t> meshTriangles;
+    for (const Mesh& mesh : s.meshes) meshBounds.push_back(mesh.bounds()), meshTriangles.push_back(mesh.triangleCount());
+    keys.units = lodUnits(objects, excluded, meshBounds, meshTriangles);
     keys.ofObject.assign(objects.size(), -1);
-    // (mesh, material) where the bake keeps part of the material, else (mesh, -1).
-    std::map<std::pair<int, int>, int> ids;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        if (scene.objectVolumes()[i].volume) continue;
-        const bool baked = (scene.materialFeatures(int(i)) & kSceneBakedDetail) != 0;
-        const std::pair<int, int> key{objects[i].mesh, baked ? objects[i].material : -1};
-        const auto [it, added] = ids.emplace(key, keys.count());
-        if (added) {
-            keys.mesh.push_back(objects[i].mesh);
-            keys.bakeObject.push_back(baked ? int(i) : -1);
+    keys.ofUnit.assign(keys.units.units.size(), -1);
+    // Units share an impostor where each part is the same mesh in the same place, keeping the same
+    // material where the bake keeps part of it: the parts' (mesh, material or -1, placement), as bytes.
+    std::map<std::string, int> ids;
+    for (std::size_t u = 0; u < keys.units.units.size(); ++u) {
+        const LodUnit& unit = keys.units.units[u];
+        std::string key;
+        bool albedo = false;
+        for (std::size_t p = 0; p < unit.objects.size(); ++p) {
+            const int object = unit.objects[p];
+            const bool baked = (scene.materialFeatures(object) & kSceneBakedDetail) != 0;
+            albedo = albedo || baked;
+            const int part[2] = {objects[std::size_t(object)].mesh, baked ? objects[std::size_t(object)].material : -1};
+            key.append(reinterpret_cast<const char*>(part), sizeof part);
+            key.append(reinterpret_cast<const char*>(&unit.toRepresentative[p]), sizeof(glm::mat4));
         }
-        keys.ofObject[i] = it->second;
+        const auto [it, added] = ids.emplace(std::move(key), keys.count());
+        if (added) {
+            keys.unit.push_back(int(u));
+            keys.albedo.push_back(albedo);
+        }
+        keys.ofUnit[u] = it->second;
+        for (int object : unit.objects) keys.ofObject[std::size_t(object)] = it->second;
     }
     return keys;
 }
@@ -61,8 +80,6 @@ ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings
 
 int ImpostorSet::bake(const std::vector<bool>& ids, double budgetMs) {
     const auto start = std::chrono::steady_clock::now();
-    const Scene& s = scene_->scene();
-    const auto& objects = scene_->objects();
     int total = 0, done = 0;
     const int loadedBefore = loaded_;
     for (std::size_t k = 0; k < tried_.size() && k < ids.size(); ++k) total += ids[k] && !tried_[k];
@@ -84,13 +101,12 @@ int ImpostorSet::bake(const std::vector<bool>& ids, double budgetMs) {
             own.peels = transparentPeels_;
             own.overlap = 0.0f;
         }
-        const int m = keys_.mesh[k];
-        // Objects share the mesh's vertex array; find one that draws it.
-        const GpuMesh* mesh = nullptr;
-        for (std::size_t i = 0; i < objects.size() && !mesh; ++i)
-            if (objects[i].mesh == m) mesh = &scene_->meshOf(int(i));
-        BakeMaterial material;
-        if (keys_.bakeObject[k] >= 0) material = {scene_, keys_.bakeObject[k]};
+        const LodUnit& unit = keys_.units.units[std::size_t(keys_.unit[k])];
+        std::vector<BakePart> parts;
+        for (std::size_t p = 0; p < unit.objects.size(); ++p) {
+            const GpuMesh& mesh = scene_->meshOf(unit.objects[p]);
+            parts.push_back({mesh.vertexArray.id(), mesh.indexCount, unit.toRepresentative[p], unit.objects[p]});
+        }
         ++done;
         const std::uint64_t key = cache_ ? keyOf(int(k)) : 0;
         if (cache_) {
@@ -104,7 +120,7 @@ int ImpostorSet::bake(const std::vector<bool>& ids, double budgetMs) {
                 continue;
             }
         }
-        auto impostor = std::make_unique<LayeredImpostor>(*mesh, s.meshes[std::size_t(m)].bounds(), own, material);
+        auto impostor = std::make_unique<LayeredImpostor>(parts, unit.bounds, own, keys_.albedo[k] ? scene_ : nullptr);
         if (impostor->valid()) {
             if (cache_) cache_->store(key, *impostor);
             impostors_[k] = std::move(impostor);
@@ -149,9 +165,14 @@ std::uint64_t ImpostorSet::keyOf(int id) const {
     if (!key) {
         ImpostorSettings own = settings_;
         if (transparent_[std::size_t(id)]) own.peels = transparentPeels_, own.overlap = 0.0f;
-        BakeMaterial material;
-        if (keys_.bakeObject[std::size_t(id)] >= 0) material = {scene_, keys_.bakeObject[std::size_t(id)]};
-        key = impostorKey(scene_->scene(), keys_.mesh[std::size_t(id)], own, material);
+        const LodUnit& unit = keys_.units.units[std::size_t(keys_.unit[std::size_t(id)])];
+        std::vector<ImpostorKeyPart> parts;
+        for (std::size_t p = 0; p < unit.objects.size(); ++p) {
+            BakeMaterial material;
+            if (keys_.albedo[std::size_t(id)]) material = {scene_, unit.objects[p]};
+            parts.push_back({scene_->objects()[std::size_t(unit.objects[p])].mesh, unit.toRepresentative[p], material});
+        }
+        key = impostorKey(scene_->scene(), parts, unit.bounds, own);
     }
     return *key;
 }
@@ -173,7 +194,14 @@ std::string ImpostorSet::reasonOf(int objectIndex) const {
     return reasons_[std::size_t(idOf(objectIndex))];
 }
 
+bool ImpostorSet::representative(int objectIndex) const {
+    const int unit = keys_.units.ofObject[std::size_t(objectIndex)];
+    return unit >= 0 && keys_.units.units[std::size_t(unit)].objects[0] == objectIndex;
+}
+
 glm::vec3 ImpostorSet::eyeInObject(int objectIndex, const glm::vec3& eyeWorld) const {
+    const int unit = keys_.units.ofObject[std::size_t(objectIndex)];
+    if (unit >= 0) objectIndex = keys_.units.units[std::size_t(unit)].objects[0];
     const glm::mat4& world = scene_->objects()[std::size_t(objectIndex)].world;
     return glm::vec3(glm::inverse(world) * glm::vec4(eyeWorld, 1.0f));
 }
@@ -181,17 +209,22 @@ glm::vec3 ImpostorSet::eyeInObject(int objectIndex, const glm::vec3& eyeWorld) c
 const StandInDraw* ImpostorSet::drawFor(int objectIndex, const glm::vec3& eyeWorld) {
     const LayeredImpostor* impostor = impostorOf(objectIndex);
     if (!impostor) return nullptr;
+    if (!representative(objectIndex)) return &nothing_;
     // Hole-filling slices overlap the nearest view's: a transparent impostor would blend twice.
     const bool fillHoles = !transparent_[std::size_t(idOf(objectIndex))];
     StandInDraw& d = draws_[std::size_t(objectIndex)];
     d = impostor->drawFor(eyeInObject(objectIndex, eyeWorld), fillHoles);
+    d.worldBounds = keys_.units.units[std::size_t(keys_.units.ofObject[std::size_t(objectIndex)])].worldBounds;
     return &d;
 }
 
 std::vector<const StandInDraw*> ImpostorSet::drawsFor(const glm::vec3& eyeWorld, const std::vector<bool>& useImpostor) {
     std::vector<const StandInDraw*> out(scene_->objects().size(), nullptr);
-    for (std::size_t i = 0; i < out.size() && i < useImpostor.size(); ++i)
-        if (useImpostor[i]) out[i] = drawFor(int(i), eyeWorld);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const int unit = keys_.units.ofObject[i];
+        if (unit >= 0 && std::size_t(unit) < useImpostor.size() && useImpostor[std::size_t(unit)])
+            out[i] = drawFor(int(i), eyeWorld);
+    }
     return out;
 }
 

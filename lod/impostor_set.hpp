@@ -1,11 +1,13 @@
 #pragma once
-// The layered impostors of a scene: one per mesh that some surface object uses, shared by its
-// instances (the atlas holds normals, the object's material shades them), or, for a material
-// whose base colour texture, COLOR_0 or MASK the bake keeps (kSceneBakedDetail), one per mesh
-// and material; baked at load with a progress line, and the per-object stand-ins for a camera
-// (FrameOptions::standIns).
+// The layered impostors of a scene: one per LOD unit (lod/lod_units.hpp: the parts of a model
+// instance that share a material), shared by every unit with the same parts in the same places
+// (the atlas holds normals, the representative's material shades them), where a part's base
+// colour texture, COLOR_0 or MASK is kept (kSceneBakedDetail) by material too; baked with a
+// progress line, and the per-object stand-ins for a camera (FrameOptions::standIns): the
+// representative draws the unit's, its other parts draw nothing.
 #include "lod/impostor_cache.hpp"
 #include "lod/layered_impostor.hpp"
+#include "lod/lod_units.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/stand_in.hpp"
 
@@ -17,20 +19,22 @@
 
 namespace strata::lod {
 
-// Which impostor each object draws, as a dense id: objects share one where they share the mesh
-// and what the bake keeps of the material.
+// Which impostor each unit draws, as a dense id: units share one where their parts are the same
+// meshes in the same places, with the same of the material kept.
 struct ImpostorKeys {
-    std::vector<int> ofObject;    // per object; -1: none (a volume medium)
-    std::vector<int> mesh;        // per impostor
-    std::vector<int> bakeObject;  // per impostor: the object whose material its bake keeps, -1: normals only
-    int count() const { return int(mesh.size()); }
+    LodUnits units;
+    std::vector<int> ofObject;  // per object: its unit's impostor; -1: none (a volume medium)
+    std::vector<int> ofUnit;    // per unit
+    std::vector<int> unit;      // per impostor: the first unit that draws it (whose parts it bakes)
+    std::vector<bool> albedo;   // per impostor: the bake keeps material detail (BakeMaterial)
+    int count() const { return int(unit.size()); }
 };
 ImpostorKeys impostorKeys(const GpuScene& scene);
 
 class ImpostorSet {
 public:
-    // Bakes now (current GL context). Meshes used only by volume media (GpuScene::objectVolumes())
-    // or by no object are not baked. An impostor any transparent object draws gets
+    // Bakes now (current GL context). Volume media (GpuScene::objectVolumes()) have no unit and no
+    // impostor. An impostor any transparent object draws gets
     // `transparentPeels` peels (overlap 0); others `settings.peels`. `progress` (null: silent)
     // gets "baking impostors: i/n" lines and a total.
     // With bakeNow false nothing is baked until bake asks (LOD bakes only the impostors its
@@ -57,21 +61,25 @@ public:
     // Whether a transparent object draws impostor `id` (it gets the transparent peel count).
     bool transparent(int id) const { return transparent_[std::size_t(id)]; }
 
-    // The impostor an object draws, or null (volume medium, or none was baked: see reasonOf).
+    // The impostor of an object's unit, or null (volume medium, or none was baked: see reasonOf).
     const LayeredImpostor* impostorOf(int objectIndex) const;
+    const LodUnits& units() const { return keys_.units; }
+    // Whether the object draws its unit's stand-in (the others of the unit draw nothing in its place).
+    bool representative(int objectIndex) const;
     const LayeredImpostor* impostorOfId(int id) const;
     // Why an object has no impostor (empty when it has one).
     std::string reasonOf(int objectIndex) const;
 
-    // The eye in the object's space: inverse(world) * eyeWorld.
+    // The eye in the impostor's space (its unit representative's): inverse(world) * eyeWorld.
     glm::vec3 eyeInObject(int objectIndex, const glm::vec3& eyeWorld) const;
-    // Object `objectIndex`'s stand-in seen from `eyeWorld`, or null when it has no impostor. Holes
+    // Object `objectIndex`'s stand-in seen from `eyeWorld`, or null when it has no impostor: its
+    // unit's for the representative, an empty draw (nothing) for the unit's other parts. Holes
     // are filled for opaque impostors only (a transparent one would composite twice where the
     // hole-filling slices overlap the nearest view's). The pointer stays valid, its contents
     // until the next call for the same object.
     const StandInDraw* drawFor(int objectIndex, const glm::vec3& eyeWorld);
-    // Per object (indexed like GpuScene::objects()): the stand-in where useImpostor[i] and the
-    // object has one, null elsewhere. useImpostor shorter than the object list counts as false.
+    // Per object (indexed like GpuScene::objects()): drawFor where useImpostor[unit of i] and the
+    // unit has an impostor, null elsewhere. useImpostor is per unit; shorter counts as false.
     std::vector<const StandInDraw*> drawsFor(const glm::vec3& eyeWorld, const std::vector<bool>& useImpostor);
     // The view error of an object's impostor (radians), 0 without one.
     float nearestViewAngle(int objectIndex, const glm::vec3& eyeWorld) const;
@@ -99,6 +107,7 @@ private:
     mutable std::vector<std::optional<std::uint64_t>> keyMemo_;  // per id
     int loaded_ = 0, evicted_ = 0, pending_ = 0;
     std::vector<StandInDraw> draws_;                                // per object
+    StandInDraw nothing_;  // what a unit's other parts draw while it is an impostor
     double bakeMs_ = 0.0;
 };
 

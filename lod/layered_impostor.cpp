@@ -47,6 +47,26 @@ std::pair<int, int> acceptedSlices(int code, int slices, float overlap) {
     return {std::clamp(int(lo), 0, slices - 1), std::clamp(int(hi), 0, slices - 1)};
 }
 
+// Places `part` for `program`'s next draw (shaders/lod/bake.vert.glsl's uModel, uNormalMatrix).
+void setPartTransform(GLuint program, const BakePart& part) {
+    const glm::mat3 normal = glm::transpose(glm::inverse(glm::mat3(part.transform)));
+    glProgramUniformMatrix4fv(program, glGetUniformLocation(program, "uModel"), 1, GL_FALSE, glm::value_ptr(part.transform));
+    glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uNormalMatrix"), 1, GL_FALSE, glm::value_ptr(normal));
+}
+
+// What a part's material makes of its base colour (the bake's albedo target), for `program`.
+void setPartAlbedo(GLuint program, const GpuScene& scene, int objectIndex) {
+    const BaseColorDetail d = scene.baseColorDetail(objectIndex);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uTextured"), d.textured);
+    glProgramUniformMatrix3fv(program, glGetUniformLocation(program, "uBaseColorTransform"), 1, GL_FALSE,
+                              glm::value_ptr(d.transform));
+    glProgramUniform1i(program, glGetUniformLocation(program, "uBaseColorTexCoord"), d.texCoord);
+    glProgramUniform1i(program, glGetUniformLocation(program, "uVertexColor"), d.vertexColor);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uFactorAlpha"), d.factorAlpha);
+    glProgramUniform1f(program, glGetUniformLocation(program, "uAlphaCutoff"), d.alphaCutoff);
+    if (d.textured) scene.bindMaterialTextures(objectIndex);
+}
+
 }  // namespace
 
 std::string ImpostorSettings::validate() const {
@@ -66,11 +86,18 @@ LayeredImpostor::LayeredImpostor(const GpuMesh& mesh, const Bounds& bounds, cons
 
 LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds,
                                  const ImpostorSettings& settings, BakeMaterial material)
+    : LayeredImpostor(std::vector<BakePart>{{vertexArray, indexCount, glm::mat4(1.0f), material.objectIndex}}, bounds,
+                      settings, material.scene) {}
+
+LayeredImpostor::LayeredImpostor(const std::vector<BakePart>& parts, const Bounds& bounds,
+                                 const ImpostorSettings& settings, const GpuScene* albedoScene)
     : settings_(settings) {
     if (settings_.peels > 1) settings_.overlap = 0.0f;
     reason_ = settings_.validate();
     if (!valid()) return;
-    if (indexCount < 3) { reason_ = "the mesh has no triangles"; return; }
+    GLsizei indices = 0;
+    for (const BakePart& part : parts) indices += part.indexCount;
+    if (indices < 3) { reason_ = "the mesh has no triangles"; return; }
     if (bounds.empty()) { reason_ = "the mesh has no vertices"; return; }
     centre_ = bounds.center();
     radius_ = bounds.radius();
@@ -81,11 +108,11 @@ LayeredImpostor::LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const B
     directions_ = viewDirections(settings_.views);
     for (const auto& d : directions_) frames_.push_back(makeImpostorFrame(centre_, radius_, d, settings_.apexFactor));
     gl::SavedDrawState saved;
-    bakeImages(vertexArray, indexCount, material);
+    bakeImages(parts, albedoScene);
     // One read-back: the rectangles need every texel's depth code.
     buildRectangles(readLayers(atlas_.id()));
     buildQuads();
-    if (settings_.holeFilling) findHoleSlices(vertexArray, indexCount);
+    if (settings_.holeFilling) findHoleSlices(parts);
     glFinish();
     bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -108,11 +135,11 @@ std::vector<std::uint8_t> LayeredImpostor::readLayers(GLuint texture) const {
     return texels;
 }
 
-void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const BakeMaterial& material) {
+void LayeredImpostor::bakeImages(const std::vector<BakePart>& parts, const GpuScene* albedoScene) {
     const int res = settings_.resolution, peels = settings_.peels;
     auto arrayTexture = [&](GLenum format) { return layerTexture(format, res, settings_.views * peels); };
     atlas_ = arrayTexture(GL_RGBA8);
-    const bool withAlbedo = material.scene != nullptr;
+    const bool withAlbedo = albedoScene != nullptr;
     // sRGB-encoded: 8 bits where the eye sees steps, as the textures it comes from.
     if (withAlbedo) albedo_ = arrayTexture(GL_SRGB8_ALPHA8);
     // Two depth targets: the peel being drawn and the previous one it peels beneath.
@@ -125,20 +152,16 @@ void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const Bak
     peelDefines["PEEL"] = "";
     gl::Program peel = peels > 1 ? gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, peelDefines)
                                  : gl::Program();
+    // One part (a single mesh) sets its transform and material once; several set theirs per draw.
+    const bool onePart = parts.size() == 1;
+    auto placePart = [&](GLuint program, const BakePart& part) {
+        setPartTransform(program, part);
+        if (withAlbedo) setPartAlbedo(program, *albedoScene, part.objectIndex);
+    };
+    if (onePart)
+        for (const gl::Program* program : {&first, &peel})
+            if (program->id()) placePart(program->id(), parts[0]);
     if (withAlbedo) {
-        const BaseColorDetail d = material.scene->baseColorDetail(material.objectIndex);
-        for (const gl::Program* program : {&first, &peel}) {
-            const GLuint p = program->id();
-            if (!p) continue;
-            glProgramUniform1i(p, glGetUniformLocation(p, "uTextured"), d.textured);
-            glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "uBaseColorTransform"), 1, GL_FALSE,
-                                      glm::value_ptr(d.transform));
-            glProgramUniform1i(p, glGetUniformLocation(p, "uBaseColorTexCoord"), d.texCoord);
-            glProgramUniform1i(p, glGetUniformLocation(p, "uVertexColor"), d.vertexColor);
-            glProgramUniform1f(p, glGetUniformLocation(p, "uFactorAlpha"), d.factorAlpha);
-            glProgramUniform1f(p, glGetUniformLocation(p, "uAlphaCutoff"), d.alphaCutoff);
-        }
-        if (d.textured) material.scene->bindMaterialTextures(material.objectIndex);
         const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
         glNamedFramebufferDrawBuffers(fbo.id(), 2, both);
         glEnable(GL_FRAMEBUFFER_SRGB);  // linear out, sRGB stored (the normal atlas is not sRGB)
@@ -155,7 +178,6 @@ void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const Bak
     glDepthFunc(GL_GREATER);  // depth 0 at the apex side: keep the surface farthest from the apex
     glDepthMask(GL_TRUE);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glBindVertexArray(meshArray);
     const float empty[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const float clearDepth = 0.0f;
     for (int view = 0; view < settings_.views; ++view) {
@@ -179,7 +201,12 @@ void LayeredImpostor::bakeImages(GLuint meshArray, GLsizei indexCount, const Bak
             if (p > 0) glBindTextureUnit(gpu::BIND_BAKE_PREVIOUS_DEPTH, depth[(p + 1) % 2].id());
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, empty);
             glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
-            glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+            for (const BakePart& part : parts) {
+                if (part.indexCount <= 0) continue;
+                if (!onePart) placePart(program, part);
+                glBindVertexArray(part.vertexArray);
+                glDrawElements(GL_TRIANGLES, part.indexCount, GL_UNSIGNED_INT, nullptr);
+            }
         }
     }
     glBindTextureUnit(gpu::BIND_BAKE_PREVIOUS_DEPTH, 0);
@@ -256,7 +283,7 @@ void LayeredImpostor::buildQuads() {
     quadArray_ = makeStandInVertexArray(quadBuffer_.id());
 }
 
-void LayeredImpostor::findHoleSlices(GLuint meshArray, GLsizei indexCount) {
+void LayeredImpostor::findHoleSlices(const std::vector<BakePart>& parts) {
     // Section 3.3: from the direction halfway between V and an adjacent Vi, draw V's impostor,
     // then Vi's slices with ids where V left pixels empty; the ids in the image are the slices
     // of Vi that close V's holes. Beyond the paper, a hole is also where the mesh itself covers
@@ -309,8 +336,12 @@ void LayeredImpostor::findHoleSlices(GLuint meshArray, GLsizei indexCount) {
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glUseProgram(geometry.id());
         glProgramUniformMatrix4fv(geometry.id(), geometryViewProj, 1, GL_FALSE, glm::value_ptr(viewProj));
-        glBindVertexArray(meshArray);
-        glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+        for (const BakePart& part : parts) {
+            if (part.indexCount <= 0) continue;
+            setPartTransform(geometry.id(), part);
+            glBindVertexArray(part.vertexArray);
+            glDrawElements(GL_TRIANGLES, part.indexCount, GL_UNSIGNED_INT, nullptr);
+        }
         // V: stencil 0 wherever one of its slices accepts a texel.
         glUseProgram(id);
         glBindVertexArray(quadArray_.id());

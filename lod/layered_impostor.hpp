@@ -56,6 +56,16 @@ struct BakeMaterial {
     int objectIndex = -1;
 };
 
+// One part of what a bake draws: a mesh's vertex array (attribute 0 position, 1 normal, indexed
+// triangles) placed by `transform` in the impostor's space. A LOD unit of several parts
+// (lod/lod_units.hpp) bakes them all into one impostor, in its representative's space.
+struct BakePart {
+    GLuint vertexArray = 0;
+    GLsizei indexCount = 0;
+    glm::mat4 transform{1.0f};
+    int objectIndex = -1;  // whose material detail the albedo keeps (BakeMaterial's scene set)
+};
+
 // Inclusive texel extents of the texels one slice accepts; x0 > x1 when it accepts none.
 struct SliceRect {
     std::uint8_t x0 = 1, y0 = 1, x1 = 0, y1 = 0;
@@ -73,6 +83,11 @@ public:
                     BakeMaterial material = {});
     LayeredImpostor(GLuint vertexArray, GLsizei indexCount, const Bounds& bounds, const ImpostorSettings& settings,
                     BakeMaterial material = {});
+    // Bakes several parts, each with its own material detail where `albedoScene` is set (a part of
+    // an object without any draws white albedo: its factors shade it); `bounds` holds them all in
+    // the impostor's space.
+    LayeredImpostor(const std::vector<BakePart>& parts, const Bounds& bounds, const ImpostorSettings& settings,
+                    const GpuScene* albedoScene = nullptr);
     LayeredImpostor(LayeredImpostor&&) noexcept = default;
 
     // The baked state as bytes (an on-disk cache's file, impostor_cache.hpp): the settings, the
@@ -130,10 +145,10 @@ private:
         return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) * std::size_t(settings_.slices) +
                std::size_t(slice);
     }
-    void bakeImages(GLuint meshArray, GLsizei indexCount, const BakeMaterial& material);
+    void bakeImages(const std::vector<BakePart>& parts, const GpuScene* albedoScene);
     void buildRectangles(const std::vector<std::uint8_t>& texels);
     void buildQuads();
-    void findHoleSlices(GLuint meshArray, GLsizei indexCount);
+    void findHoleSlices(const std::vector<BakePart>& parts);
 
     ImpostorSettings settings_;
     std::string reason_;

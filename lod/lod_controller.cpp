@@ -33,18 +33,22 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
     : scene_(scene), options_(options), progress_(progress) {
     const std::string invalid = options_.impostor.validate();
     if (!invalid.empty()) throw std::invalid_argument("impostor settings: " + invalid);
-    const auto& objects = scene_.objects();
     keys_ = impostorKeys(scene_);
-    inputs_.resize(objects.size());
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const Object& o = objects[i];
-        LodObjectInput& in = inputs_[i];
-        in.center = o.worldBounds.center();
-        in.radius = o.worldBounds.radius();
-        in.triangles = scene_.scene().meshes[std::size_t(o.mesh)].triangleCount();
-        in.impostor.id = keys_.ofObject[i];  // instances of one mesh (and baked material) share it
-        in.transparent = scene_.scene().materials[std::size_t(o.material)].isTransparent();
-        in.materialNotBaked = (scene_.materialFeatures(int(i)) & kSceneSurfaceDetail & ~kSceneBakedDetail) != 0;
+    const LodUnits& units = keys_.units;
+    inputs_.resize(units.units.size());
+    for (std::size_t u = 0; u < units.units.size(); ++u) {
+        const LodUnit& unit = units.units[u];
+        LodObjectInput& in = inputs_[u];
+        in.center = unit.worldBounds.center();
+        in.radius = unit.worldBounds.radius();
+        in.triangles = unit.triangles;
+        in.objects = int(unit.objects.size());
+        in.impostor.id = keys_.ofUnit[u];  // units of the same parts in the same places share it
+        const Object& representative = scene_.objects()[std::size_t(unit.objects[0])];
+        in.transparent = scene_.scene().materials[std::size_t(representative.material)].isTransparent();
+        for (int object : unit.objects)
+            in.materialNotBaked = in.materialNotBaked ||
+                                  (scene_.materialFeatures(object) & kSceneSurfaceDetail & ~kSceneBakedDetail) != 0;
     }
 }
 
@@ -61,14 +65,13 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
             impostors_->setCache(cache_.get());
         }
     }
-    const auto& objects = scene_.objects();
     const std::size_t ids = std::size_t(keys_.count());
     std::vector<bool> wanted(ids, false);
-    // Per impostor: the geometry time its objects would save per frame, and its triangles.
+    // Per impostor: the geometry time its units would save per frame, and its triangles.
     std::vector<double> saving(ids, 0.0), triangles(ids, 0.0);
     bool any = false;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-        const int id = keys_.ofObject[i];
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+        const int id = keys_.ofUnit[i];
         if (id < 0 || impostors_->tried(id)) continue;
         LodObjectInput guess = inputs_[i];
         guess.hasImpostor = true;
@@ -159,14 +162,14 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
     }
     viewFractions_.resize(std::size_t(keys_.count()));
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
-        const LayeredImpostor* impostor = impostors_->impostorOf(int(i));
+        const LayeredImpostor* impostor = impostors_->impostorOfId(keys_.ofUnit[i]);
         inputs_[i].hasImpostor = impostor != nullptr;
         if (!impostor) continue;
         inputs_[i].impostor.slices = impostor->settings().slices;
         inputs_[i].impostor.resolution = impostor->settings().resolution;
         inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
-        auto& fractions = viewFractions_[std::size_t(keys_.ofObject[i])];
+        auto& fractions = viewFractions_[std::size_t(keys_.ofUnit[i])];
         if (fractions.empty()) fractions = drawnFractions(*impostor);
     }
 }
@@ -184,10 +187,12 @@ LodBakeDecisions LodController::bakeDecisions() const {
 
 const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int frames) {
     selection_ = {};
+    unitSelection_ = {};
     lastEye_ = camera.position;
     if (options_.mode == LodMode::Geometry) {
         // Nothing baked or measured: every object's own triangles, predicted for nobody.
-        selection_.objects.assign(inputs_.size(), LodDecision{});
+        selection_.objects.assign(scene_.objects().size(), LodDecision{});
+        unitSelection_.objects.assign(inputs_.size(), LodDecision{});
         framesDrawn_ += std::max(frames, 0);
         return nullptr;
     }
@@ -209,24 +214,29 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
     bakeCandidates(view, model);
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         if (!inputs_[i].hasImpostor) continue;
-        const LayeredImpostor& impostor = *impostors_->impostorOf(int(i));
-        const glm::vec3 eye = impostors_->eyeInObject(int(i), camera.position);
+        const LayeredImpostor& impostor = *impostors_->impostorOfId(keys_.ofUnit[i]);
+        const glm::vec3 eye = impostors_->eyeInObject(keys_.units.units[i].objects[0], camera.position);
         const int nearest = impostor.nearestView(eye);
         inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(eye);
-        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofObject[i])][std::size_t(nearest)];
+        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofUnit[i])][std::size_t(nearest)];
     }
-    selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
-    if (enforceMemoryCap()) selection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
+    unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
+    if (enforceMemoryCap()) unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     std::vector<bool> use(inputs_.size());
-    for (std::size_t i = 0; i < use.size(); ++i) use[i] = selection_.objects[i].impostor;
+    for (std::size_t i = 0; i < use.size(); ++i) use[i] = unitSelection_.objects[i].impostor;
     standIns_ = impostors_->drawsFor(camera.position, use);
+    // Per object: its unit's decision (a volume medium, in no unit, its own triangles).
+    selection_ = unitSelection_;
+    selection_.objects.assign(scene_.objects().size(), LodDecision{false, LodReason::NoImpostor});
+    for (std::size_t o = 0; o < selection_.objects.size(); ++o)
+        if (const int unit = keys_.units.ofObject[o]; unit >= 0) selection_.objects[o] = unitSelection_.objects[std::size_t(unit)];
     framesDrawn_ += std::max(frames, 0);
     return selection_.impostorObjects > 0 ? &standIns_ : nullptr;
 }
 
 std::uint64_t LodController::formulaBytes(std::size_t id) const {
     const int peels = impostors_->transparent(int(id)) ? options_.transparentPeels : options_.impostor.peels;
-    const bool albedo = keys_.bakeObject[id] >= 0;
+    const bool albedo = keys_.albedo[id];
     return impostorImageBytes(options_.impostor.resolution, options_.impostor.views, peels) * (albedo ? 2 : 1) +
            impostorRectangleBytes(options_.impostor.views, peels, options_.impostor.slices);
 }
@@ -238,10 +248,10 @@ bool LodController::enforceMemoryCap() {
     // This frame's use of each impostor: the predicted geometry time its objects save.
     const std::size_t ids = std::size_t(keys_.count());
     std::vector<double> useful(ids, 0.0);
-    for (std::size_t i = 0; i < selection_.objects.size(); ++i) {
-        const LodDecision& d = selection_.objects[i];
-        if (d.impostor && keys_.ofObject[i] >= 0)
-            useful[std::size_t(keys_.ofObject[i])] += std::max(0.0, d.geometryMs - d.impostorMs) + 1e-9;
+    for (std::size_t i = 0; i < unitSelection_.objects.size(); ++i) {
+        const LodDecision& d = unitSelection_.objects[i];
+        if (d.impostor && keys_.ofUnit[i] >= 0)
+            useful[std::size_t(keys_.ofUnit[i])] += std::max(0.0, d.geometryMs - d.impostorMs) + 1e-9;
     }
     std::vector<std::size_t> order;
     for (std::size_t id = 0; id < ids; ++id)
@@ -258,15 +268,22 @@ bool LodController::enforceMemoryCap() {
         evicted = true;
     }
     for (std::size_t i = 0; i < inputs_.size(); ++i)
-        if (inputs_[i].hasImpostor && !impostors_->impostorOf(int(i))) inputs_[i].hasImpostor = false;
+        if (inputs_[i].hasImpostor && !impostors_->impostorOfId(keys_.ofUnit[i])) inputs_[i].hasImpostor = false;
     return evicted;
 }
 
 std::string LodController::explainObject(int objectIndex) const {
-    const std::size_t i = std::size_t(objectIndex);
-    if (i >= selection_.objects.size() || i >= inputs_.size()) return "";
+    if (objectIndex < 0 || std::size_t(objectIndex) >= keys_.units.ofObject.size()) return "";
+    const int unit = keys_.units.ofObject[std::size_t(objectIndex)];
+    if (unit < 0) return "geometry: a volume medium (no impostor)";
+    return explainUnit(unit);
+}
+
+std::string LodController::explainUnit(int unit) const {
+    const std::size_t i = std::size_t(unit);
+    if (i >= unitSelection_.objects.size() || i >= inputs_.size()) return "";
     if (options_.mode == LodMode::Geometry) return "geometry: forced";
-    return explain(selection_.objects[i], inputs_[i], {options_.mode, options_.maxErrorPx});
+    return explain(unitSelection_.objects[i], inputs_[i], {options_.mode, options_.maxErrorPx});
 }
 
 }  // namespace strata::lod

@@ -1,5 +1,5 @@
 #pragma once
-// Per-object level of detail for a frame (DESIGN's data flow: scene graph -> LOD selection ->
+// Level of detail per unit (lod/lod_units.hpp: a model instance's parts of one material) for a frame (DESIGN's data flow: scene graph -> LOD selection ->
 // ... -> opaque pass -> technique): calibrates the cost model on the first frame (auto), bakes a
 // mesh's layered impostor the first time selection could use it, then each frame decides
 // geometry or impostor per object (lod_select.hpp) and hands the frame the stand-ins
@@ -66,7 +66,11 @@ public:
     // LodOptions::plannedFrames).
     const StandIns* select(const Camera& camera, glm::ivec2 size, int frames = 1);
 
-    const LodSelection& selection() const { return selection_; }  // the last frame's
+    // The last frame's decisions per object (each its unit's; totals over the units) and per
+    // LOD unit (lod/lod_units.hpp: units().units[u]).
+    const LodSelection& selection() const { return selection_; }
+    const LodSelection& unitSelection() const { return unitSelection_; }
+    const LodUnits& units() const { return keys_.units; }
     const glm::vec3& lastEye() const { return lastEye_; }         // the last frame's eye, world
     const LodOptions& options() const { return options_; }
     void setMode(LodMode mode) { options_.mode = mode; }
@@ -75,8 +79,9 @@ public:
     const ImpostorCache* cache() const { return cache_.get(); }  // null without one (or before the first bake)
     const std::optional<LodCalibration>& calibration() const { return calibration_; }
     LodBakeDecisions bakeDecisions() const;
-    // An object's decision explained in one line (the panel's list).
+    // An object's (its unit's) or a unit's decision explained in one line (the panel's list).
     std::string explainObject(int objectIndex) const;
+    std::string explainUnit(int unit) const;
 
 private:
     void bakeCandidates(const LodView& view, const LodCostModel& model);
@@ -93,8 +98,8 @@ private:
     std::unique_ptr<ImpostorCache> cache_;  // before impostors_, which points into it
     std::unique_ptr<ImpostorSet> impostors_;
     std::optional<LodCalibration> calibration_;
-    std::vector<LodObjectInput> inputs_;
-    LodSelection selection_;
+    std::vector<LodObjectInput> inputs_;  // per LOD unit
+    LodSelection selection_, unitSelection_;
     StandIns standIns_;
     glm::vec3 lastEye_{0.0f};
     ImpostorKeys keys_;                               // which impostor each object draws

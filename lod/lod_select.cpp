@@ -108,7 +108,7 @@ LodSelection selectLod(const std::vector<LodObjectInput>& objects, const LodView
         out.geometryOnlyMs += d.geometryMs;
         out.predictedMs += d.impostor ? d.impostorMs : d.geometryMs;
         if (d.impostor) {
-            ++out.impostorObjects;
+            out.impostorObjects += object.objects;
             // A shared impostor's memory is held once however many objects draw it.
             if (object.impostor.id < 0 || counted.insert(object.impostor.id).second) {
                 ++out.impostorsUsed;

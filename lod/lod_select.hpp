@@ -54,10 +54,12 @@ struct ImpostorSummary {
     int peels = 1;                 // images per view (2 for a transparent mesh): drawnFraction <= peels
 };
 
+// One object, or a LOD unit of several (lod/lod_units.hpp) decided as one.
 struct LodObjectInput {
     glm::vec3 center{0.0f};        // world bounding sphere
     float radius = 0.0f;
     std::uint64_t triangles = 0;
+    int objects = 1;               // scene objects it stands for (LodSelection::impostorObjects)
     bool hasImpostor = false;
     // Auto leaves transparent objects geometry; only --lod impostors draws them as impostors.
     // Their composite is what the techniques are compared on, and an impostor moves each

@@ -107,6 +107,13 @@ std::string lodSummary(const lod::LodController& controller) {
     };
     add("lod %s: %d of %zu objects as impostors (%d distinct), %.2f MB of impostors", lod::to_string(controller.options().mode),
         s.impostorObjects, s.objects.size(), s.impostorsUsed, double(s.impostorBytes) / 1e6);
+    // Where parts are decided together (a scene description's model instances), the units too.
+    const lod::LodSelection& units = controller.unitSelection();
+    if (units.objects.size() != s.objects.size()) {
+        int impostorUnits = 0;
+        for (const lod::LodDecision& d : units.objects) impostorUnits += d.impostor ? 1 : 0;
+        add("; %d of %zu LOD units", impostorUnits, units.objects.size());
+    }
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
         add("; %d impostors baked (%d from the cache) in %.0f ms", set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->pendingBakes() > 0)

@@ -11,7 +11,7 @@ namespace strata {
 namespace {
 
 constexpr const char* kModeNames[] = {"geometry", "impostors", "auto"};
-constexpr int kListedObjects = 200;  // the table lists this many; the totals count all
+constexpr int kListedObjects = 200;  // the table lists this many units; the totals count all
 
 }  // namespace
 
@@ -39,23 +39,27 @@ void drawLodSection(lod::LodController& lod) {
                         c.hits, c.loadMs, c.stores, c.evicted, c.unreadable);
         }
     }
-    if (s.objects.empty() || !ImGui::TreeNode("objects")) return;
-    if (ImGui::BeginTable("lod objects", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY, ImVec2(0, 200))) {
-        for (const char* h : {"object", "drawn as", "view err deg", "err px", "geom ms", "imp ms", "impostor MB"})
+    // One row per LOD unit (a model instance's parts of one material, or a lone object).
+    const lod::LodSelection& u = lod.unitSelection();
+    const lod::LodUnits& units = lod.units();
+    if (u.objects.empty() || !ImGui::TreeNode("units")) return;
+    if (ImGui::BeginTable("lod units", 7, ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY, ImVec2(0, 200))) {
+        for (const char* h : {"unit (parts)", "drawn as", "view err deg", "err px", "geom ms", "imp ms", "impostor MB"})
             ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
-        for (int i = 0; i < int(s.objects.size()) && i < kListedObjects; ++i) {
-            const lod::LodDecision& d = s.objects[std::size_t(i)];
+        for (int i = 0; i < int(u.objects.size()) && i < units.count() && i < kListedObjects; ++i) {
+            const lod::LodDecision& d = u.objects[std::size_t(i)];
+            const int representative = units.units[std::size_t(i)].objects[0];
             const lod::ImpostorSet* set = lod.impostors();
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text("%d", i);
+            ImGui::Text("%d (%zu)", i, units.units[std::size_t(i)].objects.size());
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(d.impostor ? "impostor" : "geometry");
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lod.explainObject(i).c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lod.explainUnit(i).c_str());
             ImGui::TableNextColumn();
-            if (set && set->impostorOf(i))
-                ImGui::Text("%.1f", double(set->nearestViewAngle(i, lod.lastEye())) * 180.0 / M_PI);
+            if (set && set->impostorOf(representative))
+                ImGui::Text("%.1f", double(set->nearestViewAngle(representative, lod.lastEye())) * 180.0 / M_PI);
             ImGui::TableNextColumn();
             ImGui::Text("%.2f", d.errorPx);
             ImGui::TableNextColumn();
@@ -63,8 +67,9 @@ void drawLodSection(lod::LodController& lod) {
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", d.impostorMs);
             ImGui::TableNextColumn();
-            // Its mesh's impostor, shared by every instance of the mesh.
-            if (set && set->impostorOf(i)) ImGui::Text("%.2f", double(set->impostorOf(i)->bytes().total()) / 1e6);
+            // The unit's impostor, shared by every unit of the same parts.
+            if (set && set->impostorOf(representative))
+                ImGui::Text("%.2f", double(set->impostorOf(representative)->bytes().total()) / 1e6);
         }
         ImGui::EndTable();
     }

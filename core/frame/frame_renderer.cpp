@@ -30,10 +30,22 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     // Only what can reach the view is drawn, by the opaque pass and by every technique's passes
     // (they draw frame.transparentOrder).
     opaqueOrder_ = scene.opaqueObjects();
+    // A stand-in with nothing to draw is a LOD unit's other part (its representative draws the
+    // unit): out of every pass, and not counted as culled.
+    auto standInOf = [&](int object) { return options.standIns ? (*options.standIns)[std::size_t(object)] : nullptr; };
+    if (options.standIns) {
+        auto drawsNothing = [&](int object) { const StandInDraw* s = standInOf(object); return s && s->first.empty(); };
+        for (std::vector<int>* order : {&opaqueOrder_, &frame.transparentOrder})
+            order->erase(std::remove_if(order->begin(), order->end(), drawsNothing), order->end());
+    }
     std::size_t culled = 0;
     if (options.cull) {
         const Frustum frustum(frame.viewProjection);
-        auto outside = [&](int object) { return !frustum.mayContain(scene.objects()[std::size_t(object)].worldBounds); };
+        auto outside = [&](int object) {
+            const StandInDraw* s = standInOf(object);
+            return !frustum.mayContain(s && !s->worldBounds.empty() ? s->worldBounds
+                                                                    : scene.objects()[std::size_t(object)].worldBounds);
+        };
         for (std::vector<int>* order : {&opaqueOrder_, &frame.transparentOrder}) {
             const auto kept = std::remove_if(order->begin(), order->end(), outside);
             culled += std::size_t(order->end() - kept);

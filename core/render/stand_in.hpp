@@ -6,6 +6,7 @@
 // test first (shaders/common/scene_main.glsl), so each technique sees a stand-in's fragments as
 // it sees a mesh's. render/ knows only this description; lod/ decides what stands in for what.
 #include "gl/objects.hpp"
+#include "scene/scene.hpp"
 
 #include <epoxy/gl.h>
 
@@ -26,9 +27,13 @@ struct StandInDraw {
     GLuint albedo = 0;
     int slices = 1;          // L: every stack's number of depth slices (1..256)
     float overlap = 0.0f;    // slice widths each slice's interval reaches past its own, each side
-    // The vertex ranges (glMultiDrawArrays, GL_TRIANGLES) drawn this frame.
+    // The vertex ranges (glMultiDrawArrays, GL_TRIANGLES) drawn this frame; none: the object
+    // draws nothing (a part of a LOD unit whose representative draws the unit's stand-in).
     std::vector<GLint> first;
     std::vector<GLsizei> count;
+    // World bounds of what the quads show (a LOD unit's parts): culling and back-to-front
+    // sorting use them in the object's place. Empty: the object's own.
+    Bounds worldBounds;
 };
 
 // Per object (indexed like GpuScene::objects()): what draws in its place, or null for its own

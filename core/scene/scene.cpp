@@ -45,8 +45,10 @@ struct Flattener {
     const Scene& scene;
     std::vector<Object> objects;
     std::vector<char> onStack;
+    int units = 0;
 
-    void visit(int nodeIndex, const glm::mat4& parentWorld, int inheritedMaterial) {
+    // `unit` < 0: no unit node above; else the unit instance and the transform from its root.
+    void visit(int nodeIndex, const glm::mat4& parentWorld, int inheritedMaterial, int unit, const glm::mat4& parentUnitLocal) {
         if (nodeIndex < 0 || nodeIndex >= int(scene.nodes.size()))
             throw std::runtime_error("node index " + std::to_string(nodeIndex) + " out of range");
         if (onStack[nodeIndex])
@@ -54,6 +56,11 @@ struct Flattener {
         onStack[nodeIndex] = 1;
         const Node& node = scene.nodes[nodeIndex];
         glm::mat4 world = parentWorld * node.local;
+        glm::mat4 unitLocal = parentUnitLocal * node.local;
+        if (unit < 0 && node.lodUnit) {
+            unit = units++;
+            unitLocal = glm::mat4(1.0f);  // the root's own transform places the instance
+        }
         int material = node.materialOverride >= 0 ? node.materialOverride : inheritedMaterial;
         for (int meshIndex : node.meshes) {
             if (meshIndex < 0 || meshIndex >= int(scene.meshes.size()))
@@ -67,9 +74,11 @@ struct Flattener {
                 throw std::runtime_error("material index " + std::to_string(o.material) + " out of range");
             o.world = world;
             o.worldBounds = mesh.bounds().transformed(world);
+            if (unit >= 0) o.unit = unit, o.unitLocal = unitLocal;
+            else o.unit = units++;
             objects.push_back(o);
         }
-        for (int child : node.children) visit(child, world, material);
+        for (int child : node.children) visit(child, world, material, unit, unitLocal);
         onStack[nodeIndex] = 0;
     }
 };
@@ -78,7 +87,7 @@ struct Flattener {
 
 std::vector<Object> flatten(const Scene& scene) {
     Flattener f{scene, {}, std::vector<char>(scene.nodes.size(), 0)};
-    for (int root : scene.roots) f.visit(root, glm::mat4(1.0f), -1);
+    for (int root : scene.roots) f.visit(root, glm::mat4(1.0f), -1, -1, glm::mat4(1.0f));
     return std::move(f.objects);
 }
 

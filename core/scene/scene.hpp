@@ -127,6 +127,10 @@ struct Node {
     std::vector<int> meshes;          // indices into Scene::meshes
     int materialOverride = -1;        // applies to this node's meshes and its descendants
     int light = -1;                   // index into Scene::lights placed by this node, -1 none
+    // This node and everything below it are one unit of level of detail (lod/lod_units.hpp): a
+    // scene description's object (a model instance) by default. The topmost such node on a path
+    // decides; an object below none is a unit of its own.
+    bool lodUnit = false;
 };
 
 // A KHR_lights_punctual light. A node places it (Node::light): at the node's origin, shining
@@ -180,6 +184,11 @@ struct Object {
     int material = 0;
     glm::mat4 world{1.0f};
     Bounds worldBounds;
+    // The LOD unit instance the object belongs to (dense, in flatten order; a node reached by two
+    // paths is two instances) and its transform below the unit's root node: world = the root's
+    // world x unitLocal. An object below no Node::lodUnit is a unit of its own (identity).
+    int unit = 0;
+    glm::mat4 unitLocal{1.0f};
 };
 
 // Flattens the graph depth first. Throws std::runtime_error on a cycle or a bad index.

@@ -233,6 +233,7 @@ std::vector<int> appendModel(Scene& scene, Scene&& model) {
 struct PlacedModel {
     std::vector<int> roots;
     Bounds bounds;
+    int firstNode = 0, nodeCount = 0;  // the model's nodes in the scene's list
 };
 
 // "wireframe": true, false, or {"width": metres, "color": [r,g,b], "alpha": a}, all optional.
@@ -306,7 +307,8 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
         const json& o = objects[i];
         std::string where = "object " + std::to_string(i) + ": ";
         if (!o.is_object()) fail(where + "expected an object");
-        onlyKeys(o, {"model", "name", "fit", "translate", "rotate_deg", "rotate_axis_angle", "scale", "material"}, where);
+        onlyKeys(o, {"model", "name", "fit", "translate", "rotate_deg", "rotate_axis_angle", "scale", "material", "lod_unit"},
+                 where);
         if (!o.contains("model")) fail(where + "missing field 'model'");
         if (!o["model"].is_string()) fail(where + "model: expected a string");
         std::filesystem::path model = o["model"].get<std::string>();
@@ -343,8 +345,27 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
                 for (const std::string& line : report.warnings)
                     if (std::find(warnings->begin(), warnings->end(), line) == warnings->end()) warnings->push_back(line);
             const Bounds bounds = worldBounds(loaded, flatten(loaded));
+            const int firstNode = int(scene.nodes.size());
             std::vector<int> roots = appendModel(scene, std::move(loaded));
-            placed = models.emplace(key, PlacedModel{std::move(roots), bounds}).first;
+            placed = models.emplace(key, PlacedModel{std::move(roots), bounds, firstNode, int(scene.nodes.size()) - firstNode}).first;
+        }
+        // The unit of level of detail: the whole object (default), each part (false), or the
+        // subtrees of the model's nodes of one name (which every placement of the model shares).
+        node.lodUnit = true;
+        if (o.contains("lod_unit")) {
+            const json& unit = o["lod_unit"];
+            if (unit.is_boolean()) {
+                node.lodUnit = unit.get<bool>();
+            } else if (unit.is_string()) {
+                node.lodUnit = false;
+                const std::string name = unit.get<std::string>();
+                int marked = 0;
+                for (int n = placed->second.firstNode; n < placed->second.firstNode + placed->second.nodeCount; ++n)
+                    if (scene.nodes[std::size_t(n)].name == name) scene.nodes[std::size_t(n)].lodUnit = true, ++marked;
+                if (marked == 0) fail(where + "lod_unit: the model has no node named '" + printable(name, 80) + "'");
+            } else {
+                fail(where + "lod_unit: expected true, false or a node name");
+            }
         }
         if (fit > 0.0f) {
             node.local = node.local * fitTransform(placed->second.bounds, fit);

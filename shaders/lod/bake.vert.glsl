@@ -1,5 +1,6 @@
 #version 450 core
-// Impostor bake: a mesh in object space seen from one view's apex (lod/impostor_frame.hpp).
+// Impostor bake: a mesh (one part of a unit, placed by uModel) seen from one view's apex
+// (lod/impostor_frame.hpp).
 // t, the distance from the apex normalised over the slab, is linear in the position, so the
 // vertex stage computes it and perspective-correct interpolation keeps it exact.
 // BAKE_ALBEDO: the material's texture coordinates and COLOR_0 go on to the fragment stage
@@ -10,7 +11,9 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 
-uniform mat4 uViewProj;   // object space -> the view's back-perspective clip space
+uniform mat4 uModel;         // the part's space -> the impostor's (identity for a single mesh)
+uniform mat3 uNormalMatrix;  // its inverse transpose
+uniform mat4 uViewProj;   // the impostor's space -> the view's back-perspective clip space
 uniform vec3 uApex;
 uniform vec3 uAxis;
 uniform float uSlabNear;  // D - r
@@ -30,9 +33,10 @@ out vec4 vColor;
 #endif
 
 void main() {
-    vObjectNormal = inNormal;
-    vSlabT = (dot(inPosition - uApex, uAxis) - uSlabNear) / uSlabDepth;
-    gl_Position = uViewProj * vec4(inPosition, 1.0);
+    vec3 position = (uModel * vec4(inPosition, 1.0)).xyz;
+    vObjectNormal = uNormalMatrix * inNormal;
+    vSlabT = (dot(position - uApex, uAxis) - uSlabNear) / uSlabDepth;
+    gl_Position = uViewProj * vec4(position, 1.0);
 #ifdef BAKE_ALBEDO
     vTexCoord = uBaseColorTexCoord == 0 ? inTexCoord0 : inTexCoord1;
     vColor = uVertexColor ? inColor : vec4(1.0);
