@@ -274,3 +274,47 @@ TEST_CASE("scene description: what the glTF loader ignored in its models is pass
         model.string() + ": TEXCOORD_1 without TEXCOORD_0: attribute set is not contiguous, ignored (mesh 0 primitive 0)"});
     CHECK_NOTHROW(loadSceneDescription(path));  // callers that do not ask are not told
 }
+
+TEST_CASE("scene description: lod_unit makes an object, each part, or named model nodes the LOD units") {
+    // A car: an axle node holding two wheels and a body beside it, all quads.
+    GltfBuilder b;
+    int pos = b.positions(kQuadPositions);
+    int idx = b.accessor(b.view(std::vector<std::uint8_t>{0, 1, 2, 0, 2, 3}), kUByte, 6, "SCALAR");
+    const json quad = json::array({{{"attributes", {{"POSITION", pos}}}, {"indices", idx}}});
+    const int left = b.meshNode(quad, {{"name", "wheel"}, {"translation", {-1, 0, 0}}});
+    const int right = b.meshNode(quad, {{"name", "wheel"}, {"translation", {1, 0, 0}}});
+    const int body = b.meshNode(quad, {{"name", "body"}, {"translation", {0, 1, 0}}});
+    b.doc["nodes"].push_back({{"name", "axle"}, {"children", {left, right}}});
+    b.doc["nodes"].push_back({{"name", "car"}, {"children", {int(b.doc["nodes"].size()) - 1, body}}});
+    const std::string name = b.writeGltf("lod-unit-car").filename().string();
+    auto units = [&](const std::string& setting) {
+        const std::string extra = setting.empty() ? "" : R"(, "lod_unit": )" + setting;
+        Scene s = loadSceneDescription(writeDescription("lod-unit", R"({"objects": [
+            {"model": ")" + name + R"(", "translate": [0, 0, 0])" + extra + R"(},
+            {"model": ")" + name + R"(", "translate": [5, 0, 0])" + extra + R"(}]})"));
+        std::vector<int> out;
+        for (const Object& o : flatten(s)) out.push_back(o.unit);
+        return out;
+    };
+    // Flatten order per placement: left wheel, right wheel, body.
+    CHECK(units("") == std::vector<int>{0, 0, 0, 1, 1, 1});       // the object (default)
+    CHECK(units("true") == std::vector<int>{0, 0, 0, 1, 1, 1});
+    CHECK(units("false") == std::vector<int>{0, 1, 2, 3, 4, 5});  // each part
+    CHECK(units("\"axle\"") == std::vector<int>{0, 0, 1, 2, 2, 3});  // the axle's wheels; the body alone
+    // The wheels' transforms below their unit (the axle): each its own translation.
+    {
+        Scene s = loadSceneDescription(writeDescription("lod-unit-axle", R"({"objects": [
+            {"model": ")" + name + R"(", "translate": [5, 0, 0], "lod_unit": "axle"}]})"));
+        const std::vector<Object> objects = flatten(s);
+        REQUIRE(objects.size() == 3);
+        CHECK(objects[0].unitLocal[3].x == doctest::Approx(-1.0f));
+        CHECK(objects[1].unitLocal[3].x == doctest::Approx(1.0f));
+        CHECK(objects[0].world[3].x == doctest::Approx(4.0f));
+    }
+    CHECK(descriptionError(writeDescription("lod-unit-missing", R"({"objects": [
+        {"model": ")" + name + R"(", "lod_unit": "nope"}]})"))
+              .find("object 0: lod_unit: the model has no node named 'nope'") != std::string::npos);
+    CHECK(descriptionError(writeDescription("lod-unit-type", R"({"objects": [
+        {"model": ")" + name + R"(", "lod_unit": 3}]})"))
+              .find("object 0: lod_unit: expected true, false or a node name") != std::string::npos);
+}
