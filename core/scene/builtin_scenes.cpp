@@ -159,6 +159,9 @@ const std::vector<BuiltinSceneInfo>& builtinScenes() {
          "N full-view closed slabs of medium (tau, albedo), 0.1 thick: exactly 2N fragments per pixel"},
         {"field", "N[:transparent] (1..1000, default 100)",
          "N instances of one dense mesh (46080 triangles) on a grid over an opaque ground: the impostor LOD bench"},
+        {"orchard", "N[:glass] (1..100000, default 1000)",
+         "N instances of a four-part tree model (a trunk and three crown blobs, two materials) on a grid over an "
+         "opaque ground, each instance a LOD unit: the scene graph at scale; glass: the crowns transparent"},
         {"default", "", "the demo room: interpenetrating glass, a decal on a transparent panel in front of coloured "
                         "glass behind glass (transmission), a stained-glass pane, a foliage card, a wireframe over "
                         "its surface, volumes, dense opaque detail behind"},
@@ -470,6 +473,64 @@ Scene makeFieldScene(int count, bool transparentInstances) {
     return s;
 }
 
+Scene makeOrchardScene(int count, bool glassCrowns) {
+    if (count < 1 || count > kOrchardMaxInstances)
+        throw std::invalid_argument("orchard: " + std::to_string(count) + " instances is outside 1.." +
+                                    std::to_string(kOrchardMaxInstances));
+    Scene s = emptyScene("orchard:" + std::to_string(count) + (glassCrowns ? ":glass" : ""));
+    // The model, once: a trunk and three crown blobs below one node the instances place.
+    const int trunkMesh = s.addMesh(makeBox({-0.12f, 0.0f, -0.12f}, {0.12f, 1.2f, 0.12f}));
+    const int crownMesh = s.addMesh(makeBumpyBlob(kOrchardBlobSegments, 0.55f));
+    const int bark = s.addMaterial(opaque("bark", {0.35f, 0.22f, 0.12f}));
+    constexpr int kCrownColours = 4;
+    int crowns[kCrownColours];
+    for (int k = 0; k < kCrownColours; ++k) {
+        const glm::vec3 green(0.18f + 0.06f * float(k), 0.45f + 0.05f * float(k), 0.15f);
+        crowns[k] = s.addMaterial(glassCrowns ? transparent("crown" + std::to_string(k), green, 0.5f)
+                                              : opaque("crown" + std::to_string(k), green));
+    }
+    Node model;
+    model.name = "tree";
+    const int modelNode = int(s.nodes.size());
+    s.nodes.push_back(model);  // placed by the instances, not a root
+    auto part = [&](int mesh, int material, const glm::mat4& local) {
+        Node n;
+        n.local = local;
+        n.meshes = {mesh};
+        n.materialOverride = material;
+        s.addNode(std::move(n), modelNode);
+    };
+    part(trunkMesh, bark, glm::mat4(1.0f));
+    part(crownMesh, -1, glm::translate(glm::mat4(1.0f), {0.0f, 1.55f, 0.0f}));
+    part(crownMesh, -1, glm::rotate(glm::translate(glm::mat4(1.0f), {0.35f, 1.25f, 0.2f}), 1.3f, glm::vec3(0, 1, 0)));
+    part(crownMesh, -1, glm::rotate(glm::translate(glm::mat4(1.0f), {-0.3f, 1.3f, -0.25f}), 2.6f, glm::vec3(0, 1, 0)));
+    constexpr float kSpacing = 2.5f;
+    const int columns = int(std::ceil(std::sqrt(double(count))));
+    const int rows = (count + columns - 1) / columns;
+    for (int i = 0; i < count; ++i) {
+        const int row = i / columns, column = i % columns;
+        const glm::vec3 at((float(column) - 0.5f * float(columns - 1)) * kSpacing, 0.0f, -float(row) * kSpacing);
+        Node instance;
+        instance.name = "tree " + std::to_string(i);
+        // Golden-angle turns about the vertical and sizes 0.8..1.2: every instance looks different
+        // and all share one impostor per material (the turn and size are above the unit).
+        const float size = 0.8f + 0.4f * float((i * 37) % 11) / 10.0f;
+        instance.local = glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), at), glm::radians(137.508f * float(i)),
+                                                glm::vec3(0, 1, 0)),
+                                    glm::vec3(size));
+        instance.children = {modelNode};
+        instance.materialOverride = crowns[i % kCrownColours];  // the crowns'; the trunk keeps its bark
+        instance.lodUnit = true;
+        s.addNode(std::move(instance));
+    }
+    const float halfWidth = 0.5f * float(columns) * kSpacing + 2.0f, depth = float(rows) * kSpacing;
+    placeMesh(s, s.addMesh(makeBox({-halfWidth, -0.1f, -depth - 2.0f}, {halfWidth, 0.0f, 0.5f * kSpacing + 2.0f})),
+              s.addMaterial(opaque("ground", {0.42f, 0.45f, 0.38f})), glm::mat4(1.0f), "ground");
+    const float extent = std::max(2.0f * halfWidth, depth);
+    s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 3.0f + 0.45f * extent}, {0.0f, 0.0f, -0.4f * depth}, 50.0f);
+    return s;
+}
+
 namespace {
 
 Scene makeBuiltinSceneWithoutOptions(const std::string& spec);
@@ -525,6 +586,13 @@ Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
         if (second != std::string::npos && option != "transparent")
             throw std::invalid_argument("builtin:" + spec + ": the only option of field is 'transparent'");
         return makeFieldScene(parseCount(spec, arg.substr(0, second), 100, 1, kFieldMaxInstances), option == "transparent");
+    }
+    if (name == "orchard") {
+        auto second = arg.find(':');
+        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
+        if (second != std::string::npos && option != "glass")
+            throw std::invalid_argument("builtin:" + spec + ": the only option of orchard is 'glass'");
+        return makeOrchardScene(parseCount(spec, arg.substr(0, second), 1000, 1, kOrchardMaxInstances), option == "glass");
     }
     if (name == "default" && arg.empty()) return makeDefaultScene();
     std::string known;

@@ -19,6 +19,11 @@
 //                        varied rotations, on an opaque ground, the camera looking over the
 //                        field: the layered-impostor LOD bench (issue 11). Opaque instances, or
 //                        with transparent alpha 0.5
+//   builtin:orchard:N[:glass]  N instances (1..100000, default 1000) of a four-part tree model (a
+//                        trunk, three crown blobs sharing a mesh; bark and a crown colour) placed
+//                        by instance nodes that are LOD units, over an opaque ground: the scene
+//                        graph at scale (shared meshes, unit impostors, culling). glass: the
+//                        crowns at alpha 0.5
 //   builtin:default      the demo: interpenetrating glass, a decal coplanar with a transparent
 //                        panel, a translucent wireframe over its own surface, two intersecting
 //                        volumes, dense opaque detail behind (a relief of blocks), a row of models
@@ -61,6 +66,12 @@ Scene makeFieldScene(int count, bool transparentInstances);
 inline constexpr int kFieldMeshSegments = 48;
 inline constexpr int kFieldMeshTriangles = 20 * kFieldMeshSegments * kFieldMeshSegments;  // 46080
 inline constexpr int kFieldMaxInstances = 1000;
+
+// The orchard: `count` instance nodes (1..kOrchardMaxInstances, LOD units) over one tree model
+// (a trunk, then three crowns: objects 4 i .. 4 i + 3 per instance), then the ground last.
+Scene makeOrchardScene(int count, bool glassCrowns);
+inline constexpr int kOrchardMaxInstances = 100000;
+inline constexpr int kOrchardBlobSegments = 6;  // 720 triangles a crown blob
 
 // A distinct, saturated colour for index i (golden-angle hue steps).
 glm::vec3 paletteColor(int i);
