@@ -18,8 +18,14 @@
 # usage: scripts/bench_lod.sh [--out DIR] [--strata PATH] [--count N] [--size WxH] [--frames N]
 #        [--views 12,20,32] [--slices 16,64,256] [--resolutions 64,128,256] [--mode ID]
 #        [--transparent] [--crossover-sizes 64,128,256,512,1024] [--quick]
+#        [--scale [--scale-counts 100,1000,10000]]
 #   --quick: field:100 at 640x360, views 20, slices 16,64, resolutions 64,128, 2 frames,
 #            crossover sizes 64,128,256.
+#   --scale: instead of the above, the scene graph at scale (issue 23; scripts/lib/bench_scale.py):
+#            builtin:orchard:N for each of --scale-counts, and 64 copies of a 115-part CAD model
+#            (assimp-testmodels' 2CylinderEngine.glb); render wall time and RSS, frame ms and PSNR
+#            per LOD mode, impostor memory, the LOD step's CPU per object, beside the issue's aims.
+#            Default size 640x400, 3 frames; output in docs/bench/scale.
 # The impostor settings reach strata as --impostor-views, --impostor-slices and
 # --impostor-resolution (change VIEWS_FLAG, SLICES_FLAG, RES_FLAG below if they are named otherwise).
 set -euo pipefail
@@ -33,6 +39,10 @@ views=12,20,32
 slices=16,64,256
 resolutions=64,128,256
 crossover_sizes=64,128,256,512,1024
+scale=""
+scale_counts=100,1000,10000
+size_given=""
+out_given=""
 mode=blend-sorted  # the transparency technique: the opaque field does not depend on it
 variant=""
 VIEWS_FLAG=--impostor-views
@@ -40,10 +50,10 @@ SLICES_FLAG=--impostor-slices
 RES_FLAG=--impostor-resolution
 while [[ $# -gt 0 ]]; do
     case $1 in
-        --out) out=$2; shift 2 ;;
+        --out) out=$2; out_given=1; shift 2 ;;
         --strata) strata=$2; shift 2 ;;
         --count) count=$2; shift 2 ;;
-        --size) size=$2; shift 2 ;;
+        --size) size=$2; size_given=1; shift 2 ;;
         --frames) frames=$2; shift 2 ;;
         --views) views=$2; shift 2 ;;
         --slices) slices=$2; shift 2 ;;
@@ -51,9 +61,11 @@ while [[ $# -gt 0 ]]; do
         --mode) mode=$2; shift 2 ;;
         --transparent) variant=:transparent; shift ;;
         --crossover-sizes) crossover_sizes=$2; shift 2 ;;
+        --scale) scale=1; shift ;;
+        --scale-counts) scale_counts=$2; shift 2 ;;
         --quick) count=100; size=640x360; views=20; slices=16,64; resolutions=64,128; frames=2
                  crossover_sizes=64,128,256; shift ;;
-        -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,32p' "$0"; exit 0 ;;
         *) echo "bench_lod.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -62,8 +74,13 @@ help=$("$strata" bench --help 2>&1 || true)
 for flag in --lod "$VIEWS_FLAG" "$SLICES_FLAG" "$RES_FLAG"; do
     grep -q -- "$flag" <<<"$help" || { echo "bench_lod.sh: 'strata bench' has no $flag option yet" >&2; exit 1; }
 done
-mkdir -p "$out"
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
+if [[ -n $scale ]]; then
+    [[ -n $out_given ]] || out=$root/docs/bench/scale
+    [[ -n $size_given ]] || size=640x400
+    exec python3 "$root/scripts/lib/bench_scale.py" "$strata" "$out" "$size" "$frames" "$scale_counts"
+fi
+mkdir -p "$out"
 scene=builtin:field:$count$variant
 tag=$count${variant:+-transparent}-$size
 

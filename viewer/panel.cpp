@@ -81,8 +81,8 @@ void drawTiming(const PanelState& state) {
         ImGui::EndTable();
     }
     if (!frame.transparencyPass) ImGui::TextDisabled("no transparency pass (nothing transparent in view)");
-    ImGui::Text("objects culled %zu of %zu (outside the view frustum)", frame.objectsCulled,
-                state.scene->objects().size());
+    ImGui::Text("objects culled %zu of %zu, LOD units %zu of %d (outside the view frustum)", frame.objectsCulled,
+                state.scene->objects().size(), frame.unitsCulled, state.scene->cullHierarchy().unitCount());
     const FrameHistory& h = *state.history;
     char overlay[96];
     std::snprintf(overlay, sizeof overlay, "GPU ms, last %d: mean %.3f max %.3f", h.count(), h.mean(), h.max());

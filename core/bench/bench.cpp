@@ -7,6 +7,7 @@
 #include "frame/zoom_calibration.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -195,7 +196,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             controller = makeZoomController(options.zoomController, *options.budget, model);
         }
         mode.zoom = options.budget ? 0 : options.zoom;
-        std::vector<double> gpu, cpu, opaque, frame, enlarge;
+        std::vector<double> gpu, cpu, opaque, frame, enlarge, lodMs;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
@@ -218,7 +219,9 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 frameOptions.zoom = controller->choose(load);
             }
             if (options.lod) {
+                const auto lodStart = std::chrono::steady_clock::now();
                 const BenchLodFrame lod = options.lod(cameras[f], options.size, 1);
+                lodMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lodStart).count());
                 frameOptions.standIns = lod.standIns;
                 mode.impostorObjects = std::max(mode.impostorObjects, lod.impostorObjects);
                 mode.impostorBytes = std::max(mode.impostorBytes, lod.impostorBytes);
@@ -255,6 +258,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.objectDraws += r.stats.objectDraws;
             mode.objectDrawsSkipped += r.stats.objectDrawsSkipped;
             mode.objectsCulled += r.objectsCulled;
+            mode.unitsCulled += r.unitsCulled;
             mode.fragmentsTail += r.stats.fragmentsTail;
             mode.fragmentsDropped += r.stats.fragmentsDropped;
             mode.primitivesBounded += r.stats.primitivesBounded;
@@ -280,6 +284,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.msMedian = percentile(gpu, 0.5);
         mode.msP95 = percentile(gpu, 0.95);
         mode.cpuMsMedian = percentile(cpu, 0.5);
+        mode.lodMsMedian = lodMs.empty() ? 0.0 : percentile(lodMs, 0.5);
         mode.opaqueMsMedian = percentile(opaque, 0.5);
         mode.frameMsMedian = percentile(frame, 0.5);
         mode.enlargeMsMedian = percentile(enlarge, 0.5);

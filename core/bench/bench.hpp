@@ -88,6 +88,7 @@ struct BenchMode {
     bool rgbTransmittance = false;  // TechniqueInfo::rgbTransmittance
     double msMedian = 0, msP95 = 0;          // GPU ms of the technique's passes (opaque pass excluded)
     double cpuMsMedian = 0;                  // CPU wall ms of the whole frame
+    double lodMsMedian = 0;                  // CPU ms of the frame's LOD step (BenchOptions::lod), 0 without
     double opaqueMsMedian = 0;               // GPU ms of the opaque pass, for scale
     int passes = 0;
     std::uint64_t bytes = 0;
@@ -100,6 +101,7 @@ struct BenchMode {
     std::uint64_t objectDraws = 0;           // summed over frames
     std::uint64_t objectDrawsSkipped = 0;    // summed over frames
     std::uint64_t objectsCulled = 0;         // outside the view frustum, summed over frames
+    std::uint64_t unitsCulled = 0;           // LOD unit instances wholly outside, summed over frames
     std::uint64_t fragmentsTail = 0;         // summed over frames
     std::uint64_t fragmentsDropped = 0;      // summed over frames: counted but not stored
     std::uint64_t primitivesBounded = 0;     // summed over frames: sampled coarser than asked

@@ -38,13 +38,17 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         for (std::vector<int>* order : {&opaqueOrder_, &frame.transparentOrder})
             order->erase(std::remove_if(order->begin(), order->end(), drawsNothing), order->end());
     }
-    std::size_t culled = 0;
+    std::size_t culled = 0, unitsCulled = 0;
     if (options.cull) {
+        // The hierarchy answers for every object (render/cull_hierarchy.hpp); a LOD unit's stand-in
+        // is tested by its own bounds, which hold all the unit's parts.
         const Frustum frustum(frame.viewProjection);
+        const CullCounts counts = scene.cullHierarchy().cull(frustum, visible_);
+        unitsCulled = counts.unitsCulled;
         auto outside = [&](int object) {
             const StandInDraw* s = standInOf(object);
-            return !frustum.mayContain(s && !s->worldBounds.empty() ? s->worldBounds
-                                                                    : scene.objects()[std::size_t(object)].worldBounds);
+            if (s && !s->worldBounds.empty()) return !frustum.mayContain(s->worldBounds);
+            return !visible_[std::size_t(object)];
         };
         for (std::vector<int>* order : {&opaqueOrder_, &frame.transparentOrder}) {
             const auto kept = std::remove_if(order->begin(), order->end(), outside);
@@ -78,6 +82,7 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
 
     FrameResult result;
     result.objectsCulled = culled;
+    result.unitsCulled = unitsCulled;
     // A view whose transparent objects are all culled has no transparent fragment: no pass.
     if (technique && !frame.transparentOrder.empty()) {
         technique->render(frame);

@@ -58,6 +58,9 @@ struct FrameResult {
     glm::ivec2 renderSize{0, 0};   // what was drawn: zoomRenderSize(size, zoom)
     double enlargeMs = 0.0;        // GPU time of the enlargement (in gpuMs and passTimes too)
     std::size_t objectsCulled = 0; // outside the view frustum: drawn by no pass this frame
+    // LOD unit instances (Object::unit) the culling hierarchy found wholly outside, every part
+    // culled (render/cull_hierarchy.hpp; a volume medium's unit counts too).
+    std::size_t unitsCulled = 0;
 };
 
 class FrameRenderer {
@@ -78,6 +81,7 @@ private:
 
     FrameTargets targets_;
     std::vector<int> opaqueOrder_;  // the frame's opaque objects left after culling
+    std::vector<char> visible_;     // per object: the culling hierarchy's answer this frame
     gl::GpuTimer timer_;
     SceneProgram opaqueProgram_, countProgram_;
     gl::Buffer counter_;

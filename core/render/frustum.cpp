@@ -26,4 +26,14 @@ bool Frustum::mayContain(const Bounds& b) const {
     return true;
 }
 
+Frustum::Side Frustum::classify(const glm::vec3& c, float r) const {
+    Side side = Side::Inside;
+    for (const glm::vec4& p : planes_) {
+        const float distance = glm::dot(glm::vec3(p), c) + p.w;
+        if (distance < -r) return Side::Outside;
+        if (distance < r) side = Side::Straddles;
+    }
+    return side;
+}
+
 }  // namespace strata

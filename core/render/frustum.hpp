@@ -20,6 +20,11 @@ public:
     // Empty bounds (no geometry) never do.
     bool mayContain(const Bounds& b) const;
 
+    enum class Side { Outside, Straddles, Inside };
+    // A sphere wholly outside one plane, wholly inside all six, or neither (then what it holds
+    // must be tested one by one). Conservative like mayContain.
+    Side classify(const glm::vec3& centre, float radius) const;
+
 private:
     std::array<glm::vec4, 6> planes_;  // (normal, offset), normalised; inside where n.p + d >= 0
 };

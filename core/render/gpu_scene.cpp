@@ -151,7 +151,7 @@ GpuMesh uploadMesh(const Mesh& mesh) {
     return g;
 }
 
-GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(scene_)) {
+GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(scene_)), cullHierarchy_(objects_) {
     meshes_.reserve(scene_.meshes.size());
     for (const Mesh& mesh : scene_.meshes) {
         meshes_.push_back(uploadMesh(mesh));

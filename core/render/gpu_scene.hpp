@@ -3,6 +3,7 @@
 // transparent lists, and the draw call every pass uses.
 #include "gl/objects.hpp"
 #include "render/scene_program.hpp"
+#include "render/cull_hierarchy.hpp"
 #include "render/stand_in.hpp"
 #include "scene/mesh_volume.hpp"
 #include "scene/scene.hpp"
@@ -80,6 +81,8 @@ public:
     // What the volumetric techniques make of each object (indexed like objects()): a medium, or
     // why it is drawn as a surface. Computed once at construction.
     const std::vector<ObjectVolume>& objectVolumes() const { return volumes_; }
+    // The objects' bounding spheres in a hierarchy over the LOD units, for frustum culling.
+    const CullHierarchy& cullHierarchy() const { return cullHierarchy_; }
 
     // Sets the per-object uniforms (model, normal matrix, material with its volume parameters
     // tau and albedo, id, which faces enter a volume) on `program`, which must be bound, and
@@ -115,6 +118,7 @@ private:
 
     Scene scene_;
     std::vector<Object> objects_;
+    CullHierarchy cullHierarchy_;
     std::vector<GpuMesh> meshes_;
     std::vector<int> opaque_;
     std::vector<int> transparent_;
