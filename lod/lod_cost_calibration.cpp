@@ -113,6 +113,32 @@ double timeDraws(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
     return best;
 }
 
+// The time one more draw adds to a pass: a pass of kMarginalDraws draws against a pass of one,
+// the fastest of kTimedPasses each. What a pass costs whatever it draws (on llvmpipe a flush and a
+// query wait, about a millisecond) cancels; a fit's intercept over passes of kDrawsPerPass draws
+// would charge each object a share of it (measured: 0.96 ms "fixed" per impostor draw where a
+// frame of 20000 stand-ins spent 0.02 ms each), and auto would never choose an impostor for a
+// small object.
+constexpr int kMarginalDraws = 64;
+template <class Clear, class Draw>
+double marginalDrawMs(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
+    auto pass = [&](int draws) {
+        double best = 1e300;
+        for (int k = 0; k < kTimedPasses; ++k) {
+            clear();
+            timer.begin("lod calibration");
+            for (int i = 0; i < draws; ++i) draw();
+            timer.end();
+            best = std::min(best, timer.resolve().front().gpuMs);
+        }
+        return best;
+    };
+    clear();
+    draw();
+    const double one = pass(1);
+    return std::max(0.0, (pass(kMarginalDraws) - one) / double(kMarginalDraws - 1));
+}
+
 // Least squares for ms = c0 + c1 x1 + c2 x2 (x in millions) through the normal equations; a
 // term left out gets a unit diagonal so the system stays solvable and its slope is 0.
 glm::dvec3 fit(const std::vector<glm::dvec3>& x, const std::vector<double>& ms, bool use1, bool use2) {
@@ -228,9 +254,21 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             ms.push_back(points[i].ms - perMegapixel * points[i].pixels * 1e-6);
         }
         const glm::dvec3 c = fitNonNegative(x, ms, false);
-        calibration.model.geometryFixedMs = c.x;
         calibration.model.geometryMsPerMegatriangle = c.y;
         calibration.model.geometryMsPerMegapixel = perMegapixel;
+        // The fixed cost: the coarse mesh's marginal draw at the tiny viewport, less its triangles
+        // and pixels (the fit's intercept holds a share of the timed pass's own cost).
+        {
+            const Mesh mesh = makeBumpyBlob(kGeometryCases[0].segments);
+            GpuMesh gpu = uploadMesh(mesh);
+            glBindVertexArray(gpu.vertexArray.id());
+            const int side = kGeometryCases[0].viewport;
+            const double marginal = marginalDrawMs(timer, [&] { clear(side); }, [&] {
+                glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
+            });
+            calibration.model.geometryFixedMs =
+                std::max(0.0, marginal - c.y * points[0].triangles * 1e-6 - perMegapixel * points[0].pixels * 1e-6);
+        }
         std::vector<double> residuals;
         for (const auto& p : points) residuals.push_back(calibration.model.geometryMs(p.triangles, p.pixels) - p.ms);
         calibration.geometryRmsResidualMs = rms(residuals);
@@ -278,10 +316,20 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
                 ms.push_back(p.ms);
             }
         }
-        glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
         const glm::dvec3 c = fitNonNegative(x, ms, false);
-        calibration.model.impostorFixedMs = c.x;
         calibration.model.impostorMsPerMegapixel = c.y;
+        // The fixed cost: one slice quad's marginal draw at the tiny viewport, less its pixels.
+        {
+            GpuSlices stack = makeSlices(1);
+            glBindVertexArray(stack.vertexArray.id());
+            glProgramUniform1i(program.id(), slicesAt, 1);
+            constexpr int side = 8;
+            const double marginal = marginalDrawMs(timer, [&] { clear(side); }, [&] {
+                glDrawArrays(GL_TRIANGLES, 0, stack.vertexCount);
+            });
+            calibration.model.impostorFixedMs = std::max(0.0, marginal - c.y * impostorLayerPixels(double(side), 1) * 1e-6);
+        }
+        glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
         for (const auto& p : calibration.points)
             if (p.kind == LodCalibrationPoint::Kind::Impostor) residuals.push_back(calibration.model.impostorMs(p.pixels) - p.ms);
         calibration.impostorRmsResidualMs = rms(residuals);

@@ -13,7 +13,7 @@ through a scene description written to the output folder; skipped where the mode
 Prints a markdown table with the issue's aims beside the measured values; the JSON of every run
 stays in the output folder.
 """
-import json, os, resource, shutil, subprocess, sys, time
+import json, os, shutil, subprocess, sys, time
 
 strata, out, size, frames, counts = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5].split(',')
 CAD_MODEL = '/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb'
@@ -22,18 +22,17 @@ os.makedirs(out, exist_ok=True)
 
 
 def run(args, cache=None):
-    """Runs strata; returns (wall seconds, peak RSS MB of that child). Fails loudly."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    """Runs strata; returns (wall seconds, peak RSS MB of that run). Fails loudly."""
     start = time.monotonic()
     command = [strata] + args + ['--impostor-cache', cache or 'none']
-    done = subprocess.run(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    child = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    stderr = child.stderr.read()
+    _, status, usage = os.wait4(child.pid, 0)  # this child's own peak, not the largest so far
+    child.returncode = os.waitstatus_to_exitcode(status)
     wall = time.monotonic() - start
-    if done.returncode != 0:
-        sys.exit(f'bench_lod.sh --scale: {" ".join(command)} failed: {done.stderr.strip()[-400:]}')
-    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-    # ru_maxrss of the children is the largest so far: a smaller run reads as the earlier peak,
-    # so each scene's runs go largest-last and the one-copy run first.
-    return wall, max(peak, before) / 1024.0
+    if child.returncode != 0:
+        sys.exit(f'bench_lod.sh --scale: {" ".join(command)} failed: {stderr.strip()[-400:]}')
+    return wall, usage.ru_maxrss / 1024.0
 
 
 def cad_field(copies):
