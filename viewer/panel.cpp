@@ -81,7 +81,7 @@ void drawTiming(const PanelState& state) {
         ImGui::EndTable();
     }
     if (!frame.transparencyPass) ImGui::TextDisabled("no transparency pass (nothing transparent in view)");
-    ImGui::Text("objects culled %zu of %zu, LOD units %zu of %d (outside the view frustum)", frame.objectsCulled,
+    ImGui::Text("objects culled %zu of %zu (unit instances %zu of %d) outside the view frustum", frame.objectsCulled,
                 state.scene->objects().size(), frame.unitsCulled, state.scene->cullHierarchy().unitCount());
     const FrameHistory& h = *state.history;
     char overlay[96];
