@@ -96,47 +96,40 @@ gl::Texture makeAtlas() {
     return atlas;
 }
 
-// The fastest of kTimedPasses passes of kDrawsPerPass draws, per draw, after one warm-up draw.
+// The fastest of kTimedPasses passes of `draws` draws (each cleared first), whole-pass ms.
 template <class Clear, class Draw>
-double timeDraws(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
-    clear();
-    draw();
+double fastestPassMs(gl::GpuTimer& timer, const Clear& clear, const Draw& draw, int draws) {
     double best = 1e300;
     for (int pass = 0; pass < kTimedPasses; ++pass) {
         clear();
         timer.begin("lod calibration");
-        for (int i = 0; i < kDrawsPerPass; ++i) draw();
+        for (int i = 0; i < draws; ++i) draw();
         timer.end();
-        const auto times = timer.resolve();
-        best = std::min(best, times.front().gpuMs / double(kDrawsPerPass));
+        best = std::min(best, timer.resolve().front().gpuMs);
     }
     return best;
 }
 
-// The time one more draw adds to a pass: a pass of kMarginalDraws draws against a pass of one,
-// the fastest of kTimedPasses each. What a pass costs whatever it draws (on llvmpipe a flush and a
-// query wait, about a millisecond) cancels; a fit's intercept over passes of kDrawsPerPass draws
-// would charge each object a share of it (measured: 0.96 ms "fixed" per impostor draw where a
-// frame of 20000 stand-ins spent 0.02 ms each), and auto would never choose an impostor for a
-// small object.
+// Per draw, from passes of kDrawsPerPass draws, after one warm-up draw.
+template <class Clear, class Draw>
+double timeDraws(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
+    clear();
+    draw();
+    return fastestPassMs(timer, clear, draw, kDrawsPerPass) / double(kDrawsPerPass);
+}
+
+// The time one more draw adds to a pass: a pass of kMarginalDraws draws against a pass of one.
+// What a pass costs whatever it draws (on llvmpipe a flush and a query wait, about a
+// millisecond) cancels; a fit's intercept over passes of kDrawsPerPass draws would charge each
+// object a share of it (measured: 0.96 ms "fixed" per impostor draw where a frame of 20000
+// stand-ins spent 0.02 ms each), and auto would never choose an impostor for a small object.
 constexpr int kMarginalDraws = 64;
 template <class Clear, class Draw>
 double marginalDrawMs(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
-    auto pass = [&](int draws) {
-        double best = 1e300;
-        for (int k = 0; k < kTimedPasses; ++k) {
-            clear();
-            timer.begin("lod calibration");
-            for (int i = 0; i < draws; ++i) draw();
-            timer.end();
-            best = std::min(best, timer.resolve().front().gpuMs);
-        }
-        return best;
-    };
     clear();
     draw();
-    const double one = pass(1);
-    return std::max(0.0, (pass(kMarginalDraws) - one) / double(kMarginalDraws - 1));
+    const double one = fastestPassMs(timer, clear, draw, 1);
+    return std::max(0.0, (fastestPassMs(timer, clear, draw, kMarginalDraws) - one) / double(kMarginalDraws - 1));
 }
 
 // Least squares for ms = c0 + c1 x1 + c2 x2 (x in millions) through the normal equations; a

@@ -438,6 +438,30 @@ Scene makeDefaultScene() {
     return s;
 }
 
+namespace {
+
+// A grid of `count` places about as wide as deep, `spacing` apart, rows going away from the
+// camera (-Z), centred in x, at height y; then the ground under it and the camera looking over it
+// from in front and above (the near rows large, the far rows small). The field's and the orchard's.
+struct InstanceGrid {
+    float spacing;
+    int columns, rows;  // declared in this order: rows needs columns
+    InstanceGrid(int count, float step)
+        : spacing(step), columns(int(std::ceil(std::sqrt(double(count))))), rows((count + columns - 1) / columns) {}
+    glm::vec3 at(int i, float y) const {
+        return {(float(i % columns) - 0.5f * float(columns - 1)) * spacing, y, -float(i / columns) * spacing};
+    }
+    void addGroundAndCamera(Scene& s) const {
+        const float halfWidth = 0.5f * float(columns) * spacing + 2.0f, depth = float(rows) * spacing;
+        placeMesh(s, s.addMesh(makeBox({-halfWidth, -0.1f, -depth - 2.0f}, {halfWidth, 0.0f, 0.5f * spacing + 2.0f})),
+                  s.addMaterial(opaque("ground", {0.42f, 0.45f, 0.38f})), glm::mat4(1.0f), "ground");
+        const float extent = std::max(2.0f * halfWidth, depth);
+        s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 3.0f + 0.45f * extent}, {0.0f, 0.0f, -0.4f * depth}, 50.0f);
+    }
+};
+
+}  // namespace
+
 Scene makeFieldScene(int count, bool transparentInstances) {
     if (count < 1 || count > kFieldMaxInstances)
         throw std::invalid_argument("field: " + std::to_string(count) + " instances is outside 1.." +
@@ -450,26 +474,16 @@ Scene makeFieldScene(int count, bool transparentInstances) {
     for (int k = 0; k < kColours; ++k)
         materials[k] = s.addMaterial(transparentInstances ? transparent("field" + std::to_string(k), paletteColor(k), 0.5f)
                                                           : opaque("field" + std::to_string(k), paletteColor(k)));
-    // A grid about as wide as deep, rows going away from the camera (-Z), 3 units apart (the blob
-    // is about 2 x 1.7 x 1.5), centred in x.
-    constexpr float kSpacing = 3.0f;
-    const int columns = int(std::ceil(std::sqrt(double(count))));
-    const int rows = (count + columns - 1) / columns;
+    // 3 units apart: the blob is about 2 x 1.7 x 1.5.
+    const InstanceGrid grid(count, 3.0f);
     for (int i = 0; i < count; ++i) {
-        const int row = i / columns, column = i % columns;
-        const glm::vec3 at((float(column) - 0.5f * float(columns - 1)) * kSpacing, 1.0f, -float(row) * kSpacing);
         // Varied orientation: golden-angle turns about the vertical, a tilt of -20..+20 degrees.
-        glm::mat4 world = glm::translate(glm::mat4(1.0f), at);
+        glm::mat4 world = glm::translate(glm::mat4(1.0f), grid.at(i, 1.0f));
         world = glm::rotate(world, glm::radians(137.508f * float(i)), glm::vec3(0, 1, 0));
         world = glm::rotate(world, glm::radians(float((i * 53) % 41) - 20.0f), glm::vec3(1, 0, 0));
         placeMesh(s, blob, materials[i % kColours], world, "instance " + std::to_string(i));
     }
-    const float halfWidth = 0.5f * float(columns) * kSpacing + 2.0f, depth = float(rows) * kSpacing;
-    placeMesh(s, s.addMesh(makeBox({-halfWidth, -0.1f, -depth - 2.0f}, {halfWidth, 0.0f, 0.5f * kSpacing + 2.0f})),
-              s.addMaterial(opaque("ground", {0.42f, 0.45f, 0.38f})), glm::mat4(1.0f), "ground");
-    // Looking over the field from in front and above: the near rows large, the far rows small.
-    const float extent = std::max(2.0f * halfWidth, depth);
-    s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 3.0f + 0.45f * extent}, {0.0f, 0.0f, -0.4f * depth}, 50.0f);
+    grid.addGroundAndCamera(s);
     return s;
 }
 
@@ -504,12 +518,9 @@ Scene makeOrchardScene(int count, bool glassCrowns) {
     part(crownMesh, -1, glm::translate(glm::mat4(1.0f), {0.0f, 1.55f, 0.0f}));
     part(crownMesh, -1, glm::rotate(glm::translate(glm::mat4(1.0f), {0.35f, 1.25f, 0.2f}), 1.3f, glm::vec3(0, 1, 0)));
     part(crownMesh, -1, glm::rotate(glm::translate(glm::mat4(1.0f), {-0.3f, 1.3f, -0.25f}), 2.6f, glm::vec3(0, 1, 0)));
-    constexpr float kSpacing = 2.5f;
-    const int columns = int(std::ceil(std::sqrt(double(count))));
-    const int rows = (count + columns - 1) / columns;
+    const InstanceGrid grid(count, 2.5f);
     for (int i = 0; i < count; ++i) {
-        const int row = i / columns, column = i % columns;
-        const glm::vec3 at((float(column) - 0.5f * float(columns - 1)) * kSpacing, 0.0f, -float(row) * kSpacing);
+        const glm::vec3 at = grid.at(i, 0.0f);
         Node instance;
         instance.name = "tree " + std::to_string(i);
         // Golden-angle turns about the vertical and sizes 0.8..1.2: every instance looks different
@@ -523,11 +534,7 @@ Scene makeOrchardScene(int count, bool glassCrowns) {
         instance.lodUnit = true;
         s.addNode(std::move(instance));
     }
-    const float halfWidth = 0.5f * float(columns) * kSpacing + 2.0f, depth = float(rows) * kSpacing;
-    placeMesh(s, s.addMesh(makeBox({-halfWidth, -0.1f, -depth - 2.0f}, {halfWidth, 0.0f, 0.5f * kSpacing + 2.0f})),
-              s.addMaterial(opaque("ground", {0.42f, 0.45f, 0.38f})), glm::mat4(1.0f), "ground");
-    const float extent = std::max(2.0f * halfWidth, depth);
-    s.camera = lookingAt({0.0f, 2.0f + 0.3f * extent, 3.0f + 0.45f * extent}, {0.0f, 0.0f, -0.4f * depth}, 50.0f);
+    grid.addGroundAndCamera(s);
     return s;
 }
 
