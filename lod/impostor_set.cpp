@@ -61,8 +61,8 @@ ImpostorKeys impostorKeys(const GpuScene& scene) {
 }
 
 ImpostorSet::ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels,
-                         std::ostream* progress, bool bakeNow)
-    : scene_(&scene), settings_(settings), keys_(impostorKeys(scene)), transparentPeels_(transparentPeels),
+                         std::ostream* progress, bool bakeNow, const ImpostorKeys* keys)
+    : scene_(&scene), settings_(settings), keys_(keys ? *keys : impostorKeys(scene)), transparentPeels_(transparentPeels),
       progress_(progress) {
     const Scene& s = scene.scene();
     const auto& objects = scene.objects();

@@ -39,8 +39,9 @@ public:
     // gets "baking impostors: i/n" lines and a total.
     // With bakeNow false nothing is baked until bake asks (LOD bakes only the impostors its
     // selection could use).
+    // `keys`: impostorKeys(scene) where the caller has them already (null: worked out here).
     ImpostorSet(const GpuScene& scene, const ImpostorSettings& settings, int transparentPeels = 2,
-                std::ostream* progress = nullptr, bool bakeNow = true);
+                std::ostream* progress = nullptr, bool bakeNow = true, const ImpostorKeys* keys = nullptr);
 
     // Loads from `cache` what it holds and stores what is baked (null: bake everything, keep
     // nothing). The cache must outlive the set.

@@ -152,15 +152,6 @@ void LayeredImpostor::bakeImages(const std::vector<BakePart>& parts, const GpuSc
     peelDefines["PEEL"] = "";
     gl::Program peel = peels > 1 ? gl::buildProgram({"lod/bake.vert.glsl", "lod/bake.frag.glsl"}, peelDefines)
                                  : gl::Program();
-    // One part (a single mesh) sets its transform and material once; several set theirs per draw.
-    const bool onePart = parts.size() == 1;
-    auto placePart = [&](GLuint program, const BakePart& part) {
-        setPartTransform(program, part);
-        if (withAlbedo) setPartAlbedo(program, *albedoScene, part.objectIndex);
-    };
-    if (onePart)
-        for (const gl::Program* program : {&first, &peel})
-            if (program->id()) placePart(program->id(), parts[0]);
     if (withAlbedo) {
         const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
         glNamedFramebufferDrawBuffers(fbo.id(), 2, both);
@@ -203,7 +194,8 @@ void LayeredImpostor::bakeImages(const std::vector<BakePart>& parts, const GpuSc
             glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
             for (const BakePart& part : parts) {
                 if (part.indexCount <= 0) continue;
-                if (!onePart) placePart(program, part);
+                setPartTransform(program, part);
+                if (withAlbedo) setPartAlbedo(program, *albedoScene, part.objectIndex);
                 glBindVertexArray(part.vertexArray);
                 glDrawElements(GL_TRIANGLES, part.indexCount, GL_UNSIGNED_INT, nullptr);
             }

@@ -59,7 +59,8 @@ LodController::~LodController() = default;
 // whose objects all stay geometry bakes nothing.
 void LodController::bakeCandidates(const LodView& view, const LodCostModel& model) {
     if (!impostors_) {
-        impostors_ = std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_, false);
+        impostors_ =
+            std::make_unique<ImpostorSet>(scene_, options_.impostor, options_.transparentPeels, progress_, false, &keys_);
         if (!options_.impostorCache.empty()) {
             cache_ = std::make_unique<ImpostorCache>(options_.impostorCache, options_.impostorCacheMaxBytes);
             impostors_->setCache(cache_.get());
@@ -225,11 +226,18 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
     std::vector<bool> use(inputs_.size());
     for (std::size_t i = 0; i < use.size(); ++i) use[i] = unitSelection_.objects[i].impostor;
     standIns_ = impostors_->drawsFor(camera.position, use);
-    // Per object: its unit's decision (a volume medium, in no unit, its own triangles).
-    selection_ = unitSelection_;
-    selection_.objects.assign(scene_.objects().size(), LodDecision{false, LodReason::NoImpostor});
-    for (std::size_t o = 0; o < selection_.objects.size(); ++o)
-        if (const int unit = keys_.units.ofObject[o]; unit >= 0) selection_.objects[o] = unitSelection_.objects[std::size_t(unit)];
+    // Per object: its unit's decision (a volume medium, in no unit, its own triangles); the totals
+    // are the units'.
+    selection_.objects.resize(scene_.objects().size());
+    for (std::size_t o = 0; o < selection_.objects.size(); ++o) {
+        const int unit = keys_.units.ofObject[o];
+        selection_.objects[o] = unit >= 0 ? unitSelection_.objects[std::size_t(unit)] : LodDecision{false, LodReason::NoImpostor};
+    }
+    selection_.impostorObjects = unitSelection_.impostorObjects;
+    selection_.impostorsUsed = unitSelection_.impostorsUsed;
+    selection_.impostorBytes = unitSelection_.impostorBytes;
+    selection_.predictedMs = unitSelection_.predictedMs;
+    selection_.geometryOnlyMs = unitSelection_.geometryOnlyMs;
     framesDrawn_ += std::max(frames, 0);
     return selection_.impostorObjects > 0 ? &standIns_ : nullptr;
 }

@@ -1,9 +1,10 @@
 #pragma once
-// Level of detail per unit (lod/lod_units.hpp: a model instance's parts of one material) for a frame (DESIGN's data flow: scene graph -> LOD selection ->
-// ... -> opaque pass -> technique): calibrates the cost model on the first frame (auto), bakes a
-// mesh's layered impostor the first time selection could use it, then each frame decides
-// geometry or impostor per object (lod_select.hpp) and hands the frame the stand-ins
-// (FrameOptions::standIns). Geometry mode bakes and measures nothing.
+// Level of detail per unit (lod/lod_units.hpp: a model instance's parts of one material) for a
+// frame (DESIGN's data flow: scene graph -> LOD selection -> ... -> opaque pass -> technique):
+// calibrates the cost model on the first frame (auto), bakes a unit's layered impostor the first
+// time selection could use it, then each frame decides geometry or impostor per unit
+// (lod_select.hpp) and hands the frame the stand-ins (FrameOptions::standIns). Geometry mode
+// bakes and measures nothing.
 #include "lod/impostor_set.hpp"
 #include "lod/lod_cost_model.hpp"
 #include "lod/lod_select.hpp"

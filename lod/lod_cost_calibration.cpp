@@ -211,6 +211,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         glDisable(GL_CULL_FACE);  // as the frame's opaque pass draws: both faces rasterised
         gl::Query samples = gl::createQuery(GL_SAMPLES_PASSED);
         std::vector<LodCalibrationPoint> points;
+        double coarseMarginalMs = 0.0;  // the time one more draw of the coarse mesh adds to a pass
         for (const GeometryCase& g : kGeometryCases) {
             const Mesh mesh = makeBumpyBlob(g.segments);
             GpuMesh gpu = uploadMesh(mesh);
@@ -231,6 +232,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             p.pixels = double(passed);
             p.viewport = side;
             p.ms = timeDraws(timer, [&] { clear(side); }, draw);
+            if (&g == &kGeometryCases[0]) coarseMarginalMs = marginalDrawMs(timer, [&] { clear(side); }, draw);
             points.push_back(p);
         }
         glDisable(GL_CULL_FACE);
@@ -251,17 +253,8 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         calibration.model.geometryMsPerMegapixel = perMegapixel;
         // The fixed cost: the coarse mesh's marginal draw at the tiny viewport, less its triangles
         // and pixels (the fit's intercept holds a share of the timed pass's own cost).
-        {
-            const Mesh mesh = makeBumpyBlob(kGeometryCases[0].segments);
-            GpuMesh gpu = uploadMesh(mesh);
-            glBindVertexArray(gpu.vertexArray.id());
-            const int side = kGeometryCases[0].viewport;
-            const double marginal = marginalDrawMs(timer, [&] { clear(side); }, [&] {
-                glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
-            });
-            calibration.model.geometryFixedMs =
-                std::max(0.0, marginal - c.y * points[0].triangles * 1e-6 - perMegapixel * points[0].pixels * 1e-6);
-        }
+        calibration.model.geometryFixedMs =
+            std::max(0.0, coarseMarginalMs - c.y * points[0].triangles * 1e-6 - perMegapixel * points[0].pixels * 1e-6);
         std::vector<double> residuals;
         for (const auto& p : points) residuals.push_back(calibration.model.geometryMs(p.triangles, p.pixels) - p.ms);
         calibration.geometryRmsResidualMs = rms(residuals);

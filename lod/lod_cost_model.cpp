@@ -6,8 +6,8 @@
 
 namespace strata::lod {
 
-double LodCostModel::geometryMs(double triangles, double coveredPixels) const {
-    return geometryFixedMs + geometryMsPerMegatriangle * triangles * 1e-6 + geometryMsPerMegapixel * coveredPixels * 1e-6;
+double LodCostModel::geometryMs(double triangles, double coveredPixels, double draws) const {
+    return geometryFixedMs * draws + geometryMsPerMegatriangle * triangles * 1e-6 + geometryMsPerMegapixel * coveredPixels * 1e-6;
 }
 
 double LodCostModel::impostorMs(double layerPixels) const {

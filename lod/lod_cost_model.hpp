@@ -26,7 +26,8 @@ struct LodCostModel {
     double impostorFixedMs = 0.0;
     double impostorMsPerMegapixel = 0.0;
 
-    double geometryMs(double triangles, double coveredPixels) const;
+    // `draws`: the draw calls it takes (a LOD unit of several parts draws each), each paying the fixed cost.
+    double geometryMs(double triangles, double coveredPixels, double draws = 1.0) const;
     double impostorMs(double layerPixels) const;
 };
 
@@ -71,7 +72,9 @@ struct LodCalibrationPoint {
 struct LodCalibration {
     LodCostModel model;
     std::vector<LodCalibrationPoint> points;
-    double geometryRmsResidualMs = 0.0;  // of each fit over its own points
+    // Of each model over its own points. The fixed terms are marginal draws, not the fits'
+    // intercepts, so the residuals also hold each timed pass's own cost (about 1 ms on llvmpipe).
+    double geometryRmsResidualMs = 0.0;
     double impostorRmsResidualMs = 0.0;
     double wallMs = 0.0;                 // CPU wall time the calibration took
     std::string device;                  // GL_RENDERER

@@ -118,7 +118,7 @@ struct LodDecision {
 std::string explain(const LodDecision& decision, const LodObjectInput& object, const LodSelectOptions& options);
 
 struct LodSelection {
-    std::vector<LodDecision> objects;     // one per input, same order
+    std::vector<LodDecision> objects;     // one per input, same order (LodController::selection(): per scene object)
     int impostorObjects = 0;              // objects drawn as impostors
     int impostorsUsed = 0;                // distinct impostors among them (by id; -1 counts each)
     std::uint64_t impostorBytes = 0;      // memory of the impostors used, each shared one once

@@ -166,8 +166,8 @@ TEST_CASE("lod units: forced impostors draw one stand-in per unit and match the 
     CHECK(meanAbs < 0.005);
     CHECK(mismatch < 0.2);
 
-    // Looking away from the instance at x = +6 only: the units there are in view, the two
-    // others culled by their unit bounds (the parts that draw nothing are not counted).
+    // Looking at the instance at x = +6 only: its units are in view, the two others' six objects
+    // culled (each representative by its unit's bounds, the other parts by their own).
     Camera right;
     right.lookAt(glm::vec3(6.0f, 0.5f, 6.0f), glm::vec3(6.0f, 0.5f, 0.0f), glm::vec3(0, 1, 0));
     right.fovYDegrees = 20.0f;
@@ -176,7 +176,8 @@ TEST_CASE("lod units: forced impostors draw one stand-in per unit and match the 
     REQUIRE(r);
     withStandIns.standIns = r;
     const test::Rendered culled = test::renderWith(*fx.gpu, right, {64, 48}, "floor", withStandIns);
-    CHECK(culled.result.objectsCulled == 4);  // two instances x two units
+    CHECK(culled.result.objectsCulled == 6);  // two instances x three parts
+    CHECK(culled.result.unitsCulled == 2);
 }
 
 TEST_CASE("lod units: without unit nodes each part is a unit, and instances of a mesh share its impostor") {
@@ -191,4 +192,62 @@ TEST_CASE("lod units: without unit nodes each part is a unit, and instances of a
     CHECK(lod.units().count() == 9);
     CHECK(lod.impostors()->bakedImpostors() == 2);  // the box (grey or red: factors shade it) and the sphere
     for (const StandInDraw* d : *s) CHECK((d && !d->first.empty()));
+}
+
+TEST_CASE("lod units: every technique that bounds objects takes a unit stand-in's bounds; mesh samplers keep every part") {
+    // A glass unit of two parts: a box (the representative) on the left, a sphere on the right
+    // and further back, behind a glass blocker of its own. Peeling skips an object once it has
+    // peeled past the object's screen box, and bun bins fragments by per-object depth boxes: with
+    // the representative's own box (the left box alone) the sphere, whose layers come after the
+    // blocker's, was skipped or misbinned. Each exact technique must give abuffer's image of the
+    // same stand-ins.
+    Scene scene;
+    Material glass;
+    glass.baseColor = glm::vec3(0.6f);
+    glass.alpha = 0.5f;
+    glass.alphaMode = AlphaMode::Blend;
+    const int material = scene.addMaterial(glass);
+    Mesh box = makeBox(glm::vec3(-0.8f), glm::vec3(0.8f));
+    box.material = material;
+    Mesh sphere = makeSphere(0.7f, 24, 12);
+    sphere.material = material;
+    const int boxMesh = scene.addMesh(box), sphereMesh = scene.addMesh(sphere);
+    Node unit;
+    unit.lodUnit = true;
+    const int root = scene.addNode(unit);
+    Node left, right, blocker;
+    left.local = glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.0f, 1.0f));
+    left.meshes = {boxMesh};
+    right.local = glm::translate(glm::mat4(1.0f), glm::vec3(1.5f, 0.0f, -2.0f));
+    right.meshes = {sphereMesh};
+    scene.addNode(left, root);
+    scene.addNode(right, root);
+    blocker.local = glm::translate(glm::mat4(1.0f), glm::vec3(1.5f, 0.0f, 2.0f));
+    blocker.meshes = {boxMesh};
+    scene.addNode(blocker);
+    test::Fixture fx(std::move(scene));
+    Camera camera;
+    camera.lookAt(glm::vec3(0.3f, 0.2f, 12.0f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    camera.fovYDegrees = 25.0f;
+    camera.fitClipPlanes(fx.gpu->bounds());
+    LodController lod(*fx.gpu, forcedImpostors());
+    const StandIns* s = lod.select(camera, {128, 128});
+    REQUIRE(s);
+    REQUIRE(lod.selection().impostorObjects == 3);
+    FrameOptions withStandIns;
+    withStandIns.standIns = s;
+    const Image reference = test::renderWith(*fx.gpu, camera, {128, 128}, "abuffer", withStandIns).image;
+    for (const char* id : {"f2b", "dual", "bun"}) {
+        CAPTURE(id);
+        const test::Rendered r = test::renderWith(*fx.gpu, camera, {128, 128}, id, withStandIns);
+        const double meanAbs = difference(reference, r.image, fx.gpu->scene().background).first;
+        MESSAGE(std::string(id) << " against abuffer, both with the stand-ins: mean abs " << meanAbs << ", draws skipped "
+                                << r.result.stats.objectDrawsSkipped << ", passes " << r.result.stats.passes);
+        CHECK(meanAbs < 1e-3);
+    }
+    // screendoor-object-sw samples the meshes, not the stand-ins: every part is still there, so
+    // its image with the stand-ins is its image without them.
+    const Image sampled = test::renderWith(*fx.gpu, camera, {128, 128}, "screendoor-object-sw").image;
+    const Image sampledWith = test::renderWith(*fx.gpu, camera, {128, 128}, "screendoor-object-sw", withStandIns).image;
+    CHECK(difference(sampled, sampledWith, fx.gpu->scene().background).first < 1e-3);
 }

@@ -109,7 +109,9 @@ std::string lodSummary(const lod::LodController& controller) {
         s.impostorObjects, s.objects.size(), s.impostorsUsed, double(s.impostorBytes) / 1e6);
     // Where parts are decided together (a scene description's model instances), the units too.
     const lod::LodSelection& units = controller.unitSelection();
-    if (units.objects.size() != s.objects.size()) {
+    bool grouped = false;
+    for (const lod::LodUnit& unit : controller.units().units) grouped = grouped || unit.objects.size() > 1;
+    if (grouped) {
         int impostorUnits = 0;
         for (const lod::LodDecision& d : units.objects) impostorUnits += d.impostor ? 1 : 0;
         add("; %d of %zu LOD units", impostorUnits, units.objects.size());

@@ -30,14 +30,8 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     // Only what can reach the view is drawn, by the opaque pass and by every technique's passes
     // (they draw frame.transparentOrder).
     opaqueOrder_ = scene.opaqueObjects();
-    // A stand-in with nothing to draw is a LOD unit's other part (its representative draws the
-    // unit): out of every pass, and not counted as culled.
-    auto standInOf = [&](int object) { return options.standIns ? (*options.standIns)[std::size_t(object)] : nullptr; };
-    if (options.standIns) {
-        auto drawsNothing = [&](int object) { const StandInDraw* s = standInOf(object); return s && s->first.empty(); };
-        for (std::vector<int>* order : {&opaqueOrder_, &frame.transparentOrder})
-            order->erase(std::remove_if(order->begin(), order->end(), drawsNothing), order->end());
-    }
+    // A LOD unit's other parts stay in the orders though their stand-in draws nothing: a
+    // technique that samples meshes rather than drawing (screendoor-object-sw) still needs them.
     std::size_t culled = 0, unitsCulled = 0;
     if (options.cull) {
         // The hierarchy answers for every object (render/cull_hierarchy.hpp); a LOD unit's stand-in
@@ -46,7 +40,7 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         const CullCounts counts = scene.cullHierarchy().cull(frustum, visible_);
         unitsCulled = counts.unitsCulled;
         auto outside = [&](int object) {
-            const StandInDraw* s = standInOf(object);
+            const StandInDraw* s = frame.standInOf(object);
             if (s && !s->worldBounds.empty()) return !frustum.mayContain(s->worldBounds);
             return !visible_[std::size_t(object)];
         };

@@ -58,8 +58,9 @@ struct FrameResult {
     glm::ivec2 renderSize{0, 0};   // what was drawn: zoomRenderSize(size, zoom)
     double enlargeMs = 0.0;        // GPU time of the enlargement (in gpuMs and passTimes too)
     std::size_t objectsCulled = 0; // outside the view frustum: drawn by no pass this frame
-    // LOD unit instances (Object::unit) the culling hierarchy found wholly outside, every part
-    // culled (render/cull_hierarchy.hpp; a volume medium's unit counts too).
+    // LOD unit instances (Object::unit) whose parts' geometry the culling hierarchy found wholly
+    // outside (render/cull_hierarchy.hpp). A unit drawn as a stand-in is culled by the stand-in's
+    // own bounds, which reach a little further, so it may still be drawn.
     std::size_t unitsCulled = 0;
 };
 

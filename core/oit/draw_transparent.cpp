@@ -38,15 +38,9 @@ void setDepthOrderUniforms(const FrameContext& frame, GLuint program) {
 
 std::vector<int> sortedBackToFront(const FrameContext& frame) {
     std::vector<int> order = frame.transparentOrder;
-    const auto& objects = frame.scene.objects();
     glm::vec3 eye = frame.camera.position;
     glm::vec3 forward = frame.camera.forward();
-    auto viewDepth = [&](int i) {
-        // A LOD unit's stand-in is where the unit is, not where its representative part is.
-        const StandInDraw* s = frame.standIns ? (*frame.standIns)[std::size_t(i)] : nullptr;
-        const Bounds& b = s && !s->worldBounds.empty() ? s->worldBounds : objects[std::size_t(i)].worldBounds;
-        return glm::dot(b.center() - eye, forward);
-    };
+    auto viewDepth = [&](int i) { return glm::dot(frame.boundsOf(i).center() - eye, forward); };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return viewDepth(a) > viewDepth(b); });
     return order;
 }

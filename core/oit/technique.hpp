@@ -64,11 +64,18 @@ struct FrameContext {
     // draws its own triangles.
     const StandIns* standIns = nullptr;
 
+    // What draws in `object`'s place this frame, or null (its own triangles).
+    const StandInDraw* standInOf(int object) const { return standIns ? (*standIns)[std::size_t(object)] : nullptr; }
+    // Where what `object` draws lies: a LOD unit's stand-in holds all the unit's parts, so every
+    // pass that bounds an object (culling, sorting, object skipping, bucket ranges) takes these.
+    const Bounds& boundsOf(int object) const {
+        const StandInDraw* s = standInOf(object);
+        return s && !s->worldBounds.empty() ? s->worldBounds : scene.objects()[std::size_t(object)].worldBounds;
+    }
+
     // Draws `object` (or its stand-in) with `program`, which must be bound: every pass draws
     // scene objects through this, so a stand-in reaches every technique.
-    void draw(const SceneProgram& program, int object) const {
-        scene.draw(program, object, standIns ? (*standIns)[std::size_t(object)] : nullptr);
-    }
+    void draw(const SceneProgram& program, int object) const { scene.draw(program, object, standInOf(object)); }
 };
 
 class Technique {

@@ -125,7 +125,7 @@ void CullHierarchy::walk(int index, const Frustum& frustum, std::vector<char>& v
 }
 
 CullCounts CullHierarchy::cull(const Frustum& frustum, std::vector<char>& visible) const {
-    visible.assign(objectSpheres_.size(), 1);
+    visible.resize(objectSpheres_.size());  // the walk writes every entry
     CullCounts counts;
     if (!nodes_.empty()) walk(0, frustum, visible, counts);
     return counts;

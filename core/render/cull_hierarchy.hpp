@@ -5,10 +5,13 @@
 // split their units at the median centre along the widest axis, down to a few units a leaf.
 // Each frame walks it from the root: a sphere wholly outside a frustum plane culls everything
 // below it untested, one wholly inside keeps everything below untested, and only the spheres that
-// straddle a plane are opened, down to the objects of a straddling unit. So a frame's culling
-// costs about the units near the frustum's planes, not every object. The spheres are the
-// objects' (centre and half diagonal of the world box), as Frustum::mayContain tests them, so the
-// result is the per-object test's exactly: the hierarchy only skips tests whose answer it knows.
+// straddle a plane are opened, down to the objects of a straddling unit. So a frame's plane tests
+// are about the spheres near the frustum's planes, not six per object (the per-object answers
+// are still written: the frame's draw lists are per object). The spheres are the objects'
+// (centre and half diagonal of the world box), as Frustum::mayContain tests them, so the result
+// is the per-object test's up to float rounding in a plane distance (an object that close to a
+// plane is outside it by less than a rounding error): the hierarchy skips only tests whose
+// answer it knows.
 // Built once per scene (objects do not move).
 #include "render/frustum.hpp"
 #include "scene/scene.hpp"

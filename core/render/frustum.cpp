@@ -18,12 +18,7 @@ Frustum::Frustum(const glm::mat4& m) {
 }
 
 bool Frustum::mayContain(const Bounds& b) const {
-    if (b.empty()) return false;
-    const glm::vec3 c = b.center();
-    const float r = b.radius();
-    for (const glm::vec4& p : planes_)
-        if (glm::dot(glm::vec3(p), c) + p.w < -r) return false;
-    return true;
+    return !b.empty() && classify(b.center(), b.radius()) != Side::Outside;
 }
 
 Frustum::Side Frustum::classify(const glm::vec3& c, float r) const {

@@ -55,7 +55,7 @@ void BucketRange::render(const FrameContext& frame, bool fromGeometry, Technique
                                   glm::value_ptr(frame.viewProjection));
         glBindVertexArray(boxVao_.id());
         for (int o : frame.transparentOrder) {
-            const Bounds& b = frame.scene.objects()[o].worldBounds;
+            const Bounds& b = frame.boundsOf(o);
             if (b.empty()) continue;
             glProgramUniform3fv(p, glGetUniformLocation(p, "uBoxMin"), 1, glm::value_ptr(b.min));
             glProgramUniform3fv(p, glGetUniformLocation(p, "uBoxMax"), 1, glm::value_ptr(b.max));

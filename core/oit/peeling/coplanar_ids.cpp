@@ -16,7 +16,7 @@ bool CoplanarIds::bind(const FrameContext& frame) {
         std::uint64_t primitives = frame.scene.scene().meshes[std::size_t(objects[o].mesh)].triangleCount();
         // A stand-in's primitive ids run over its slice quads' triangles (from 0 in each draw of
         // its multi-draw, so their sum bounds them): the range must hold those instead.
-        if (const StandInDraw* standIn = frame.standIns ? (*frame.standIns)[o] : nullptr) {
+        if (const StandInDraw* standIn = frame.standInOf(int(o))) {
             std::uint64_t quadTriangles = 0;
             for (GLsizei count : standIn->count) quadTriangles += std::uint64_t(count) / 3;
             primitives = std::max(primitives, quadTriangles);

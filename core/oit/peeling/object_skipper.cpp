@@ -125,10 +125,10 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     if (boxes_.empty()) {
         boxes_.resize(objects.size());
         for (int o : frame.transparentOrder)
-            if (!objects[o].worldBounds.empty()) boxes_[o] = screenBox(frame, objects[o].worldBounds);
+            if (!frame.boundsOf(o).empty()) boxes_[o] = screenBox(frame, frame.boundsOf(o));
     }
     for (int o : frame.transparentOrder) {
-        if (culled_[o] || objects[o].worldBounds.empty()) continue;
+        if (culled_[o] || frame.boundsOf(o).empty()) continue;
         const ScreenBox& box = boxes_[o];
         glProgramUniform4fv(program, rectLocation_, 1, glm::value_ptr(box.rect));
         glProgramUniform1f(program, boxFarLocation_, box.farDepth);
