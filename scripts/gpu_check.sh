@@ -136,7 +136,7 @@ write_readme() {
         echo "- started $started, this summary written $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(uname -n)"
         echo "- strata: \`$strata\`$( ((quick)) && echo " (--quick)")"
         echo "- frames $frames, warm-up $warmup per technique; limit ${limit} s per bench"
-        echo "- GL tests: $tests_status (output in \`gl-tests.txt\`)"
+        echo "- GL tests: $tests_status (output in \`gl-tests.txt\`; failing checks' images in \`test-images/\`)"
         [[ -n $tests_summary ]] && echo "  - $tests_summary"
         echo "- benches: $ok of ${#benches[@]} finished${scenes_note:+; $scenes_note}"
         echo
@@ -211,7 +211,10 @@ elif [[ ! -x $tests ]]; then
     failures=$((failures + 1))
 else
     note "GL tests: $tests ..."
-    timeout --kill-after=30 "$limit" "$tests" >"$out/gl-tests.txt" 2>&1
+    # Each test's duration, how the programs were built (a GPU compiles to machine code), and the
+    # images of failing checks in test-images/ (tests/gl_test_support.hpp dumpImage).
+    STRATA_GL_STATS=1 STRATA_TEST_DUMP="$out/test-images" \
+        timeout --kill-after=30 "$limit" "$tests" --duration=true >"$out/gl-tests.txt" 2>&1
     rc=$?
     tests_summary=$(grep -E '^\[doctest\] (test cases|assertions):' "$out/gl-tests.txt" | sed 's/^\[doctest\] //; s/  */ /g' | sed 's/ *|* *$//' | paste -sd ';' - | sed 's/;/; /')
     if ((rc == 0)); then tests_status="passed"

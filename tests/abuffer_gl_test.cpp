@@ -148,12 +148,12 @@ TEST_CASE("abuffer renders in screen tiles when the fragments exceed the largest
 TEST_CASE("abuffer's compute resolve gives the fragment resolve's image, whole and in tiles") {
     // Coincident shells (the tie rule), a long list (the selection walk) and tiles whose
     // sizes are not multiples of the 8x8 work groups.
-    for (const char* spec : {"shells:3:roundoff", "layers:70", "default"}) {
+    for (const std::string spec : {"shells:3:roundoff", "layers:70", "default"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
         glm::ivec2 size(37, 29);
         auto fragment = test::renderWith(*f.gpu, f.camera, size, "abuffer");
-        for (const char* blockMiB : {"0", "0.05"}) {
+        for (const std::string blockMiB : {"0", "0.05"}) {
             CAPTURE(blockMiB);
             auto technique = createTechnique("abuffer");
             test::setSetting(*technique, "compute_resolve=1");
@@ -163,6 +163,10 @@ TEST_CASE("abuffer's compute resolve gives the fragment resolve's image, whole a
             // Two compiled stages may contract multiply-adds differently on a GPU: float
             // round-off, far below one 8-bit step, is all that may differ.
             CHECK(compareImages(compute.image, fragment.image).maxAbsError <= 1e-5);
+            if (compareImages(compute.image, fragment.image).maxAbsError > 1e-5) {
+                test::dumpImage(std::string("abuffer-compute-") + spec + "-" + blockMiB, compute.image);
+                test::dumpImage(std::string("abuffer-fragment-") + spec, fragment.image);
+            }
             CHECK(compute.result.stats.fragmentsCaptured == fragment.result.stats.fragmentsCaptured);
         }
     }

@@ -42,7 +42,7 @@ const BenchMode& row(const BenchReport& report, const std::string& id) {
 }  // namespace
 
 TEST_CASE("approximate techniques are registered with their families") {
-    for (const char* id : {"wboit", "stochastic", "floor"}) {
+    for (const std::string id : {"wboit", "stochastic", "floor"}) {
         CAPTURE(id);
         const TechniqueEntry* e = findTechnique(id);
         REQUIRE(e != nullptr);
@@ -99,7 +99,7 @@ TEST_CASE("stochastic and wboit are exact where their estimators are: one layer"
     Fixture f(makeLayersScene(1, 0.6f));
     glm::ivec2 size(24, 16);
     Image exact = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
-    for (const char* id : {"stochastic", "wboit"}) {
+    for (const std::string id : {"stochastic", "wboit"}) {
         CAPTURE(id);
         Image image = test::renderWith(*f.gpu, f.camera, size, id).image;
         CHECK(compareImages(image, exact).maxAbsError <= kTolerance);

@@ -122,7 +122,7 @@ TEST_CASE("coplanar:K: the bounded variants capture exactly min(K, capacity) a p
 
 TEST_CASE("cubes, shells:3:roundoff and layers:N equal the reference, every fragment captured") {
     const glm::ivec2 size(48, 36);
-    for (const char* spec : {"cubes", "shells:3:roundoff", "layers:1", "layers:3", "layers:8"}) {
+    for (const std::string spec : {"cubes", "shells:3:roundoff", "layers:1", "layers:3", "layers:8"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
         Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
@@ -139,14 +139,14 @@ TEST_CASE("layers:N costs a capture a layer (f2b), a peel per two layers (dual);
         CAPTURE(n);
         Fixture f(makeLayersScene(n, 0.3f));
         const int half = (n + 1) / 2;
-        for (const char* id : {"f2b-ll", "f2b-fab", "f2b-kb"}) {
+        for (const std::string id : {"f2b-ll", "f2b-fab", "f2b-kb"}) {
             CAPTURE(id);
             auto s = test::renderWith(*f.gpu, f.camera, size, id).result.stats;
             // depth + n band edges + n captures + n resolves + n - 1 anchor passes + composite
             CHECK(s.passes == 4 * n + 1 + s.regrows);
             CHECK(s.fragmentsCaptured == std::uint64_t(n) * 240);
         }
-        for (const char* id : {"dual-ll", "dual-fab"}) {
+        for (const std::string id : {"dual-ll", "dual-fab"}) {
             CAPTURE(id);
             auto s = test::renderWith(*f.gpu, f.camera, size, id).result.stats;
             CHECK(s.passes == 2 * half + 2 + s.regrows);  // init + peels + resolves + composite
@@ -163,7 +163,7 @@ TEST_CASE("reversed submission order changes nothing") {
     const glm::ivec2 size(48, 36);
     FrameOptions reversed;
     reversed.reverseSubmission = true;
-    for (const char* spec : {"coplanar:5", "cubes", "shells:3:roundoff"}) {
+    for (const std::string spec : {"coplanar:5", "cubes", "shells:3:roundoff"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
         Image reference = test::renderWith(*f.gpu, f.camera, size, "abuffer").image;
@@ -236,15 +236,19 @@ TEST_CASE("skipping peeled objects changes nothing on intersecting and coplanar 
     // than the tie band; dual-*: dual's next range.
     const glm::ivec2 size(40, 30);
     std::map<std::string, std::uint64_t> skipped;
-    for (const char* spec : {"cubes", "cubes:separated", "volumes", "shells:3:roundoff", "default"}) {
+    for (const std::string spec : {"cubes", "cubes:separated", "volumes", "shells:3:roundoff", "default"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
-        for (const char* id : {"f2b-ll", "f2b-fab", "dual-ll", "dual-fab"}) {
+        for (const std::string id : {"f2b-ll", "f2b-fab", "dual-ll", "dual-fab"}) {
             CAPTURE(id);
             auto without = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
             auto with = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));
             CHECK(without.result.stats.objectDrawsSkipped == 0);
             CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
+            if (compareImages(with.image, without.image).maxAbsError != 0.0) {
+                test::dumpImage(std::string("skip-with-") + id + "-" + spec, with.image);
+                test::dumpImage(std::string("skip-without-") + id + "-" + spec, without.image);
+            }
             CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
             CHECK(with.result.stats.fragmentsDropped == without.result.stats.fragmentsDropped);
             skipped[id] += with.result.stats.objectDrawsSkipped;

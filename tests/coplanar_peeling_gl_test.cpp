@@ -102,7 +102,7 @@ TEST_CASE("no coplanarity: N layers equal the reference") {
 }
 
 TEST_CASE("skipping peeled objects changes nothing on coplanar scenes") {
-    for (const char* spec : {"cubes", "coplanar:3", "default"}) {
+    for (const std::string spec : {"cubes", "coplanar:3", "default"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
         glm::ivec2 size(40, 30);

@@ -91,6 +91,23 @@ TEST_CASE("coplanarity detector equals the CPU ray cast on every builtin scene")
             if (cpu.largestLayer[std::size_t(i)] >= 2) ++tied;
         }
         CHECK(differ == 0);
+        if (differ > 0) {
+            // How far apart the driver puts surfaces the ray cast finds coincident: the same
+            // comparison at wider tie tolerances (a diagnostic for a GPU run; it prints only).
+            for (double ulps : {256.0, 1024.0, 4096.0, 16384.0, 65536.0}) {
+                Scene wider = makeBuiltinScene(spec);
+                wider.depthTieUlps = ulps;
+                test::Fixture g(std::move(wider));
+                const Detected gw = detect(*g.gpu, g.camera, size);
+                const CpuPixels cw = raycastLargestLayers(*g.gpu, g.camera, size);
+                int differWide = 0;
+                for (std::size_t i = 0; i < gw.pixels.largestLayer.size(); ++i)
+                    if (int(gw.pixels.fragments[i]) == cw.fragments[i] && int(gw.pixels.largestLayer[i]) != cw.largestLayer[i])
+                        ++differWide;
+                MESSAGE(spec << ": at " << ulps << " ulps " << differWide << " pixels differ (" << differ << " at "
+                             << f.gpu->scene().depthTieUlps << ")");
+            }
+        }
         // Coverage disagreements are edge pixels: a few percent of the image at most (48 of 1728
         // on cubes, whose face edges run through pixel centres, on llvmpipe).
         CHECK(coverage <= pixels / 25);
@@ -146,7 +163,7 @@ TEST_CASE("coplanarity detector: lists longer than the registers, tiles and subm
         CHECK(d.result.coplanarity->pixelsByLargestLayer[kCoplanarityBins - 1] == std::uint64_t(size.x * size.y));
         CHECK(d.result.coplanarity->layers == std::uint64_t(size.x * size.y));
     }
-    for (const char* spec : {"cubes", "shells:3:roundoff", "default"}) {
+    for (const std::string spec : {"cubes", "shells:3:roundoff", "default"}) {
         CAPTURE(spec);
         test::Fixture f(makeBuiltinScene(spec));
         const Detected whole = detect(*f.gpu, f.camera, size);

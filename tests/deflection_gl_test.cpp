@@ -19,6 +19,7 @@
 #include "gl_test_support.hpp"
 
 #include "render/deflection_warp.hpp"
+#include "render/texture_readback.hpp"
 #include "scene/builtin_scenes.hpp"
 #include "scene/mesh_builders.hpp"
 #include "tracking/deflection.hpp"
@@ -241,8 +242,19 @@ PairResult warpAndCompare(SceneFixture& f, float yaw, float pitch, float roll, D
     warp.apply(renderer.targets().outputColor(), f.size, exact);
     r.homography = compareWarped(warp.readOutput(), truth, all);
     warp.apply(renderer.targets().outputColor(), f.size, shiftParams(k, a, b, filter));
-    r.shift = compareWarped(warp.readOutput(), truth, all);
+    const Image shifted = warp.readOutput();
+    r.shift = compareWarped(shifted, truth, all);
     gl::checkGl("warp");
+    if (r.homography.fraction() < 0.999) {  // what a failing case rendered (STRATA_TEST_DUMP)
+        char name[96];
+        std::snprintf(name, sizeof name, "deflection-%s-y%.1f-p%.1f-r%.1f-%s", f.gpu->scene().name.c_str(), yaw, pitch,
+                      roll, std::string(deflectFilterName(filter)).c_str());
+        test::dumpImage(std::string(name) + "-a", readRgbaTexture(renderer.targets().outputColor(), f.size));
+        test::dumpImage(std::string(name) + "-b", rendered);
+        warp.apply(renderer.targets().outputColor(), f.size, exact);
+        test::dumpImage(std::string(name) + "-warped", warp.readOutput());
+        test::dumpImage(std::string(name) + "-shifted", shifted);
+    }
     std::printf("deflection %s yaw %.1f pitch %.1f roll %.1f %s: homography %.4f of %zu within 2/255 (flat %.4f), "
                 "mean |d| %.6f; shift %.4f of %zu (flat %.4f), mean |d| %.6f\n",
                 f.gpu->scene().name.c_str(), yaw, pitch, roll, std::string(deflectFilterName(filter)).c_str(),

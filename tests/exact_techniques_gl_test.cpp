@@ -61,7 +61,7 @@ TEST_CASE("reversing the submission order leaves exact techniques unchanged and 
     test::glContext();
     // Without coincident surfaces every robust technique is order-independent; with them, only
     // those that break depth ties by (object id, primitive id) are.
-    for (const char* spec : {"layers:5", "cubes:separated", "volumes", "cubes", "default", "coplanar:3", "shells:3",
+    for (const std::string spec : {"layers:5", "cubes:separated", "volumes", "cubes", "default", "coplanar:3", "shells:3",
                              "shells:3:roundoff"}) {
         const std::string name(spec);
         bool coplanar = name == "cubes" || name == "default" || name.rfind("coplanar", 0) == 0 ||
@@ -78,6 +78,10 @@ TEST_CASE("reversing the submission order leaves exact techniques unchanged and 
             Image forward = test::renderWith(scene, camera, size, *exactTechnique(id, 64)).image;
             Image backward = test::renderWith(scene, camera, size, *exactTechnique(id, 64), reversed).image;
             CHECK(compareImages(forward, backward).maxAbsError <= kTolerance);
+            if (compareImages(forward, backward).maxAbsError > kTolerance) {
+                test::dumpImage("reversed-forward-" + id + "-" + name, forward);
+                test::dumpImage("reversed-backward-" + id + "-" + name, backward);
+            }
         }
         if (std::string(spec) == "layers:5") {
             Image forward = test::renderWith(scene, camera, size, "blend-unsorted").image;

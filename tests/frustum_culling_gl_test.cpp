@@ -51,7 +51,7 @@ TEST_CASE("frustum culling: objects out of view are counted and drawn by no pass
     test::glContext();
     GpuScene scene(sceneWithObjectsOutside());
     const Camera camera = defaultCamera(scene.scene(), scene.objects());
-    for (const char* id : {"abuffer", "f2b", "dual-2p", "wboit", "blend-sorted"}) {
+    for (const std::string id : {"abuffer", "f2b", "dual-2p", "wboit", "blend-sorted"}) {
         CAPTURE(id);
         FrameOptions off;
         off.cull = false;

@@ -12,6 +12,9 @@
 #include "render/gpu_scene.hpp"
 #include "render/shading.hpp"
 
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -88,6 +91,18 @@ inline glm::vec3 litFacing(const Scene& scene, const Camera& camera, glm::ivec2 
     pixelRay(camera, size.x, size.y, x, y, origin, direction);
     return shadeSurface(base, 0.0f, 1.0f, 1.0f, glm::vec3(0.0f), {0.0f, 0.0f, 1.0f}, glm::vec3(-glm::normalize(direction)),
                         scene.lightDirection, glm::vec3(kDefaultLightIrradiance));
+}
+
+// With STRATA_TEST_DUMP naming a folder, writes `image` there as NAME.exr (float, linear), so
+// a failure on a machine that cannot be debugged in place (a lent GPU) comes back as pictures.
+// Call it where a check has failed; without the variable it does nothing.
+inline void dumpImage(const std::string& name, const Image& image) {
+    const char* dir = std::getenv("STRATA_TEST_DUMP");
+    if (!dir || !*dir) return;
+    std::filesystem::create_directories(dir);
+    std::string file;
+    for (char c : name) file += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ? c : '_';
+    writeImage(std::filesystem::path(dir) / (file + ".exr"), image);
 }
 
 }  // namespace strata::test

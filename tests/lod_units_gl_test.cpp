@@ -237,7 +237,7 @@ TEST_CASE("lod units: every technique that bounds objects takes a unit stand-in'
     FrameOptions withStandIns;
     withStandIns.standIns = s;
     const Image reference = test::renderWith(*fx.gpu, camera, {128, 128}, "abuffer", withStandIns).image;
-    for (const char* id : {"f2b", "dual", "bun"}) {
+    for (const std::string id : {"f2b", "dual", "bun"}) {
         CAPTURE(id);
         const test::Rendered r = test::renderWith(*fx.gpu, camera, {128, 128}, id, withStandIns);
         const double meanAbs = difference(reference, r.image, fx.gpu->scene().background).first;

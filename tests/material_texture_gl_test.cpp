@@ -267,7 +267,7 @@ TEST_CASE("builtin:layers:N:textured draws through a white texture and equals bu
     CHECK((textured.materialFeatures(0) & kSceneBaseColorTexture) != 0u);
     CHECK(textured.textureBytes() == 64 * 64 * 4 * 4 / 3);
     const Camera camera = defaultCamera(plain.scene(), plain.objects());
-    for (const char* id : {"abuffer", "f2b", "wboit", "blend-sorted"}) {
+    for (const std::string id : {"abuffer", "f2b", "wboit", "blend-sorted"}) {
         CAPTURE(id);
         const Image a = test::renderWith(textured, camera, {12, 10}, id).image;
         const Image b = test::renderWith(plain, camera, {12, 10}, id).image;

@@ -80,7 +80,7 @@ TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {
         CAPTURE(k);
         Fixture f(makeCoplanarScene(k, 0.5f));
         glm::ivec2 size(8, 8);
-        for (const char* id : {"f2b", "f2b2", "dual"}) {
+        for (const std::string id : {"f2b", "f2b2", "dual"}) {
             CAPTURE(id);
             auto r = test::renderWith(*f.gpu, f.camera, size, id);
             REQUIRE(r.result.fragmentsTotal.has_value());
@@ -92,7 +92,7 @@ TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {
         // The strict test keeps the first fragment submitted at a depth: copy 0 in id order.
         glm::vec3 expected = 0.5f * test::litFacing(f.gpu->scene(), f.camera, size, 4, 4, paletteColor(0)) +
                              0.5f * f.gpu->scene().background;
-        for (const char* id : {"f2b", "f2b2"}) {
+        for (const std::string id : {"f2b", "f2b2"}) {
             CAPTURE(id);
             glm::vec4 p = test::renderWith(*f.gpu, f.camera, size, id).image.at(4, 4);
             CHECK(std::abs(p.r - expected.r) <= kTolerance);
@@ -145,11 +145,11 @@ TEST_CASE("three objects one behind another: peeled objects are skipped, the ima
 }
 
 TEST_CASE("skipping is conservative: skip on and off agree on intersecting and coplanar scenes") {
-    for (const char* spec : {"cubes:separated", "volumes", "cubes", "default"}) {
+    for (const std::string spec : {"cubes:separated", "volumes", "cubes", "default"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
         glm::ivec2 size(40, 30);
-        for (const char* id : {"f2b", "f2b2", "dual"}) {
+        for (const std::string id : {"f2b", "f2b2", "dual"}) {
             CAPTURE(id);
             auto without = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
             auto with = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));
@@ -173,7 +173,7 @@ TEST_CASE("skipping is conservative with the eye inside an object's bounds and b
         camera.nearPlane = 0.01f;
         camera.farPlane = 20.0f;
         glm::ivec2 size(32, 24);
-        for (const char* id : {"f2b", "f2b2", "dual"}) {
+        for (const std::string id : {"f2b", "f2b2", "dual"}) {
             CAPTURE(id);
             auto without = test::renderWith(*f.gpu, camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
             auto with = test::renderWith(*f.gpu, camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));

@@ -47,7 +47,7 @@ TEST_CASE("precision is offered by every technique with float targets of its own
         for (const char* bad : {"precision=24", "precision=8", "precision=64", "precision=17"})
             CHECK_THROWS_AS(test::setSetting(*t, bad), std::invalid_argument);
     }
-    for (const char* id : {"abuffer", "sbuffer", "floor"}) {
+    for (const std::string id : {"abuffer", "sbuffer", "floor"}) {
         CAPTURE(id);
         auto t = createTechnique(id);
         CHECK_FALSE(hasPrecision(*t));

@@ -163,7 +163,7 @@ TEST_CASE("in a scene with glass, the buffers keep every other fragment at the s
     REQUIRE(gpu.hasColoredFilters());
     const float a = glm::unpackHalf1x16(glm::packHalf1x16(0.05f));
     const float want = std::pow(1.0f - a, 16.0f);
-    for (const char* id : {"abuffer", "ll", "sbuffer", "bun-ll"}) {
+    for (const std::string id : {"abuffer", "ll", "sbuffer", "bun-ll"}) {
         CAPTURE(id);
         auto t = createTechnique(id);
         if (test::hasSetting(id, "capacity")) test::setSetting(*t, "capacity=20");

@@ -1,10 +1,13 @@
 #include "gl/shader_program.hpp"
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
+#include <mutex>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace strata::gl {
 namespace fs = std::filesystem;
@@ -113,16 +116,111 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
     return out;
 }
 
+namespace {
+
+// Programs already linked in this process, by their exact preprocessed stage texts: a bench
+// or a test run builds the same program again for every technique object it makes, and a
+// driver that compiles to machine code (NVIDIA) spends tens to hundreds of milliseconds on a
+// resolve shader where loading its binary takes about one. Binaries are valid for the driver
+// that produced them, so the cache lives no longer than the process. STRATA_PROGRAM_CACHE=0
+// turns it off (to time compilation).
+struct ProgramBinary {
+    GLenum format = 0;
+    std::vector<char> data;
+};
+constexpr std::size_t kProgramCacheBytes = std::size_t(256) << 20;
+
+struct ProgramCache {
+    std::mutex mutex;
+    std::unordered_map<std::string, ProgramBinary> binaries;
+    std::size_t bytes = 0;
+    ProgramBuildStats stats;
+};
+
+ProgramCache& programCache() {
+    static ProgramCache cache;
+    return cache;
+}
+
+bool programCacheEnabled() {
+    static const bool enabled = [] {
+        const char* env = std::getenv("STRATA_PROGRAM_CACHE");
+        return !(env && std::string(env) == "0");
+    }();
+    return enabled;
+}
+
+// The program from a cached binary, or an empty handle where there is none or the driver
+// refuses it (a driver may reject its own binary, e.g. after an update: then compile).
+Program loadCachedProgram(const std::string& key) {
+    if (!programCacheEnabled()) return {};
+    ProgramCache& cache = programCache();
+    std::lock_guard lock(cache.mutex);
+    auto it = cache.binaries.find(key);
+    if (it == cache.binaries.end()) return {};
+    Program program = Program::create();
+    glProgramBinary(program.id(), it->second.format, it->second.data.data(), GLsizei(it->second.data.size()));
+    GLint ok = 0;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        cache.bytes -= it->second.data.size();
+        cache.binaries.erase(it);
+        ++cache.stats.rejected;
+        return {};
+    }
+    ++cache.stats.loaded;
+    return program;
+}
+
+void storeProgramBinary(const std::string& key, GLuint program) {
+    if (!programCacheEnabled()) return;
+    GLint formats = 0, length = 0;
+    glGetIntegerv(GL_NUM_PROGRAM_BINARY_FORMATS, &formats);
+    if (formats <= 0) return;
+    glGetProgramiv(program, GL_PROGRAM_BINARY_LENGTH, &length);
+    ProgramCache& cache = programCache();
+    std::lock_guard lock(cache.mutex);
+    if (length <= 0 || cache.bytes + std::size_t(length) > kProgramCacheBytes) return;
+    ProgramBinary binary;
+    binary.data.resize(std::size_t(length));
+    GLsizei written = 0;
+    glGetProgramBinary(program, length, &written, &binary.format, binary.data.data());
+    if (written <= 0) return;
+    binary.data.resize(std::size_t(written));
+    cache.bytes += binary.data.size();
+    cache.binaries.insert_or_assign(key, std::move(binary));
+}
+
+}  // namespace
+
+ProgramBuildStats programBuildStats() {
+    ProgramCache& cache = programCache();
+    std::lock_guard lock(cache.mutex);
+    return cache.stats;
+}
+
 Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines, const StageWrap& fragmentWrap) {
+    const auto started = std::chrono::steady_clock::now();
     fs::path root = shaderRoot();
+    struct Stage {
+        GLenum type;
+        PreprocessedSource source;
+    };
+    std::vector<Stage> stages;
+    std::string key;
+    for (const auto& name : stageFiles) {
+        GLenum type = stageOf(name);
+        stages.push_back({type, preprocessShader(root / name, defines, root,
+                                                 type == GL_FRAGMENT_SHADER ? fragmentWrap : StageWrap{})});
+        key += std::to_string(type) + '\n' + stages.back().source.text + '\0';
+    }
+    if (Program cached = loadCachedProgram(key)) return cached;
+
     Program program = Program::create();
     std::vector<Shader> shaders;
-    for (const auto& name : stageFiles) {
-        GLenum stage = stageOf(name);
-        PreprocessedSource source =
-            preprocessShader(root / name, defines, root, stage == GL_FRAGMENT_SHADER ? fragmentWrap : StageWrap{});
-        Shader shader(glCreateShader(stage));
-        const char* text = source.text.c_str();
+    for (const auto& stage : stages) {
+        Shader shader(glCreateShader(stage.type));
+        const char* text = stage.source.text.c_str();
         glShaderSource(shader.id(), 1, &text, nullptr);
         glCompileShader(shader.id());
         GLint ok = 0;
@@ -132,13 +230,14 @@ Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& 
             glGetShaderiv(shader.id(), GL_INFO_LOG_LENGTH, &length);
             std::string log(std::size_t(std::max(length, 1)), '\0');
             glGetShaderInfoLog(shader.id(), length, nullptr, log.data());
-            std::string mapped = mapShaderLog(log.c_str(), source.files);
-            if (mapped.empty()) mapped = source.files.front() + ": compile failed without a log\n";
+            std::string mapped = mapShaderLog(log.c_str(), stage.source.files);
+            if (mapped.empty()) mapped = stage.source.files.front() + ": compile failed without a log\n";
             throw ShaderError(mapped.substr(0, mapped.size() - 1));
         }
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
     }
+    glProgramParameteri(program.id(), GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     glLinkProgram(program.id());
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
@@ -152,6 +251,13 @@ Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& 
         throw ShaderError(files + ": link failed: " + std::string(log.c_str()));
     }
     for (auto& s : shaders) glDetachShader(program.id(), s.id());
+    storeProgramBinary(key, program.id());
+    {
+        ProgramCache& cache = programCache();
+        std::lock_guard lock(cache.mutex);
+        ++cache.stats.compiled;
+        cache.stats.compileSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    }
     return program;
 }
 

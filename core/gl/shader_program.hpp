@@ -43,6 +43,17 @@ PreprocessedSource preprocessShader(const std::filesystem::path& file, const Def
 // Rewrites driver log lines ("0:12(5): error" Mesa, "0(12) : error" NVIDIA) to "file:12: error".
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
 
+// Programs built in this process: compiled from source, loaded from the in-process binary cache
+// (buildProgram reuses the binary of a program with the same preprocessed stages), and binaries
+// the driver refused. compileSeconds: wall time of the compiled ones, preprocessing included.
+struct ProgramBuildStats {
+    int compiled = 0;
+    int loaded = 0;
+    int rejected = 0;
+    double compileSeconds = 0.0;
+};
+ProgramBuildStats programBuildStats();
+
 // Builds a program from stage files (stage from the name: .vert/.frag/.comp/.geom.glsl),
 // given relative to the shader root.
 // `fragmentWrap` wraps the fragment stage.
