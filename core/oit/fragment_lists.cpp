@@ -133,8 +133,10 @@ std::uint64_t FragmentLists::store(const FrameContext& frame, const Tile& tile, 
                         GLuint(std::min<std::uint64_t>(capacity_, 0xFFFFFFFFu)));
     run.objectDraws += drawTransparent(frame, program, frame.transparentOrder);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // TEXTURE_UPDATE: the heads the store's image atomics wrote are cleared by glClearTexImage
+    // before a regrow's or the next tile's store.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                    GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+                    GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     ++run.passes;
     return gl::readUint(counter_);
 }

@@ -78,7 +78,7 @@ uniform mat3 uEmissiveTransform;
 uniform int uEmissiveTexCoord;
 #endif
 
-vec4 materialBaseColor() {
+vec4 fetchMaterialBaseColor() {
     vec4 texel = vec4(1.0);
     vec4 vertexColor = vec4(1.0);
 #ifdef STRATA_BASE_COLOR_TEXTURE
@@ -92,6 +92,16 @@ vec4 materialBaseColor() {
 #endif
     return combineBaseColor(vec4(uBaseColor, uAlpha), texel, vertexColor);
 }
+
+#ifdef STRATA_ALPHA_MASK
+// MASK: common/scene_main.glsl fetches the base colour once, before its discard, and the stage
+// reads it from here. A texture fetch after a discard that not every fragment of a quad takes
+// has undefined derivatives (GLSL 4.50, 8.9.1), and it would fetch the same texel twice.
+vec4 strataMaskBaseColor;
+vec4 materialBaseColor() { return strataMaskBaseColor; }
+#else
+vec4 materialBaseColor() { return fetchMaterialBaseColor(); }
+#endif
 
 // Metallic (x) and roughness (y): the factors times the texture's blue and green channels.
 vec2 materialMetallicRoughness() {

@@ -40,7 +40,8 @@ void main() {
 #endif
 #ifdef STRATA_ALPHA_MASK
     // glTF MASK: the fragment exists where factor x texture x COLOR_0 alpha reaches the cutoff.
-    if (!alphaMaskKeeps(materialBaseColor().a, uAlphaCutoff)) discard;
+    strataMaskBaseColor = fetchMaterialBaseColor();
+    if (!alphaMaskKeeps(strataMaskBaseColor.a, uAlphaCutoff)) discard;
 #endif
     strataSceneFragmentMain();
 }

@@ -15,9 +15,11 @@ layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
 uniform uint uCapacity;
 
 void main() {
+    // The colour first: its texture fetches need derivatives, which a fragment that has left
+    // by the branch below no longer helps compute (oit/fragment_color.glsl).
+    uvec2 words = storedSurfaceColor().words;
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
-    uvec2 words = storedSurfaceColor().words;
 #ifdef VOLUME
     uint primitiveBits = uint(gl_PrimitiveID) | volumeFlags();
 #else

@@ -25,7 +25,12 @@ std::array<std::uint32_t, kCounterSlots> Counters::read() const {
 std::uint64_t TailTargets::bytesPerPixel() const { return floatTexelBytes(bits_, 4) + floatTexelBytes(bits_, 1); }
 
 void TailTargets::ensure(const FrameContext& frame) {
-    if (frame.size == size_ && depth_ == frame.targets.depth() && bits_ == allocatedBits_ && fbo_) return;
+    if (frame.size == size_ && bits_ == allocatedBits_ && fbo_) {
+        // The frame's depth is attached every time: comparing texture names cannot tell a new
+        // target from a deleted one whose name GL gave out again.
+        glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+        return;
+    }
     accum_ = gl::createTexture2D(rgbaFloatFormat(bits_), frame.size.x, frame.size.y);
     reveal_ = gl::createTexture2D(redFloatFormat(bits_), frame.size.x, frame.size.y);
     allocatedBits_ = bits_;
@@ -36,7 +41,6 @@ void TailTargets::ensure(const FrameContext& frame) {
     const GLenum draw[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glNamedFramebufferDrawBuffers(fbo_.id(), 2, draw);
     size_ = frame.size;
-    depth_ = frame.targets.depth();
 }
 
 void TailTargets::bindForStore(const FrameContext& frame, bool enabled, bool clear) {

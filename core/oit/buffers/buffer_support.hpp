@@ -56,7 +56,6 @@ private:
     gl::Texture accum_, reveal_;
     gl::Framebuffer fbo_;
     glm::ivec2 size_{0, 0};
-    GLuint depth_ = 0;
     int bits_ = 32, allocatedBits_ = 0;
 };
 

@@ -96,8 +96,9 @@ void LayerStorage::beginPass(GLuint program) {
 }
 
 LayerCounts LayerStorage::endPass() {
+    // TEXTURE_UPDATE: the next pass clears the pixel image these image atomics wrote.
     glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+                    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     GLuint c[2] = {0, 0};
     glGetNamedBufferSubData(counters_.id(), 0, sizeof(c), c);
     LayerCounts out;

@@ -78,16 +78,13 @@ void VolumeResolve::bind(const FrameContext& frame, GLuint program) const {
 }
 
 GLuint VolumeResolve::colorFramebuffer(const FrameContext& frame) {
-    // A resized frame gets new textures, and a new texture may reuse the old one's name.
-    if (!colorFramebuffer_ || colorTexture_ != frame.targets.outputColor() || colorSize_ != frame.size) {
-        colorFramebuffer_ = gl::Framebuffer::create();
-        glNamedFramebufferTexture(colorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.targets.outputColor(), 0);
-        const GLenum status = glCheckNamedFramebufferStatus(colorFramebuffer_.id(), GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("volume resolve framebuffer incomplete (status " + std::to_string(status) + ")");
-        colorTexture_ = frame.targets.outputColor();
-        colorSize_ = frame.size;
-    }
+    // Attached every frame: a new target may have the name of a deleted one, so comparing
+    // names cannot tell whether the attachment is still the frame's.
+    if (!colorFramebuffer_) colorFramebuffer_ = gl::Framebuffer::create();
+    glNamedFramebufferTexture(colorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.targets.outputColor(), 0);
+    const GLenum status = glCheckNamedFramebufferStatus(colorFramebuffer_.id(), GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("volume resolve framebuffer incomplete (status " + std::to_string(status) + ")");
     return colorFramebuffer_.id();
 }
 

@@ -39,8 +39,6 @@ private:
     std::size_t objectCapacity_ = 0;
     std::vector<int> eyeInside_;
     gl::Framebuffer colorFramebuffer_;
-    GLuint colorTexture_ = 0;
-    glm::ivec2 colorSize_{0, 0};
 };
 
 }  // namespace strata
