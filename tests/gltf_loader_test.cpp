@@ -1,6 +1,7 @@
 // glTF loader: (a) generated files pin each feature, (b) every file of assimp's glTF2 test
 // corpus (bad inputs included) has a stated outcome, (c) the shared test models load. Textures
 // and their images: gltf_texture_test.cpp.
+#include "test_paths.hpp"
 #include "gltf_test_builder.hpp"
 
 #include "scene/gltf_loader.hpp"
@@ -636,7 +637,7 @@ TEST_CASE("gltf: assimp glTF2 corpus, every file has a stated outcome") {
 // (c) the shared test models (../shared/scenes-data, see its SOURCES.md).
 
 TEST_CASE("gltf: shared test models load with their triangle counts") {
-    std::filesystem::path dir = STRATA_SHARED_SCENES_DIR;
+    std::filesystem::path dir = test::sharedScenesDir();
     if (!std::filesystem::is_directory(dir)) {
         MESSAGE("skipped: " << dir << " is absent");
         return;

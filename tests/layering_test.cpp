@@ -1,5 +1,6 @@
 // The core's folders depend one way: gl <- scene, camera, image <- render <- oit <- frame <- bench.
 // A folder that includes a header from one above it makes a cycle; this test names the line.
+#include "test_paths.hpp"
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -18,7 +19,7 @@ TEST_CASE("core folders include only folders below them") {
         {"oit", {"frame", "bench"}},
         {"frame", {"bench"}},
     };
-    const fs::path core = fs::path(STRATA_SOURCE_DIR) / "core";
+    const fs::path core = strata::test::sourceDir() / "core";
     REQUIRE(fs::is_directory(core));
     int files = 0;
     for (const auto& [folder, above] : forbidden) {

@@ -1,6 +1,7 @@
 // Layered impostors on the GPU (lod/layered_impostor.hpp, lod/impostor_set.hpp): the baked atlas
 // against the analytic sphere, peels, rectangles, memory, the degenerate inputs, the per-frame
 // ranges and hole filling; and (below) impostor renders against geometry renders.
+#include "test_paths.hpp"
 #include "gl_test_support.hpp"
 
 #include "lod/impostor_set.hpp"
@@ -315,7 +316,7 @@ TEST_CASE("lod impostor gl: ranges per frame: the nearest view in full, holes fr
 }
 
 TEST_CASE("lod impostor gl: the set bakes the shipped bunny (res 128, 20 views, 64 slices) with a progress line") {
-    const std::filesystem::path file = std::filesystem::path(STRATA_SHARED_SCENES_DIR) / "stanford-bunny.glb";
+    const std::filesystem::path file = test::sharedScenesDir() / "stanford-bunny.glb";
     if (!std::filesystem::exists(file)) {
         MESSAGE("skipped: ", file.string(), " is absent");
         return;

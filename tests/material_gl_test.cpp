@@ -1,5 +1,6 @@
 // The per-object material path delivers the volume parameters (Material::tau and albedo) to the
 // shaders: a test stage writes them out and they are read back per object.
+#include "test_paths.hpp"
 #include "gl_test_support.hpp"
 
 #include "render/scene_program.hpp"
@@ -63,7 +64,7 @@ Probe drawAlone(const GpuScene& scene, const SceneProgram& program, const Camera
 
 TEST_CASE("tau and albedo of each builtin:volumes object reach the shaders through the material path") {
     test::Fixture f(makeVolumesScene());
-    const std::string probe = std::string(STRATA_SOURCE_DIR) + "/tests/shaders/material_probe.frag.glsl";
+    const std::string probe = (test::sourceDir() / "tests/shaders/material_probe.frag.glsl").string();
     SceneProgram program = buildSceneProgram(probe);
     REQUIRE(program.tau >= 0);
     REQUIRE(program.albedo >= 0);

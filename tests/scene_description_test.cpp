@@ -1,5 +1,6 @@
 // Scene descriptions: the shipped scenes load, transforms and material overrides apply, and
 // errors name the JSON file and the problem.
+#include "test_paths.hpp"
 #include "gltf_test_builder.hpp"
 
 #include "scene/scene_description.hpp"
@@ -44,8 +45,8 @@ std::filesystem::path writeDescription(const std::string& name, const std::strin
 }
 
 bool sharedModelsPresent() {
-    bool present = std::filesystem::is_directory(STRATA_SHARED_SCENES_DIR);
-    if (!present) MESSAGE("skipped: " << STRATA_SHARED_SCENES_DIR << " is absent");
+    bool present = std::filesystem::is_directory(test::sharedScenesDir());
+    if (!present) MESSAGE("skipped: " << test::sharedScenesDir().string() << " is absent");
     return present;
 }
 
@@ -53,7 +54,7 @@ bool sharedModelsPresent() {
 
 TEST_CASE("scene description: the shipped scenes load") {
     if (!sharedModelsPresent()) return;
-    std::filesystem::path scenes = std::filesystem::path(STRATA_SOURCE_DIR) / "scenes";
+    std::filesystem::path scenes = test::sourceDir() / "scenes";
 
     Scene fandisk = loadSceneDescription(scenes / "fandisk-glass.json");
     CHECK(fandisk.name == "fandisk-glass");

@@ -1,5 +1,6 @@
 // Which shipped models bound a volume (closed and consistently oriented after welding), so the
 // volumetric techniques render them as media. Skips where ../shared/scenes-data is absent.
+#include "test_paths.hpp"
 #include "scene/gltf_loader.hpp"
 #include "scene/mesh_volume.hpp"
 
@@ -11,7 +12,7 @@
 using namespace strata;
 
 TEST_CASE("shipped models: closed volumes or not, as measured") {
-    const std::filesystem::path dir = STRATA_SHARED_SCENES_DIR;
+    const std::filesystem::path dir = test::sharedScenesDir();
     if (!std::filesystem::is_directory(dir)) {
         MESSAGE("skipped: " << dir.string() << " is absent");
         return;

@@ -1,4 +1,5 @@
 // Synthetic head motion (the model's stated properties) and the two-step evaluation on it.
+#include "test_paths.hpp"
 #include "tracking/synthetic.hpp"
 #include "tracking/trace_io.hpp"
 #include "tracking/two_step.hpp"
@@ -62,7 +63,7 @@ TEST_CASE("two-step prediction on synthetic motion: kalman beats none, homograph
 }
 
 TEST_CASE("shipped example traces parse") {
-    const std::filesystem::path dir = std::filesystem::path(STRATA_SOURCE_DIR) / "scenes" / "traces";
+    const std::filesystem::path dir = strata::test::sourceDir() / "scenes" / "traces";
     const Trace measured = readTrace((dir / "head-synthetic-measured.path").string());
     const Trace truth = readTrace((dir / "head-synthetic-truth.path").string());
     CHECK(measured.size() > 400);

@@ -2,6 +2,7 @@
 // and against closed forms: a slab's exp(-tau d) per pixel, a sphere's exp(-tau chord), the eye
 // inside volumes, intersecting media, the extremes of tau, a large near/far ratio, nesting past
 // the limit, and a glTF KHR_materials_volume material.
+#include "test_paths.hpp"
 #include "gl_test_support.hpp"
 
 #include "reference/raycast.hpp"
@@ -142,11 +143,11 @@ TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     cases.push_back({"intersecting, eye outside", intersectingScene(), cameraAt({0.3f, 1.0f, 4.0f}, {0, 0, 0})});
     cases.push_back({"intersecting, eye in the overlap", intersectingScene(), cameraAt({0.1f, -0.05f, 0.05f}, {0, 0, -3})});
     cases.push_back({"intersecting, eye in one", intersectingScene(), cameraAt({-0.9f, 0.6f, 0.2f}, {1, -0.3f, -1})});
-    if (std::filesystem::is_directory(STRATA_SHARED_SCENES_DIR))
-        cases.push_back({"models-volume", openScene(std::string(STRATA_SOURCE_DIR) + "/scenes/models-volume.json"),
+    if (std::filesystem::is_directory(test::sharedScenesDir()))
+        cases.push_back({"models-volume", openScene((test::sourceDir() / "scenes/models-volume.json").string()),
                          std::nullopt});
     else
-        MESSAGE("models-volume skipped: " << STRATA_SHARED_SCENES_DIR << " is absent");
+        MESSAGE("models-volume skipped: " << test::sharedScenesDir().string() << " is absent");
     const glm::ivec2 size(48, 36);
     for (auto& c : cases) {
         CAPTURE(c.name);

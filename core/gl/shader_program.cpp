@@ -123,7 +123,8 @@ namespace {
 // driver that compiles to machine code (NVIDIA) spends tens to hundreds of milliseconds on a
 // resolve shader where loading its binary takes about one. Binaries are valid for the driver
 // that produced them, so the cache lives no longer than the process. STRATA_PROGRAM_CACHE=0
-// turns it off (to time compilation).
+// turns it off (to time compilation). A driver that offers no binary format (Mesa with its disk
+// shader cache turned off) gets no cache: every build compiles, as before.
 struct ProgramBinary {
     GLenum format = 0;
     std::vector<char> data;
@@ -163,7 +164,7 @@ Program loadCachedProgram(const std::string& key) {
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
     if (!ok) {
-        cache.bytes -= it->second.data.size();
+        cache.bytes -= it->first.size() + it->second.data.size();
         cache.binaries.erase(it);
         ++cache.stats.rejected;
         return {};
@@ -180,14 +181,15 @@ void storeProgramBinary(const std::string& key, GLuint program) {
     glGetProgramiv(program, GL_PROGRAM_BINARY_LENGTH, &length);
     ProgramCache& cache = programCache();
     std::lock_guard lock(cache.mutex);
-    if (length <= 0 || cache.bytes + std::size_t(length) > kProgramCacheBytes) return;
+    // The cap counts the keys (whole preprocessed texts) as well as the binaries.
+    if (length <= 0 || cache.bytes + key.size() + std::size_t(length) > kProgramCacheBytes) return;
     ProgramBinary binary;
     binary.data.resize(std::size_t(length));
     GLsizei written = 0;
     glGetProgramBinary(program, length, &written, &binary.format, binary.data.data());
     if (written <= 0) return;
     binary.data.resize(std::size_t(written));
-    cache.bytes += binary.data.size();
+    cache.bytes += key.size() + binary.data.size();
     cache.binaries.insert_or_assign(key, std::move(binary));
 }
 
@@ -237,7 +239,7 @@ Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& 
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
     }
-    glProgramParameteri(program.id(), GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
+    if (programCacheEnabled()) glProgramParameteri(program.id(), GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     glLinkProgram(program.id());
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
@@ -251,13 +253,13 @@ Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& 
         throw ShaderError(files + ": link failed: " + std::string(log.c_str()));
     }
     for (auto& s : shaders) glDetachShader(program.id(), s.id());
-    storeProgramBinary(key, program.id());
     {
         ProgramCache& cache = programCache();
         std::lock_guard lock(cache.mutex);
         ++cache.stats.compiled;
         cache.stats.compileSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
+    storeProgramBinary(key, program.id());
     return program;
 }
 

@@ -48,6 +48,31 @@ in MaterialVarying {
 vec2 materialTexCoord(mat3 transform, int texCoord) {
     return transformTexCoord(transform, texCoord == 0 ? vMaterial.texCoord0 : vMaterial.texCoord1);
 }
+
+#ifdef STRATA_WRAPPED_MAIN
+// A wrapped variant (MASK, stand-in) may discard in common/scene_main.glsl before the stage's own
+// fetches run, and after a discard that not every fragment of a quad takes, implicit derivatives
+// are undefined (GLSL 4.50, 8.9.1). The wrapper records both coordinate sets' derivatives first
+// (xy: d/dx, zw: d/dy), and every material fetch takes them explicitly.
+vec4 strataTexCoordGrad[2];
+void recordTexCoordDerivatives() {
+    strataTexCoordGrad[0] = vec4(dFdx(vMaterial.texCoord0), dFdy(vMaterial.texCoord0));
+    strataTexCoordGrad[1] = vec4(dFdx(vMaterial.texCoord1), dFdy(vMaterial.texCoord1));
+}
+#endif
+
+// A material texture at its coordinate: texture() in a plain build, textureGrad with the
+// recorded derivatives (through the transform's linear part) in a wrapped one.
+vec4 materialSample(sampler2D s, mat3 transform, int texCoord) {
+    vec2 uv = materialTexCoord(transform, texCoord);
+#ifdef STRATA_WRAPPED_MAIN
+    vec4 g = strataTexCoordGrad[texCoord == 0 ? 0 : 1];
+    mat2 linear = mat2(transform);
+    return textureGrad(s, uv, linear * g.xy, linear * g.zw);
+#else
+    return texture(s, uv);
+#endif
+}
 #endif
 
 #ifdef STRATA_BASE_COLOR_TEXTURE
@@ -82,7 +107,7 @@ vec4 fetchMaterialBaseColor() {
     vec4 texel = vec4(1.0);
     vec4 vertexColor = vec4(1.0);
 #ifdef STRATA_BASE_COLOR_TEXTURE
-    texel = texture(uBaseColorTexture, materialTexCoord(uBaseColorTransform, uBaseColorTexCoord));
+    texel = materialSample(uBaseColorTexture, uBaseColorTransform, uBaseColorTexCoord);
 #endif
 #ifdef STRATA_VERTEX_COLOR
     vertexColor = vMaterial.color;
@@ -107,7 +132,7 @@ vec4 materialBaseColor() { return fetchMaterialBaseColor(); }
 vec2 materialMetallicRoughness() {
     vec2 mr = vec2(uMetallic, uRoughness);
 #ifdef STRATA_METALLIC_ROUGHNESS_TEXTURE
-    vec4 texel = texture(uMetallicRoughnessTexture, materialTexCoord(uMetallicRoughnessTransform, uMetallicRoughnessTexCoord));
+    vec4 texel = materialSample(uMetallicRoughnessTexture, uMetallicRoughnessTransform, uMetallicRoughnessTexCoord);
     mr *= vec2(texel.b, texel.g);
 #endif
     return mr;
@@ -115,7 +140,7 @@ vec2 materialMetallicRoughness() {
 
 float materialOcclusion() {
 #ifdef STRATA_OCCLUSION_TEXTURE
-    return occlusionOf(texture(uOcclusionTexture, materialTexCoord(uOcclusionTransform, uOcclusionTexCoord)).r,
+    return occlusionOf(materialSample(uOcclusionTexture, uOcclusionTransform, uOcclusionTexCoord).r,
                        uOcclusionStrength);
 #else
     return 1.0;
@@ -124,7 +149,7 @@ float materialOcclusion() {
 
 vec3 materialEmissive() {
 #ifdef STRATA_EMISSIVE_TEXTURE
-    return uEmissive * texture(uEmissiveTexture, materialTexCoord(uEmissiveTransform, uEmissiveTexCoord)).rgb;
+    return uEmissive * materialSample(uEmissiveTexture, uEmissiveTransform, uEmissiveTexCoord).rgb;
 #else
     return uEmissive;
 #endif
@@ -149,7 +174,7 @@ float materialIor() {
 // The shading normal: `normal` (the interpolated one) bent by the normal texture.
 vec3 materialNormal(vec3 normal) {
 #ifdef STRATA_NORMAL_TEXTURE
-    vec3 texel = texture(uNormalTexture, materialTexCoord(uNormalTransform, uNormalTexCoord)).rgb;
+    vec3 texel = materialSample(uNormalTexture, uNormalTransform, uNormalTexCoord).rgb;
     return normalFromMap(normal, vMaterial.tangent, texel, uNormalScale);
 #else
     return normal;

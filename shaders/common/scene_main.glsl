@@ -30,6 +30,9 @@ in ImpostorVarying {
 #endif
 
 void main() {
+#ifdef STRATA_MATERIAL_VARYING
+    recordTexCoordDerivatives();  // before any discard (common/material.glsl)
+#endif
 #ifdef STRATA_IMPOSTOR
     ivec2 size = textureSize(uImpostorAtlas, 0).xy;
     ivec2 texel = clamp(ivec2(vImpostor.uv * vec2(size)), ivec2(0), size - 1);

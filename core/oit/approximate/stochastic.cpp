@@ -66,7 +66,8 @@ public:
             glBindImageTexture(gpu::BIND_SAMPLE_DEPTHS, sampleDepths_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
             stats_.objectDraws += drawTransparent(frame, depthProgram_, frame.transparentOrder);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            // TEXTURE_UPDATE: the next frame clears these image-atomic results with glClearTexImage.
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         }
         {
             gl::ScopedPass pass(frame.timer, "stochastic accumulate");

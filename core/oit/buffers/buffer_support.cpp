@@ -79,8 +79,11 @@ void TailTargets::bindForResolve(const FrameContext& frame, bool enabled) {
 }
 
 void storeBarrier() {
+    // TEXTURE_UPDATE: the counts and heads the store's image atomics wrote are cleared by
+    // glClearTexImage before the next frame's store.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
-                    GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+                    GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 }  // namespace strata::buffers

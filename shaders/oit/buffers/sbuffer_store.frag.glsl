@@ -24,11 +24,13 @@ uniform int uPass;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint index = uint(pixel.y) * uWidth + uint(pixel.x);
-    if (uPass == 0) {
+    if (uPass == 0) {  // a uniform branch: the counting pass needs no colour
         atomicAdd(offsets[index], 1u);
         return;
     }
+    // The colour before the per-fragment branch below (oit/fragment_color.glsl).
+    uvec2 words = storedSurfaceColor().words;
     uint slot = atomicAdd(offsets[index], 1u) - uBase;
     if (slot >= uCapacity) { atomicCounterIncrement(uDropped); return; }
-    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), storedSurfaceColor().words);
+    entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words);
 }

@@ -15,9 +15,9 @@ layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
 uniform uint uCapacity;
 
 void main() {
+    uvec2 words = storedSurfaceColor().words;  // before the branch: oit/fragment_color.glsl
     uint index = atomicCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
-    uvec2 words = storedSurfaceColor().words;
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint head = imageAtomicExchange(uHeads, ivec3(pixel, bucketOf(pixel, gl_FragCoord.z)), index + 1u);
     writeNode(index, gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words, head);

@@ -47,10 +47,10 @@ bool footprintKeeps(vec2 coord, vec2 dx, vec2 dy, float alpha) {
 }
 
 void main() {
-#ifdef STRATA_IMPOSTOR
-    // A stand-in's slice quads went through the wrapper's alpha test (common/scene_main.glsl),
-    // whose discard leaves derivatives undefined here: central differences of the interpolant
-    // one pixel apart instead, which is what dFdx and dFdy estimate.
+#ifdef STRATA_WRAPPED_MAIN
+    // A stand-in's slice quads and a MASK material went through the wrapper's alpha test
+    // (common/scene_main.glsl), whose discard leaves derivatives undefined here: central
+    // differences of the interpolant one pixel apart instead, which is what dFdx and dFdy estimate.
     vec2 dx = interpolateAtOffset(gMaskCoord, vec2(0.5, 0.0)) - interpolateAtOffset(gMaskCoord, vec2(-0.5, 0.0));
     vec2 dy = interpolateAtOffset(gMaskCoord, vec2(0.0, 0.5)) - interpolateAtOffset(gMaskCoord, vec2(0.0, -0.5));
 #else
