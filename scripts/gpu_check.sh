@@ -7,25 +7,33 @@
 # what it did. A failing or timed-out bench is recorded and the run goes on; the exit status is 1
 # if anything failed.
 #
-# usage: scripts/gpu_check.sh [--quick] [--strata PATH] [--tests PATH] [--frames N] [--warmup N]
-#                             [--sizes WxH,..] [--layers N,..] [--timeout S] [--skip-tests]
-#                             [--scenes-data DIR] [OUT_DIR]
+# usage: scripts/gpu_check.sh [--quick] [--bundle DIR] [--strata PATH] [--tests PATH] [--probe PATH]
+#                             [--frames N] [--warmup N] [--sizes WxH,..] [--layers N,..] [--modes LIST]
+#                             [--timeout S] [--skip-tests] [--scenes-data DIR] [--tar FILE] [OUT_DIR]
 #   OUT_DIR        report folder (default gpu-check-report); an old report there is replaced
 #   --quick        a tiny subset to try the script anywhere (llvmpipe): 256x256, layers 4 and 8 and
 #                  the scenes, 2 frames, 1 warm-up
 #   --strata PATH  the strata executable ($STRATA, default build/viewer/strata)
 #   --tests PATH   the GL test executable ($STRATA_GL_TESTS, default build/tests/strata_gl_tests)
+#   --bundle DIR   a bundle made by scripts/gpu_pack.sh: its strata, tests, probe, libraries,
+#                  shaders and models (sets LD_LIBRARY_PATH and STRATA_SHADER_DIR, and NVIDIA's EGL
+#                  vendor file where the driver has one)
+#   --probe PATH   the naive peer (../shared/tools/peers/oitprobe.c, built): run beside every
+#                  layers bench, with a "Strata over the probe" table in README.md
+#   --modes LIST   the techniques of the layers benches (default all; a GPU's 15 minutes do not
+#                  hold every technique at every size)
+#   --tar FILE     pack the report folder into FILE (.tgz) at the end (a tool that returns files)
 #   --frames N --warmup N   recorded and warm-up frames per technique (default 10 and 2)
 #   --sizes, --layers       replace the default sizes or layer counts (to split a run in parts)
 #   --timeout S    limit per bench and for the tests, seconds (default 900)
 #   --scenes-data DIR       the scene models (default ../shared/scenes-data beside the repository,
 #                  else scenes-data beside the strata executable); without them the scenes are skipped
-# From a GPU bundle (../shared/tools/README.md; add the models: cp -r ../shared/scenes-data .gpu/),
-# in the folder that holds .gpu/:
-#   LD_LIBRARY_PATH=$PWD/.gpu/lib STRATA_SHADER_DIR=$PWD/.gpu/shaders \
-#     scripts/gpu_check.sh --strata .gpu/strata --tests .gpu/strata_gl_tests
-# The whole set takes minutes on a GPU; --sizes and --layers split it into parts. Through a tool
-# that returns only a few files, pack the folder: tar czf report.tgz gpu-check-report
+# For a lent GPU machine: pack here with scripts/gpu_pack.sh (.gpu/), then there, from the
+# repository root:
+#   bash scripts/gpu_check.sh --bundle .gpu --tar $OUT/report.tgz
+# The whole set does not fit a 15-minute lease: the GL tests took 220 s on an H100, and one bench
+# of every technique ~30 s at 720p (docs/gpu-h100.md). Choose with --sizes, --layers and --modes,
+# e.g. --sizes 1280x720 --layers 8,16,32 --modes floor,blend-sorted,wboit,f2b,f2b2,dual,abuffer,ll,sbuffer.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 strata=${STRATA:-$root/build/viewer/strata}
@@ -37,6 +45,10 @@ warmup=""
 limit=900
 skip_tests=0
 scenes_data=""
+bundle=""
+probe=""
+modes=all
+tarball=""
 sizes_arg=""
 layers_arg=""
 while [[ $# -gt 0 ]]; do
@@ -51,11 +63,27 @@ while [[ $# -gt 0 ]]; do
         --layers) layers_arg=$2; shift 2 ;;
         --skip-tests) skip_tests=1; shift ;;
         --scenes-data) scenes_data=$2; shift 2 ;;
-        -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
+        --bundle) bundle=$2; shift 2 ;;
+        --probe) probe=$2; shift 2 ;;
+        --modes) modes=$2; shift 2 ;;
+        --tar) tarball=$2; shift 2 ;;
+        -h|--help) sed -n '2,37p' "$0"; exit 0 ;;
         -*) echo "gpu_check.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
 done
+if [[ -n $bundle ]]; then
+    [[ -x $bundle/strata ]] || { echo "gpu_check.sh: $bundle holds no strata (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
+    bundle=$(realpath "$bundle")
+    strata=$bundle/strata
+    tests=$bundle/strata_gl_tests
+    [[ -z $probe && -x $bundle/oitprobe ]] && probe=$bundle/oitprobe
+    [[ -z $scenes_data && -d $bundle/scenes-data ]] && scenes_data=$bundle/scenes-data
+    export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders
+    for v in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
+        [[ -z ${__EGL_VENDOR_LIBRARY_FILENAMES-} && -e $v ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$v
+    done
+fi
 if ((quick)); then
     sizes=(256x256); layers=(4 8); scene_size=256x256; frames=${frames:-2}; warmup=${warmup:-1}
 else
@@ -126,6 +154,39 @@ wide_table() {  # column-name printf-format
                   printf "\n" } }' "${files[@]}")
 }
 
+# Strata over the naive probe per layers bench that has a probe run: its linked lists against
+# abuffer and ll, its F2B against f2b (GPU ms over wall ms).
+probe_table() {
+    local b name rows=()
+    for b in "${benches[@]}"; do
+        IFS='|' read -r name _ _ _ _ <<<"$b"
+        [[ -s $out/runs/$name.probe && -s $out/runs/$name.csv ]] && rows+=("$name")
+    done
+    ((${#rows[@]})) || return 0
+    echo
+    echo "## Strata over the naive probe"
+    echo
+    echo "The probe (\`../shared/tools/peers/oitprobe.c\`) on the same W*H*L fragments, wall ms with"
+    echo "\`glFinish\`; Strata's GPU ms. ll runs at capacity L."
+    echo
+    echo "| bench | probe lists ms | probe F2B ms | abuffer / lists | ll / lists | f2b / F2B |"
+    echo "|---|---:|---:|---:|---:|---:|"
+    for name in "${rows[@]}"; do
+        awk -F, -v name="$name" '
+            FNR == NR { if ($1 ~ /^PPLL:/) { sub(/^PPLL: */, "", $1); split($1, a, " "); lists = a[1] }
+                        if ($0 ~ /^F2B peel:/) { sub(/^F2B peel: */, "", $0); split($0, a, " "); f2b = a[1] }
+                        next }
+            FNR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+            { ms[$col["mode"]] = $col["ms_median"] }
+            END {
+                  printf "| %s | %s | %s | %s | %s | %s |\n", name, lists == "" ? "-" : lists, f2b == "" ? "-" : f2b,
+                         ("abuffer" in ms && lists > 0) ? sprintf("%.2f", ms["abuffer"] / lists) : "-",
+                         ("ll" in ms && lists > 0) ? sprintf("%.2f", ms["ll"] / lists) : "-",
+                         ("f2b" in ms && f2b > 0) ? sprintf("%.2f", ms["f2b"] / f2b) : "-" }' \
+            "$out/runs/$name.probe" "$out/runs/$name.csv"
+    done
+}
+
 write_readme() {
     local b name scene size status secs ok=0
     for b in "${benches[@]}"; do [[ $b == *"|ok|"* ]] && ok=$((ok + 1)); done
@@ -160,6 +221,7 @@ write_readme() {
         echo "## RMSE against the reference per technique"
         echo
         wide_table rmse %.2e
+        probe_table
     } >"$out/README.md.partial" && mv "$out/README.md.partial" "$out/README.md"
 }
 
@@ -231,7 +293,8 @@ write_readme
 # The bench set.
 todo=()
 for size in "${sizes[@]}"; do
-    for n in "${layers[@]}"; do todo+=("layers-$n-$size|builtin:layers:$n|$size"); done
+    # ll at a capacity that keeps every fragment, as the probe's linked lists do.
+    for n in "${layers[@]}"; do todo+=("layers-$n-$size|builtin:layers:$n|$size|--modes $modes --set ll.capacity=$n"); done
     # The settings whose defaults were chosen on llvmpipe, at their other value: the compute
     # resolve and fp16 accumulation (compare with the layers-16 run of the same size).
     todo+=("layers-16-$size-compute-fp16|builtin:layers:16|$size|--modes abuffer,blend-sorted,f2b,dual,wboit,floor --set abuffer.compute_resolve=1 --set precision=16")
@@ -259,8 +322,17 @@ for t in "${todo[@]}"; do
     i=$((i + 1))
     IFS='|' read -r name scene size extra <<<"$t"
     bench "$name" "$scene" "$size" "$i" "${#todo[@]}" "${extra:-}"
+    # The probe on the same stack (a plain layers bench only), wall clock with glFinish.
+    if [[ -n $probe && $name =~ ^layers-([0-9]+)-([0-9]+)x([0-9]+)$ ]]; then
+        timeout --kill-after=10 "$limit" "$probe" "${BASH_REMATCH[2]}" "${BASH_REMATCH[3]}" "${BASH_REMATCH[1]}" 0 0 \
+            "$frames" >"$out/runs/$name.probe" 2>&1 || note "probe for $name failed (exit $?)"
+        write_readme
+    fi
 done
 
 write_readme
+if [[ -n $tarball ]]; then
+    tar czf "$tarball" -C "$(dirname "$out")" "$(basename "$out")" && note "packed into $tarball"
+fi
 note "done: $failures failure(s); summary in $out/README.md"
 ((failures == 0))
