@@ -132,6 +132,22 @@ double marginalDrawMs(gl::GpuTimer& timer, const Clear& clear, const Draw& draw)
     return std::max(0.0, (fastestPassMs(timer, clear, draw, kMarginalDraws) - one) / double(kMarginalDraws - 1));
 }
 
+// One opaque object of `mesh` with a factor-only material, on the GPU: the marginal draws are
+// timed through GpuScene::draw, so a fixed cost is what one more object costs a frame (its
+// per-object uniforms, its vertex array; for a stand-in the switch to the pass's stand-in variant
+// and back, the variant's uniforms and the atlas), not one more bare draw call. Timed bare, a
+// stand-in measured 1e-5 ms on an NVIDIA H100 while the frame's stand-ins cost at least 0.4 us
+// each, and auto chose impostors that were slower than the geometry (docs/gpu-h100.md).
+GpuScene oneObjectScene(Mesh mesh) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    Node node;
+    node.meshes = {scene.addMesh(std::move(mesh))};
+    node.materialOverride = 0;
+    scene.addNode(std::move(node));
+    return GpuScene(std::move(scene));
+}
+
 // Least squares for ms = c0 + c1 x1 + c2 x2 (x in millions) through the normal equations; a
 // term left out gets a unit diagonal so the system stays solvable and its slope is 0.
 glm::dvec3 fit(const std::vector<glm::dvec3>& x, const std::vector<double>& ms, bool use1, bool use2) {
@@ -193,8 +209,8 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
 
     // ---- geometry: ms = fixed + per triangle + per covered pixel ----
     {
-        gl::Program program =
-            gl::buildProgram({"common/scene.vert.glsl", "lod/calibrate_mesh.frag.glsl"}, {}, sceneFragmentWrap());
+        const SceneProgram scene = buildSceneProgram("lod/calibrate_mesh.frag.glsl");
+        const gl::Program& program = scene.program;
         glUseProgram(program.id());
         // The blob (radius about 1) fills the square view from 2.6 away at 50 degrees.
         Camera camera;
@@ -232,7 +248,12 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             p.pixels = double(passed);
             p.viewport = side;
             p.ms = timeDraws(timer, [&] { clear(side); }, draw);
-            if (&g == &kGeometryCases[0]) coarseMarginalMs = marginalDrawMs(timer, [&] { clear(side); }, draw);
+            // One more object of this mesh, drawn as the frame draws it.
+            if (&g == &kGeometryCases[0]) {
+                const GpuScene one = oneObjectScene(mesh);
+                coarseMarginalMs = marginalDrawMs(timer, [&] { clear(side); }, [&] { one.draw(scene, 0); });
+                glBindVertexArray(gpu.vertexArray.id());
+            }
             points.push_back(p);
         }
         glDisable(GL_CULL_FACE);
@@ -304,15 +325,26 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         }
         const glm::dvec3 c = fitNonNegative(x, ms, false);
         calibration.model.impostorMsPerMegapixel = c.y;
-        // The fixed cost: one slice quad's marginal draw at the tiny viewport, less its pixels.
+        // The fixed cost: one slice quad's marginal draw at the tiny viewport, less its pixels,
+        // drawn as the frame draws a stand-in (GpuScene::drawStandIn): from a pass's program, its
+        // stand-in variant with the pass's uniforms copied over, the object's and the impostor's
+        // uniforms, the atlas bound, a switch to the variant and back.
         {
+            const SceneProgram pass = buildSceneProgram("common/opaque.frag.glsl");
+            glProgramUniformMatrix4fv(pass.id(), pass.viewProj, 1, GL_FALSE, &identity[0][0]);
+            glUseProgram(pass.id());
             GpuSlices stack = makeSlices(1);
-            glBindVertexArray(stack.vertexArray.id());
-            glProgramUniform1i(program.id(), slicesAt, 1);
+            StandInDraw standIn;
+            standIn.vertexArray = stack.vertexArray.id();
+            standIn.atlas = atlas.id();
+            standIn.slices = 1;
+            standIn.overlap = 0.5f;
+            standIn.first = {0};
+            standIn.count = {stack.vertexCount};
+            const GpuScene one = oneObjectScene(makeBumpyBlob(kGeometryCases[0].segments));
             constexpr int side = 8;
-            const double marginal = marginalDrawMs(timer, [&] { clear(side); }, [&] {
-                glDrawArrays(GL_TRIANGLES, 0, stack.vertexCount);
-            });
+            const double marginal =
+                marginalDrawMs(timer, [&] { clear(side); }, [&] { one.draw(pass, 0, &standIn); });
             calibration.model.impostorFixedMs = std::max(0.0, marginal - c.y * impostorLayerPixels(double(side), 1) * 1e-6);
         }
         glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
