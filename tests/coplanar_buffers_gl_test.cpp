@@ -218,16 +218,16 @@ TEST_CASE("bytes follow the formulas at precision 32") {
     // K - 1 entries of 20 B beside the anchor, the FAB counter (4),
     // two counters (8) and the total counter (4).
     const std::uint64_t f2bTargets = 16 + 32 + 16;
-    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-fab", {"capacity=3"})).result.stats.bytes ==
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-fab", {"capacity=3", "precision=32"})).result.stats.bytes ==
           pixels * (f2bTargets + 2 * 20 + 4) + 8 + 4);
-    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-kb", {"capacity=3"})).result.stats.bytes ==
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-kb", {"capacity=3", "precision=32"})).result.stats.bytes ==
           pixels * (f2bTargets + 2 * 20) + 8 + 4);
     // Two RG32F ranges and two RGBA32F accumulations (48), both sides' entries and counters.
-    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("dual-fab", {"capacity=2"})).result.stats.bytes ==
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("dual-fab", {"capacity=2", "precision=32"})).result.stats.bytes ==
           pixels * (48 + 2 * (2 * 20 + 4)) + 8);
     // f2b-ll: nothing coincides, so the pool keeps its first size, one node (24 B) a pixel, plus
     // heads.
-    CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b-ll").result.stats.bytes ==
+    CHECK(test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b-ll", {"precision=32"})).result.stats.bytes ==
           pixels * (f2bTargets + 24 + 4) + 8 + 4);
 }
 
