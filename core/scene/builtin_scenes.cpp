@@ -65,6 +65,29 @@ int parseCount(const std::string& spec, const std::string& text, int fallback, i
     return value;
 }
 
+// "N[:option]" of a scene that takes a count and one of `options`: the count (`fallback` when
+// empty) and the option ("" when none). Names the allowed options when another is given.
+struct CountAndOption {
+    int count = 0;
+    std::string option;
+};
+CountAndOption parseCountAndOption(const std::string& spec, const std::string& name, const std::string& arg,
+                                   int fallback, int lo, int hi, const std::vector<std::string>& options) {
+    const auto second = arg.find(':');
+    CountAndOption out;
+    out.option = second == std::string::npos ? "" : arg.substr(second + 1);
+    if (second != std::string::npos && std::find(options.begin(), options.end(), out.option) == options.end()) {
+        std::string list;
+        for (std::size_t i = 0; i < options.size(); ++i)
+            list += (i == 0 ? "" : i + 1 == options.size() ? " and " : ", ") + ("'" + options[i] + "'");
+        throw std::invalid_argument("builtin:" + spec + (options.size() == 1 ? ": the only option of " + name + " is "
+                                                                              : ": the options of " + name + " are ") +
+                                    list);
+    }
+    out.count = parseCount(spec, arg.substr(0, second), fallback, lo, hi);
+    return out;
+}
+
 // Full-view quads: at distance d a quad of half-size 2d covers a 50-degree view up to 4:1 aspect.
 constexpr float kFirstLayer = 1.0f;
 constexpr float kLayerSpacing = 0.25f;
@@ -564,11 +587,7 @@ Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
     std::string name = spec.substr(0, colon);
     std::string arg = colon == std::string::npos ? "" : spec.substr(colon + 1);
     if (name == "layers") {
-        auto second = arg.find(':');
-        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
-        if (second != std::string::npos && option != "textured" && option != "lit" && option != "glass")
-            throw std::invalid_argument("builtin:" + spec + ": the options of layers are 'textured', 'lit' and 'glass'");
-        const int count = parseCount(spec, arg.substr(0, second), 8, 1, 4096);
+        const auto [count, option] = parseCountAndOption(spec, name, arg, 8, 1, 4096, {"textured", "lit", "glass"});
         if (option == "lit" || option == "glass") return makeLitLayersScene(count, option == "glass");
         return makeLayersScene(count, 0.5f, option == "textured");
     }
@@ -588,18 +607,12 @@ Scene makeBuiltinSceneWithoutOptions(const std::string& spec) {
     if (name == "volumes" && arg.empty()) return makeVolumesScene();
     if (name == "slabs") return makeSlabsScene(parseCount(spec, arg, 8, 1, 2048));
     if (name == "field") {
-        auto second = arg.find(':');
-        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
-        if (second != std::string::npos && option != "transparent")
-            throw std::invalid_argument("builtin:" + spec + ": the only option of field is 'transparent'");
-        return makeFieldScene(parseCount(spec, arg.substr(0, second), 100, 1, kFieldMaxInstances), option == "transparent");
+        const auto [count, option] = parseCountAndOption(spec, name, arg, 100, 1, kFieldMaxInstances, {"transparent"});
+        return makeFieldScene(count, option == "transparent");
     }
     if (name == "orchard") {
-        auto second = arg.find(':');
-        std::string option = second == std::string::npos ? "" : arg.substr(second + 1);
-        if (second != std::string::npos && option != "glass")
-            throw std::invalid_argument("builtin:" + spec + ": the only option of orchard is 'glass'");
-        return makeOrchardScene(parseCount(spec, arg.substr(0, second), 1000, 1, kOrchardMaxInstances), option == "glass");
+        const auto [count, option] = parseCountAndOption(spec, name, arg, 1000, 1, kOrchardMaxInstances, {"glass"});
+        return makeOrchardScene(count, option == "glass");
     }
     if (name == "default" && arg.empty()) return makeDefaultScene();
     std::string known;

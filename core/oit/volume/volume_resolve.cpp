@@ -80,11 +80,15 @@ void VolumeResolve::bind(const FrameContext& frame, GLuint program) const {
 GLuint VolumeResolve::colorFramebuffer(const FrameContext& frame) {
     // Attached every frame: a new target may have the name of a deleted one, so comparing
     // names cannot tell whether the attachment is still the frame's.
-    if (!colorFramebuffer_) colorFramebuffer_ = gl::Framebuffer::create();
+    const bool created = !colorFramebuffer_;
+    if (created) colorFramebuffer_ = gl::Framebuffer::create();
     glNamedFramebufferTexture(colorFramebuffer_.id(), GL_COLOR_ATTACHMENT0, frame.targets.outputColor(), 0);
-    const GLenum status = glCheckNamedFramebufferStatus(colorFramebuffer_.id(), GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error("volume resolve framebuffer incomplete (status " + std::to_string(status) + ")");
+    // The output is always RGBA32F: completeness checked once, not every frame.
+    if (created) {
+        const GLenum status = glCheckNamedFramebufferStatus(colorFramebuffer_.id(), GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            throw std::runtime_error("volume resolve framebuffer incomplete (status " + std::to_string(status) + ")");
+    }
     return colorFramebuffer_.id();
 }
 
