@@ -201,7 +201,34 @@ ProgramBuildStats programBuildStats() {
     return cache.stats;
 }
 
+namespace {
+
+// STRATA_DEBUG_FINISH_BUILDS=1: glFinish after every program build, loaded or compiled. A
+// diagnostic for drivers that finish a link asynchronously (docs/gpu-h100.md, group 2: an object
+// drawn by a program built inside the frame goes missing on NVIDIA); it costs a stall per build.
+void finishIfDebugging() {
+    static const bool finish = [] {
+        const char* env = std::getenv("STRATA_DEBUG_FINISH_BUILDS");
+        return env && std::string(env) == "1";
+    }();
+    if (finish) glFinish();
+}
+
+Program buildProgramUnsynchronized(const std::vector<std::string>& stageFiles, const Defines& defines,
+                                   const StageWrap& fragmentWrap);
+
+}  // namespace
+
 Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& defines, const StageWrap& fragmentWrap) {
+    Program program = buildProgramUnsynchronized(stageFiles, defines, fragmentWrap);
+    finishIfDebugging();
+    return program;
+}
+
+namespace {
+
+Program buildProgramUnsynchronized(const std::vector<std::string>& stageFiles, const Defines& defines,
+                                   const StageWrap& fragmentWrap) {
     const auto started = std::chrono::steady_clock::now();
     fs::path root = shaderRoot();
     struct Stage {
@@ -262,5 +289,7 @@ Program buildProgram(const std::vector<std::string>& stageFiles, const Defines& 
     storeProgramBinary(key, program.id());
     return program;
 }
+
+}  // namespace
 
 }  // namespace strata::gl

@@ -1,5 +1,7 @@
 #include "render/gpu_scene.hpp"
 
+#include <cstdlib>
+
 #include "common/bindings.h"
 #include "scene/lights.hpp"
 #include "scene/texture_sampling.hpp"
@@ -7,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -60,6 +63,17 @@ gl::Texture uploadImage(const TextureImage& image, bool srgb) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glGenerateTextureMipmap(t.id());
     return t;
+}
+
+// STRATA_DEBUG_FINISH_DRAWS=1: glFinish after every object's draw. A diagnostic for a GPU that
+// loses objects now and then (docs/gpu-h100.md, group 2): if the loss goes, it is a hazard
+// between draws; it costs a stall per object.
+void finishIfDebugging() {
+    static const bool finish = [] {
+        const char* env = std::getenv("STRATA_DEBUG_FINISH_DRAWS");
+        return env && std::string(env) == "1";
+    }();
+    if (finish) glFinish();
 }
 
 // common/lighting.glsl's uEye for a view-projection: (eye, 1) for a perspective camera,
@@ -358,6 +372,7 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
     if (features) glUseProgram(drawing.id());
     glBindVertexArray(mesh.vertexArray.id());
     glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    finishIfDebugging();
     if (features) glUseProgram(p.id());  // the pass goes on with its own program bound
 }
 

@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# A lent GPU machine's diagnostic run, sized for one call of a 15-minute lease (docs/gpu-h100.md):
+#  1. the whole GL suite in four shards run side by side (each its own process: NVIDIA compiles
+#     programs on the CPU, and one process did not finish the suite in 220 s on an H100);
+#  2. the tests that lost an object in one render of many (docs/gpu-h100.md, group 2), repeated
+#     under driver and build settings that each remove one suspect: NVIDIA's threaded dispatch
+#     (__GL_THREADED_OPTIMIZATIONS=0), an asynchronous link (STRATA_DEBUG_FINISH_BUILDS=1) and the
+#     program binary cache (STRATA_PROGRAM_CACHE=0);
+#  3. f2b, f2b2 and dual at 1280x720 with object skipping on and off and both precisions, the
+#     naive probe beside them (issue 25: why f2b is slower than the probe on a GPU);
+#  4. builtin:orchard:10000 with --lod geometry and auto (does the calibration choose right).
+# Everything lands in OUT (default gpu-diag); the summary is OUT/README.md, rewritten after each
+# step so a run cut short keeps what it did.
+#
+# usage: scripts/gpu_diag.sh [--bundle DIR] [--tar FILE] [--quick] [OUT]
+#   --bundle DIR  made by scripts/gpu_pack.sh (default .gpu)
+#   --tar FILE    pack OUT into FILE (.tgz) at the end
+#   --quick       small sizes and short limits, to try the script here on llvmpipe
+set -uo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bundle=$root/.gpu
+out=gpu-diag
+tarball=""
+quick=0
+while [[ $# -gt 0 ]]; do
+    case $1 in
+        --bundle) bundle=$2; shift 2 ;;
+        --tar) tarball=$2; shift 2 ;;
+        --quick) quick=1; shift ;;
+        -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+        -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+        *) out=$1; shift ;;
+    esac
+done
+[[ -x $bundle/strata && -x $bundle/strata_gl_tests ]] ||
+    { echo "gpu_diag.sh: $bundle holds no strata or strata_gl_tests (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
+bundle=$(realpath "$bundle")
+rm -rf "$out"
+mkdir -p "$out/images" || exit 1
+out=$(realpath "$out")
+cd "$root" || exit 1
+
+export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders
+export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless} STRATA_SOURCE_DIR=$root STRATA_GL_STATS=1
+[[ -d $bundle/scenes-data ]] && export STRATA_SHARED_SCENES_DIR=$bundle/scenes-data
+for v in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
+    [[ -z ${__EGL_VENDOR_LIBRARY_FILENAMES-} && -e $v ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$v
+done
+tests=$bundle/strata_gl_tests
+strata=$bundle/strata
+if ((quick)); then
+    shard_limit=300; repeat_limit=200; size=256x256; orchard=builtin:orchard:100
+else
+    shard_limit=200; repeat_limit=120; size=1280x720; orchard=builtin:orchard:10000
+fi
+summary=()
+readme() {
+    {
+        echo "# Strata GPU diagnostic run"
+        echo
+        echo "- $(date -u +%FT%TZ) on $(uname -n); bundle \`$bundle\`"
+        nvidia-smi --query-gpu=name,driver_version --format=csv,noheader 2>/dev/null | sed 's/^/- GPU: /'
+        echo
+        printf '%s\n' "${summary[@]}"
+    } >"$out/README.md"
+}
+# The doctest totals line of a test log, or what ended it.
+tally() {  # log status
+    local line
+    line=$(grep -E '^\[doctest\] test cases:' "$1" | tail -1)
+    [[ $2 == 124 || $2 == 137 ]] && line="TIMED OUT; ${line:-no totals}"
+    echo "${line:-exit $2, no totals}"
+}
+
+# "N x test case" for every test case of a log with failed checks.
+failing() {
+    awk '/^TEST CASE:/ { sub(/^TEST CASE: */, ""); tc = $0 } /ERROR: / { n[tc]++ }
+         END { for (t in n) printf "%s%d x %s", (k++ ? "; " : ""), n[t], t; if (!k) printf "none" }' "$1"
+}
+
+# 1. The GL suite, four shards side by side (source-file patterns; every *_gl_test.cpp is in one).
+shards=(
+    '*exact_techniques*,*zoom_gl*,*frame_size*,*gpu_interface*,*shader_program*,*screendoor*'
+    '*coplanar_buffers*,*coplanar_peeling*,*coplanarity_gl*,*volume_gl*,*deflection*,*error_map*'
+    '*material_gl*,*material_pbr*,*material_texture*,*transmission*,*gltf_sample*,*precision*,*approximate*'
+    '*lod_*,*buffers_gl*,*abuffer_gl*,*peeling_gl*,*bench_gl*,*frustum*'
+)
+missing=$(cd "$root/tests" && for f in *_gl_test.cpp; do
+    hit=0
+    for s in "${shards[@]}"; do
+        IFS=, read -r -a pats <<<"$s"
+        for p in "${pats[@]}"; do [[ $f == $p ]] && hit=1; done
+    done
+    ((hit)) || echo "$f"
+done)
+[[ -n $missing ]] && summary+=("- WARNING: test files in no shard: $missing")
+summary+=("## 1. The GL suite, four shards side by side" "")
+start=$SECONDS
+for i in "${!shards[@]}"; do
+    (XDG_CACHE_HOME=/tmp/gpu-diag-xdg-$i STRATA_TEST_DUMP=$out/images/shard$i \
+        timeout --kill-after=10 "$shard_limit" "$tests" -sf="${shards[$i]}" --duration=true \
+        >"$out/tests-shard$i.txt" 2>&1
+     echo $? >"$out/tests-shard$i.rc") &
+done
+wait
+for i in "${!shards[@]}"; do
+    summary+=("- shard $i (\`${shards[$i]}\`): $(tally "$out/tests-shard$i.txt" "$(cat "$out/tests-shard$i.rc")")")
+    summary+=("  - failed checks per test case: $(failing "$out/tests-shard$i.txt")")
+done
+summary+=("- wall $((SECONDS - start)) s" "")
+readme
+
+# 2. Group 2 under each suspect removed, side by side.
+summary+=("## 2. One object missing in one render of many: the suspects removed one at a time" "")
+group2='reversing*,abuffer?s compute*,skipping*,*MASK*,*COLOR_0*,*emissive texture*,*TEXCOORD_1*,*transmission 0*'
+configs=(base threaded-off finish-builds no-cache)
+start=$SECONDS
+for c in "${configs[@]}"; do
+    (env_args=()
+     case $c in
+         threaded-off) env_args=(__GL_THREADED_OPTIMIZATIONS=0) ;;
+         finish-builds) env_args=(STRATA_DEBUG_FINISH_BUILDS=1) ;;
+         no-cache) env_args=(STRATA_PROGRAM_CACHE=0) ;;
+     esac
+     env "${env_args[@]}" XDG_CACHE_HOME=/tmp/gpu-diag-xdg-$c STRATA_TEST_DUMP=$out/images/$c \
+         timeout --kill-after=10 "$repeat_limit" "$tests" -tc="$group2" --duration=true >"$out/group2-$c.txt" 2>&1
+     echo $? >"$out/group2-$c.rc") &
+done
+wait
+for c in "${configs[@]}"; do
+    summary+=("- $c: $(tally "$out/group2-$c.txt" "$(cat "$out/group2-$c.rc")")")
+    summary+=("  - failed checks per test case: $(failing "$out/group2-$c.txt")")
+done
+summary+=("- wall $((SECONDS - start)) s" "")
+readme
+
+# 3. The peeling techniques against the probe, one process at a time (timings).
+summary+=("## 3. Peeling at $size: object skipping and precision against the naive probe" "")
+summary+=("| layers | settings | floor | f2b | f2b2 | dual | probe F2B (wall) |" "|---:|---|---:|---:|---:|---:|---:|")
+readme
+w=${size%x*}
+h=${size#*x}
+for layers in 16 32; do
+    probe_ms=-
+    if [[ -x $bundle/oitprobe ]]; then
+        timeout 60 "$bundle/oitprobe" "$w" "$h" "$layers" 0 0 10 >"$out/probe-$layers.txt" 2>&1
+        probe_ms=$(awk '/^F2B peel:/ {print $3}' "$out/probe-$layers.txt")
+    fi
+    for setting in "precision=32 skip_peeled=1" "precision=32 skip_peeled=0" \
+                   "precision=16 skip_peeled=1" "precision=16 skip_peeled=0"; do
+        name="layers-$layers-${setting// /-}"
+        set_args=()
+        for s in $setting; do set_args+=(--set "$s"); done
+        timeout --kill-after=10 90 "$strata" bench "builtin:layers:$layers" --lod geometry --size "$size" \
+            --modes floor,f2b,f2b2,dual "${set_args[@]}" --json "$out/$name.json" >"$out/$name.txt" 2>&1
+        row=$(python3 - "$out/$name.json" <<'EOF'
+import json, sys
+try:
+    modes = {m["id"]: m for m in json.load(open(sys.argv[1]))["modes"]}
+    print(" | ".join("%.2f" % modes[k]["ms_median"] if k in modes else "-" for k in ("floor", "f2b", "f2b2", "dual")))
+except Exception as e:
+    print("failed: %s" % e)
+EOF
+)
+        summary+=("| $layers | $setting | $row | $probe_ms |")
+        readme
+    done
+done
+summary+=("")
+
+# 4. LOD: does --lod auto choose right on this device.
+summary+=("## 4. $orchard at $size, blend-sorted" "")
+for lod in geometry auto; do
+    timeout --kill-after=10 120 "$strata" bench "$orchard" --lod "$lod" --size "$size" --modes blend-sorted \
+        --json "$out/orchard-$lod.json" >"$out/orchard-$lod.txt" 2>&1
+    summary+=("- $lod: $(python3 -c "
+import json, sys
+d = json.load(open('$out/orchard-$lod.json')); m = d['modes'][0]
+print('frame %.2f ms GPU, CPU %.2f ms, %s objects as impostors, PSNR %s; model %s' % (m['frame_ms_median'],
+      m['cpu_ms_median'], m['impostor_objects'], m['psnr'], d['lod'].get('model')))
+" 2>&1 | tail -1)")
+    readme
+done
+echo "gpu_diag.sh: done; summary in $out/README.md"
+cat "$out/README.md"
+if [[ -n $tarball ]]; then tar -czf "$tarball" -C "$(dirname "$out")" "$(basename "$out")"; fi
