@@ -21,15 +21,30 @@ run() {  # name [VAR=value ...]
     local name=$1
     shift
     env "$@" XDG_CACHE_HOME=/tmp/xdg-$name STRATA_TEST_DUMP=$out/images-$name \
-        timeout --kill-after=10 100 "$bundle/strata_gl_tests" --no-skip -tc='diagnostic*' >"$out/$name.txt" 2>&1
+        timeout --kill-after=10 "${LIMIT:-100}" "$bundle/strata_gl_tests" --no-skip -tc='diagnostic*' >"$out/$name.txt" 2>&1
 }
+if [[ ${KNOBS-} == 1 ]]; then
+    # KNOBS=1: the quick diagnostic (abuffer, fresh renderers) once per driver or debug setting.
+    export STRATA_DIAG_QUICK=1
+    run base
+    run check-uniforms STRATA_DEBUG_CHECK_UNIFORMS=1
+    run frame-uniforms-per-draw STRATA_DEBUG_FRAME_UNIFORMS_PER_DRAW=1
+    run no-debug-context STRATA_DEBUG_NO_DEBUG_CONTEXT=1
+    run finish-builds-and-draws STRATA_DEBUG_FINISH_BUILDS=1 STRATA_DEBUG_FINISH_DRAWS=1
+    run no-program-cache STRATA_PROGRAM_CACHE=0
+    run no-threads-no-debug __GL_THREADED_OPTIMIZATIONS=0 STRATA_DEBUG_NO_DEBUG_CONTEXT=1
+    run base-again
+else
 run alone
 for i in 1 2 3 4; do run "load$i" & done
 wait
 for i in 1 2 3 4; do run "finish$i" STRATA_DEBUG_FINISH_DRAWS=1 & done
 wait
+fi
 for f in "$out"/*.txt; do
     echo "== $(basename "$f" .txt): $(grep -c '^diagnostic .*differs in [1-9]\|opaque colour in [1-9]\|opaque depth in [1-9]' "$f") variants with a differing render"
     grep '^diagnostic ' "$f" | grep -v 'differs in 0, opaque colour in 0, opaque depth in 0$' | cut -c1-400
     grep -E '^\[doctest\] test cases' "$f"
+    grep -c '^\[strata debug\]' "$f" | sed 's/^/  debug lines: /'
+    grep -m5 '^\[strata debug\]' "$f"
 done

@@ -14,6 +14,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 
 using namespace strata;
@@ -48,16 +49,22 @@ TEST_CASE("diagnostic: one frame rendered many times, which renders differ and i
     test::glContext();
     const int repeats = 40;
     const glm::ivec2 size(40, 30);
+    // STRATA_DIAG_QUICK=1: abuffer with fresh renderers only, for trying driver settings in turn.
+    const char* quickEnv = std::getenv("STRATA_DIAG_QUICK");
+    const bool quick = quickEnv && std::string(quickEnv) == "1";
+    const std::vector<std::string> ids = quick ? std::vector<std::string>{"abuffer"}
+                                               : std::vector<std::string>{"abuffer", "ll", "f2b"};
     for (const std::string spec : {"default", "cubes:separated"}) {
         GpuScene scene(makeBuiltinScene(spec));
         const Camera camera = defaultCamera(scene.scene(), scene.objects());
-        for (const std::string id : {"abuffer", "ll", "f2b"}) {
+        for (const std::string& id : ids) {
             struct Variant {
                 const char* name;
                 bool reuse, cull, timers;
             };
             for (const Variant v : {Variant{"fresh renderer", false, true, true}, Variant{"one renderer", true, true, true},
                                     Variant{"culling off", false, false, true}, Variant{"timers off", false, true, false}}) {
+                if (quick && std::string(v.name) != "fresh renderer") continue;
                 FrameOptions options;
                 options.cull = v.cull;
                 options.timePasses = v.timers;

@@ -5,7 +5,9 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace strata::gl {
@@ -55,10 +57,14 @@ HeadlessContext::HeadlessContext() {
     if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount == 0)
         config = nullptr;  // EGL_KHR_no_config_context: surfaceless needs no config
 
+    // STRATA_DEBUG_NO_DEBUG_CONTEXT=1: a context without the debug flag (docs/gpu-h100.md's
+    // group 2 experiments; errors are then seen through glGetError only).
+    const char* noDebug = std::getenv("STRATA_DEBUG_NO_DEBUG_CONTEXT");
+    const EGLint debugFlag = noDebug && std::string(noDebug) == "1" ? EGL_FALSE : EGL_TRUE;
     const EGLint contextAttributes[] = {
         EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-        EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+        EGL_CONTEXT_OPENGL_DEBUG, debugFlag, EGL_NONE};
     EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
     if (context == EGL_NO_CONTEXT)
         throw std::runtime_error(eglErrorText("OpenGL 4.5 core context creation"));

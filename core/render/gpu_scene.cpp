@@ -9,9 +9,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace strata {
 namespace {
@@ -270,9 +272,44 @@ void GpuScene::uploadTextures() {
     }
 }
 
+namespace {
+
+bool debugEnv(const char* name) {
+    const char* env = std::getenv(name);
+    return env && std::string(env) == "1";
+}
+
+// STRATA_DEBUG_CHECK_UNIFORMS=1: reads back what was just set (docs/gpu-h100.md, group 2).
+bool checkingUniforms() {
+    static const bool on = debugEnv("STRATA_DEBUG_CHECK_UNIFORMS");
+    return on;
+}
+
+// STRATA_DEBUG_FRAME_UNIFORMS_PER_DRAW=1: the frame's uniforms set again on the drawing program
+// before every draw, rather than once per pass and copied onto variants.
+bool frameUniformsPerDraw() {
+    static const bool on = debugEnv("STRATA_DEBUG_FRAME_UNIFORMS_PER_DRAW");
+    return on;
+}
+
+void checkUniform(GLuint program, GLint location, const float* want, int count, const char* what, int object) {
+    if (location < 0) return;
+    float got[16] = {};
+    glGetUniformfv(program, location, got);
+    if (std::memcmp(got, want, std::size_t(count) * sizeof(float)) == 0) return;
+    static int reported = 0;
+    if (reported++ < 40)
+        std::fprintf(stderr, "[strata debug] %s on program %u (object %d) reads back %g %g %g %g, set %g %g %g %g\n", what,
+                     program, object, got[0], got[1], got[2], got[3], want[0], want[1], want[2], want[3]);
+}
+
+}  // namespace
+
 void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProjection) const {
     glProgramUniformMatrix4fv(p.id(), p.viewProj, 1, GL_FALSE, glm::value_ptr(viewProjection));
     setViewLightUniforms(p.id(), p.lightDir, p.eye, viewProjection);
+    debugViewProjection_ = viewProjection;
+    if (checkingUniforms()) checkUniform(p.id(), p.viewProj, glm::value_ptr(viewProjection), 16, "uViewProj (pass)", -1);
 }
 
 void GpuScene::setViewLightUniforms(GLuint program, GLint lightDir, GLint eye,
@@ -368,6 +405,17 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
     const unsigned features = features_[std::size_t(objectIndex)];
     const SceneProgram& drawing = p.variant(features);
     setObjectUniforms(drawing, objectIndex);
+    if (frameUniformsPerDraw()) {
+        glProgramUniformMatrix4fv(drawing.id(), drawing.viewProj, 1, GL_FALSE, glm::value_ptr(debugViewProjection_));
+        setViewLightUniforms(drawing.id(), drawing.lightDir, drawing.eye, debugViewProjection_);
+    }
+    if (checkingUniforms()) {
+        checkUniform(drawing.id(), drawing.viewProj, glm::value_ptr(debugViewProjection_), 16, "uViewProj", objectIndex);
+        checkUniform(drawing.id(), drawing.model, glm::value_ptr(objects_[std::size_t(objectIndex)].world), 16, "uModel",
+                     objectIndex);
+        const glm::vec4 eye = eyeUniform(debugViewProjection_);
+        checkUniform(drawing.id(), drawing.eye, glm::value_ptr(eye), 4, "uEye", objectIndex);
+    }
     bindMaterialTextures(objectIndex);
     if (features) glUseProgram(drawing.id());
     glBindVertexArray(mesh.vertexArray.id());

@@ -112,6 +112,8 @@ public:
     BaseColorDetail baseColorDetail(int objectIndex) const;
 
 private:
+    // The last pass's view-projection, for the STRATA_DEBUG_* experiments in gpu_scene.cpp.
+    mutable glm::mat4 debugViewProjection_{1.0f};
     void uploadTextures();
     void setObjectUniforms(const SceneProgram& program, int objectIndex) const;
     void drawStandIn(const SceneProgram& program, int objectIndex, const StandInDraw& standIn) const;
