@@ -96,40 +96,52 @@ gl::Texture makeAtlas() {
     return atlas;
 }
 
-// The fastest of kTimedPasses passes of `draws` draws (each cleared first), whole-pass ms.
+// The fastest of kTimedPasses passes of `draws` draws (each cleared first), whole-pass ms: on
+// the GPU (timer query) and on the CPU that submits them (wall clock around the draw calls).
+struct PassMs {
+    double gpu = 1e300, cpu = 1e300;
+};
 template <class Clear, class Draw>
-double fastestPassMs(gl::GpuTimer& timer, const Clear& clear, const Draw& draw, int draws) {
-    double best = 1e300;
+PassMs fastestPass(gl::GpuTimer& timer, const Clear& clear, const Draw& draw, int draws) {
+    PassMs best;
     for (int pass = 0; pass < kTimedPasses; ++pass) {
         clear();
         timer.begin("lod calibration");
+        const auto started = std::chrono::steady_clock::now();
         for (int i = 0; i < draws; ++i) draw();
+        best.cpu = std::min(best.cpu, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count());
         timer.end();
-        best = std::min(best, timer.resolve().front().gpuMs);
+        best.gpu = std::min(best.gpu, timer.resolve().front().gpuMs);
     }
     return best;
 }
 
-// Per draw, from passes of kDrawsPerPass draws, after one warm-up draw.
+// Per draw, from passes of kDrawsPerPass draws, after one warm-up draw: GPU time (the pixel
+// slopes; a few large draws keep the GPU, not the CPU, busy).
 template <class Clear, class Draw>
 double timeDraws(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
     clear();
     draw();
-    return fastestPassMs(timer, clear, draw, kDrawsPerPass) / double(kDrawsPerPass);
+    return fastestPass(timer, clear, draw, kDrawsPerPass).gpu / double(kDrawsPerPass);
 }
 
-// The time one more draw adds to a pass: a pass of kMarginalDraws draws against a pass of one.
+// The time one more draw adds to a frame: a pass of kMarginalDraws draws against a pass of one.
 // What a pass costs whatever it draws (on llvmpipe a flush and a query wait, about a
 // millisecond) cancels; a fit's intercept over passes of kDrawsPerPass draws would charge each
 // object a share of it (measured: 0.96 ms "fixed" per impostor draw where a frame of 20000
 // stand-ins spent 0.02 ms each), and auto would never choose an impostor for a small object.
+// Both the GPU's and the CPU's: a frame of many small draws waits for the CPU that submits them,
+// which a GPU timer does not see (NVIDIA H200, docs/gpu-h200.md: a stand-in timed 1.8e-5 ms on
+// the GPU and cost the frame 1.8 us, all of it CPU).
 constexpr int kMarginalDraws = 64;
 template <class Clear, class Draw>
-double marginalDrawMs(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
+PassMs marginalDraw(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
     clear();
     draw();
-    const double one = fastestPassMs(timer, clear, draw, 1);
-    return std::max(0.0, (fastestPassMs(timer, clear, draw, kMarginalDraws) - one) / double(kMarginalDraws - 1));
+    const PassMs one = fastestPass(timer, clear, draw, 1);
+    const PassMs many = fastestPass(timer, clear, draw, kMarginalDraws);
+    return {std::max(0.0, (many.gpu - one.gpu) / double(kMarginalDraws - 1)),
+            std::max(0.0, (many.cpu - one.cpu) / double(kMarginalDraws - 1))};
 }
 
 // One opaque object of `mesh` with a factor-only material, on the GPU: the marginal draws are
@@ -227,7 +239,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         glDisable(GL_CULL_FACE);  // as the frame's opaque pass draws: both faces rasterised
         gl::Query samples = gl::createQuery(GL_SAMPLES_PASSED);
         std::vector<LodCalibrationPoint> points;
-        double coarseMarginalMs = 0.0;  // the time one more draw of the coarse mesh adds to a pass
+        PassMs coarseMarginal{0.0, 0.0};  // the time one more draw of the coarse mesh adds to a pass
         for (const GeometryCase& g : kGeometryCases) {
             const Mesh mesh = makeBumpyBlob(g.segments);
             GpuMesh gpu = uploadMesh(mesh);
@@ -251,7 +263,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             // One more object of this mesh, drawn as the frame draws it.
             if (&g == &kGeometryCases[0]) {
                 const GpuScene one = oneObjectScene(mesh);
-                coarseMarginalMs = marginalDrawMs(timer, [&] { clear(side); }, [&] { one.draw(scene, 0); });
+                coarseMarginal = marginalDraw(timer, [&] { clear(side); }, [&] { one.draw(scene, 0); });
                 glBindVertexArray(gpu.vertexArray.id());
             }
             points.push_back(p);
@@ -273,9 +285,11 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         calibration.model.geometryMsPerMegatriangle = c.y;
         calibration.model.geometryMsPerMegapixel = perMegapixel;
         // The fixed cost: the coarse mesh's marginal draw at the tiny viewport, less its triangles
-        // and pixels (the fit's intercept holds a share of the timed pass's own cost).
+        // and pixels (the fit's intercept holds a share of the timed pass's own cost), or what
+        // submitting it costs the CPU where that is more.
         calibration.model.geometryFixedMs =
-            std::max(0.0, coarseMarginalMs - c.y * points[0].triangles * 1e-6 - perMegapixel * points[0].pixels * 1e-6);
+            std::max({0.0, coarseMarginal.gpu - c.y * points[0].triangles * 1e-6 - perMegapixel * points[0].pixels * 1e-6,
+                      coarseMarginal.cpu});
         std::vector<double> residuals;
         for (const auto& p : points) residuals.push_back(calibration.model.geometryMs(p.triangles, p.pixels) - p.ms);
         calibration.geometryRmsResidualMs = rms(residuals);
@@ -343,9 +357,9 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             standIn.count = {stack.vertexCount};
             const GpuScene one = oneObjectScene(makeBumpyBlob(kGeometryCases[0].segments));
             constexpr int side = 8;
-            const double marginal =
-                marginalDrawMs(timer, [&] { clear(side); }, [&] { one.draw(pass, 0, &standIn); });
-            calibration.model.impostorFixedMs = std::max(0.0, marginal - c.y * impostorLayerPixels(double(side), 1) * 1e-6);
+            const PassMs marginal = marginalDraw(timer, [&] { clear(side); }, [&] { one.draw(pass, 0, &standIn); });
+            calibration.model.impostorFixedMs =
+                std::max({0.0, marginal.gpu - c.y * impostorLayerPixels(double(side), 1) * 1e-6, marginal.cpu});
         }
         glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
         for (const auto& p : calibration.points)

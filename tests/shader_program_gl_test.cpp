@@ -102,3 +102,31 @@ TEST_CASE("every shipped program compiles and links") {
     CHECK_NOTHROW(gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}));
     gl::checkGl("shipped programs");
 }
+
+TEST_CASE("a variant copies the pass's uniforms once per change, not on every draw") {
+    test::glContext();
+    // SceneProgram::variant reads every pass uniform back to copy it; it does so on the variant's
+    // first use after uniformsChanged() (GpuScene::setFrameUniforms, each pass), so a pass of many
+    // stand-ins pays the copy once.
+    const SceneProgram pass = buildSceneProgram("common/opaque.frag.glsl");
+    const unsigned features = kSceneAlphaMask | kSceneBaseColorTexture;
+    auto viewProjOf = [](const SceneProgram& p) {
+        float m[16] = {};
+        glGetUniformfv(p.id(), p.viewProj, m);
+        return m[0];
+    };
+    auto setViewProj = [&](float scale) {
+        const glm::mat4 m(scale);
+        glProgramUniformMatrix4fv(pass.id(), pass.viewProj, 1, GL_FALSE, &m[0][0]);
+    };
+    setViewProj(2.0f);
+    const SceneProgram& variant = pass.variant(features);
+    REQUIRE(variant.id() != pass.id());
+    CHECK(viewProjOf(variant) == 2.0f);
+    setViewProj(3.0f);
+    CHECK(viewProjOf(pass.variant(features)) == 2.0f);  // no change announced: not copied again
+    pass.uniformsChanged();
+    CHECK(viewProjOf(pass.variant(features)) == 3.0f);
+    CHECK(&pass.variant(features) == &variant);  // the same variant, built once
+    gl::checkGl("variant uniforms");
+}

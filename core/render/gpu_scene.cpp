@@ -306,6 +306,7 @@ void checkUniform(GLuint program, GLint location, const float* want, int count, 
 }  // namespace
 
 void GpuScene::setFrameUniforms(const SceneProgram& p, const glm::mat4& viewProjection) const {
+    p.uniformsChanged();  // a new pass: the technique may have set uniforms since the last
     glProgramUniformMatrix4fv(p.id(), p.viewProj, 1, GL_FALSE, glm::value_ptr(viewProjection));
     setViewLightUniforms(p.id(), p.lightDir, p.eye, viewProjection);
     debugViewProjection_ = viewProjection;

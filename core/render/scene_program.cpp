@@ -82,6 +82,7 @@ std::string hex(GLenum value) {
 struct SceneProgram::Variant {
     SceneProgram program;
     std::vector<UniformCopy> copies;
+    std::uint64_t copiedGeneration = ~std::uint64_t(0);  // none yet
 };
 
 gl::StageWrap sceneFragmentWrap() { return {"common/scene_prelude.glsl", "common/scene_main.glsl"}; }
@@ -147,7 +148,9 @@ const SceneProgram& SceneProgram::variant(unsigned features) const {
         }
         slot = std::move(v);
     }
-    const Variant& built = *slot;
+    Variant& built = *slot;
+    if (built.copiedGeneration == uniformGeneration_) return built.program;
+    built.copiedGeneration = uniformGeneration_;
     const GLuint from = id(), to = built.program.id();
     for (const UniformCopy& c : built.copies) {
         GLfloat f[16];

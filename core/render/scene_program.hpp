@@ -13,6 +13,7 @@
 // program itself: no texture fetch, no branch.
 #include "gl/shader_program.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -68,8 +69,15 @@ struct SceneProgram {
     GLuint id() const { return program.id(); }
 
     // The variant for `features` (SceneFeature bits) with this program's current uniform values
-    // (built on first use); `*this` for none.
+    // (built on first use); `*this` for none. The values are copied on the variant's first use
+    // after uniformsChanged(), not on every draw: a copy reads each uniform back (glGetUniform),
+    // and a frame of 30,000 stand-ins spent 1.8 us of CPU on each of them on an NVIDIA H200
+    // (docs/gpu-h200.md).
     const SceneProgram& variant(unsigned features) const;
+    // Says that uniforms were set on this program since its variants last copied them.
+    // GpuScene::setFrameUniforms calls it at the start of every pass; code that sets a uniform
+    // of the program in the middle of a pass (none does) must call it too.
+    void uniformsChanged() const { ++uniformGeneration_; }
     const SceneProgram& standInVariant() const { return variant(kSceneStandIn); }
 
     // What building the variant needs: the stages and defines this program was built from.
@@ -85,6 +93,7 @@ private:
     struct Variant;
     // Indexed by the feature bits; shared so that a copied SceneProgram keeps its variants.
     mutable std::shared_ptr<std::vector<std::shared_ptr<Variant>>> variants_;
+    mutable std::uint64_t uniformGeneration_ = 0;
 };
 
 // Every scene program's fragment stage is wrapped by common/scene_prelude.glsl and
