@@ -1,6 +1,7 @@
 // `strata bench` output against the JSON contract of DESIGN.md.
 #include "gl_test_support.hpp"
 
+#include "bench/advisor.hpp"
 #include "bench/bench.hpp"
 #include "io/interrupt.hpp"
 #include "reference/raycast.hpp"
@@ -216,4 +217,30 @@ TEST_CASE("bench stopped by a signal keeps exactly the techniques that completed
     CHECK_FALSE(whole.interrupted);
     CHECK(whole.modes.size() == 3);
     CHECK(benchToJson(whole)["interrupted"] == false);
+}
+
+TEST_CASE("advise measures each configuration against the reference and recommends an exact one by default") {
+    test::glContext();
+    // builtin:layers:4: four quads in every pixel. ll with room for two nodes a pixel overflows and
+    // drops half the layers; wboit approximates; abuffer is the reference itself.
+    GpuScene scene(makeBuiltinScene("layers:4"));
+    BenchOptions base;
+    base.size = {32, 32};
+    base.frames = 1;
+    base.warmupFrames = 0;
+    const std::vector<AdvisorCandidate> candidates = {{"abuffer", {}}, {"wboit", {}}, {"ll", {"capacity=2"}}};
+    std::vector<AdvisorPoint> points = measureCandidates(scene, candidates, base, {});
+    REQUIRE(points.size() == 3);
+    std::map<std::string, const AdvisorPoint*> byLabel;
+    for (const AdvisorPoint& p : points) byLabel[p.candidate.label()] = &p;
+    REQUIRE(byLabel.count("ll capacity=2"));
+    CHECK(byLabel["abuffer"]->rmse == 0.0);
+    CHECK(byLabel["wboit"]->rmse > 1e-3);
+    CHECK(byLabel["ll capacity=2"]->overflowed);
+    CHECK(byLabel["ll capacity=2"]->rmse > 1e-2);
+    for (const AdvisorPoint& p : points) CHECK(std::isfinite(p.frameMs));
+    markPareto(points);
+    const AdvisorPick pick = recommend(points, {});
+    REQUIRE(pick.index >= 0);
+    CHECK(points[std::size_t(pick.index)].candidate.id == "abuffer");  // the only one within 1/255
 }

@@ -91,6 +91,11 @@ expect_error "unknown technique" bench builtin:layers:2 --modes abuffer,nope --j
 # Rejected by the argument parser: the same one line and status 1 as any other bad input (CLI11
 # on its own prints two lines and exits 105, 106, 109...), named by the command.
 expect_error "strata bench: --frames: Value 0 not in range" bench builtin:layers:4 --frames 0
+# The advisor and `bench --modes auto` (bench/advisor.hpp).
+expect_error "unknown technique 'nope'" advise builtin:layers:2 --modes ll,nope --json "$work/advise.json"
+expect_error "no such file" advise "$tmp/missing.glb"
+expect_error "strata advise: --max-error: Value 2 not in range" advise builtin:layers:2 --max-error 2
+expect_error "--modes auto chooses the settings itself" bench builtin:layers:2 --modes auto --set precision=16
 expect_error "strata bench: --warmup: Value -1 not in range" bench builtin:layers:4 --warmup -1
 expect_error "strata render: --out is required" render builtin:layers:2
 expect_error "strata render: scene is required" render --out "$work/out.png"
@@ -199,6 +204,11 @@ fi
 if "$strata" bench builtin:layers:3 --size 32x32 --frames 2 --json "$work/bench.json" --csv "$work/bench.csv" \
      >"$tmp/table" 2>/dev/null && python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['modes'] and all(m['id'] for m in d['modes'])" "$work/bench.json" &&
    grep -q "abuffer" "$tmp/table" && [ "$(wc -l <"$work/bench.csv")" -ge 2 ]; then ok; else bad "bench JSON/CSV/table"; fi
+# The advisor's JSON: every configuration measured, the front marked, a recommendation with its reason.
+if "$strata" advise builtin:layers:3 --size 16x16 --frames 1 --warmup 0 --modes abuffer,wboit,ll --budget-ms 1000 \
+     --json "$work/advise.json" >"$tmp/advise" 2>/dev/null &&
+   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); c=d['configurations']; assert len(c) == 9, len(c); assert any(x['pareto'] for x in c); assert d['recommended']['reason']" "$work/advise.json" &&
+   grep -q "^recommended: " "$tmp/advise"; then ok; else bad "advise JSON/table: $(cat "$tmp/advise")"; fi
 # A report folder (bench/report_page.hpp's layout): the page, its chart and every image it shows,
 # the volumetric row against its own reference. Without gnuplot the page says so, and so does
 # stderr, and there is no chart file.
@@ -267,7 +277,7 @@ if "$strata" bench builtin:field:4 --lod geometry --size 48x32 --frames 1 --warm
    ! grep -q "baking" "$tmp/stderr"
 then ok; else bad "bench --lod geometry bakes nothing"; fi
 # A successful run leaves its outputs and nothing else.
-leftover=$(cd "$work" && find . -mindepth 1 | sort | grep -vxF -e ./a-folder -e ./fandisk.png -e ./bench.json -e ./bench.csv)
+leftover=$(cd "$work" && find . -mindepth 1 | sort | grep -vxF -e ./a-folder -e ./fandisk.png -e ./bench.json -e ./bench.csv -e ./advise.json)
 if [ -z "$leftover" ]; then ok; else bad "left in the output folder: $leftover"; fi
 "$strata" modes --settings >"$tmp/modes" 2>&1
 if grep -q "^abuffer " "$tmp/modes"; then ok; else bad "modes lists abuffer"; fi

@@ -2,6 +2,7 @@
 #include "commands.hpp"
 #include "open_scene.hpp"
 
+#include "bench/advisor.hpp"
 #include "bench/bench.hpp"
 #include "bench/report_folder.hpp"
 #include "oit/technique.hpp"
@@ -53,12 +54,15 @@ void run(const BenchArgs& a) {
         if (!out.empty()) checkWritable(out);
     BenchOptions options;
     options.sceneName = a.scene;
-    options.modes = splitModes(a.modes);
+    const bool autoMode = a.modes == "auto";
+    if (!autoMode) options.modes = splitModes(a.modes);
     options.size = parseSize(a.size);
     options.frames = a.frames;
     options.warmupFrames = a.warmup;
     // Settings are checked against every mode before the scene loads or a frame renders.
-    options.settings = resolveSettingsArgs(benchModeIds(options.modes), a.settings);
+    if (autoMode && (!a.settings.set.empty() || !a.settings.preset.empty()))
+        throw std::invalid_argument("--modes auto chooses the settings itself; drop --set and --settings");
+    options.settings = resolveSettingsArgs(autoMode ? allTechniqueIds() : benchModeIds(options.modes), a.settings);
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
     options.zoom = a.zoom.fixedZoom();
     options.zoomFilter = a.zoom.filter();
@@ -74,6 +78,24 @@ void run(const BenchArgs& a) {
     gl::HeadlessContext context;
     checkFrameSize(options.size);
     GpuScene gpu(std::move(scene));
+    if (autoMode) {
+        // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
+        // measured on this device at this size, two frames a configuration, then benched.
+        BenchOptions probe = options;
+        probe.frames = 2;
+        probe.warmupFrames = 1;
+        std::vector<AdvisorPoint> points = measureCandidates(gpu, advisorCandidates({}, true), probe, {});
+        if (points.empty()) throw Interrupted(interruptSignal());
+        markPareto(points);
+        const AdvisorPick pick = recommend(points, {});
+        const AdvisorCandidate& chosen = points[std::size_t(pick.index)].candidate;
+        std::fprintf(stderr, "--modes auto: %s (%s, of %zu configurations)\n", chosen.label().c_str(), pick.reason.c_str(),
+                     points.size());
+        options.modes = {chosen.id};
+        std::vector<SettingAssignment> assignments;
+        for (const std::string& s : chosen.assignments) assignments.push_back({chosen.id + "." + s, "--modes auto"});
+        options.settings = resolveSettings(benchModeIds(options.modes), assignments);
+    }
     // Every output (images as they are rendered, then JSON and CSV) appears only once the whole
     // run succeeded; the images folder is made last, after every input was checked.
     OutputBatch outputs;
@@ -142,7 +164,9 @@ void registerBenchCommand(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     auto* cmd = app.add_subcommand("bench", "time and measure techniques against the exact reference");
     cmd->add_option("scene", args->scene, "builtin:NAME[:ARG], a .gltf/.glb, a .json description, or a scenes/ name")->required();
-    cmd->add_option("--modes", args->modes, "all, or technique ids separated by commas")->capture_default_str();
+    cmd->add_option("--modes", args->modes,
+                    "all, technique ids separated by commas, or auto (what `strata advise` recommends on this device)")
+        ->capture_default_str();
     cmd->add_option("--size", args->size, "WxH")->capture_default_str();
     cmd->add_option("--frames", args->frames, "recorded frames per technique")->check(CLI::Range(1, 100000))->capture_default_str();
     cmd->add_option("--warmup", args->warmup, "unrecorded frames per technique")->check(CLI::Range(0, 1000))->capture_default_str();

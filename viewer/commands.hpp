@@ -11,6 +11,7 @@ namespace strata {
 void registerModesCommand(CLI::App& app);
 void registerRenderCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
+void registerAdviseCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);
 void registerDemoCommand(CLI::App& app);
 #ifdef STRATA_HAVE_TRACKING

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
     strata::registerModesCommand(app);
     strata::registerRenderCommand(app);
     strata::registerBenchCommand(app);
+    strata::registerAdviseCommand(app);
     strata::registerViewCommand(app);
     strata::registerDemoCommand(app);
 #ifdef STRATA_HAVE_TRACKING

@@ -1,0 +1,88 @@
+#pragma once
+// `strata advise`: measures the techniques on this device, each at its defaults and at the other
+// values of the settings that trade speed for accuracy (capacities, sample counts, bucket counts,
+// supersampling, precision, the overflow tail), and recommends one. The cost is the frame's GPU
+// time (opaque pass included: what a frame budget is spent on), the loss the RMSE against the
+// exact reference (linear RGB), both from `strata bench` (bench/bench.hpp).
+//
+// The rule, stated once (recommend()):
+//  - with a budget: the most accurate configuration whose frame fits it; equal errors (within
+//    1 %) go to the faster;
+//  - with an error bound: the fastest configuration within it;
+//  - with both: the most accurate of those within both, else as with the budget alone;
+//  - with neither: the fastest within kDefaultMaxRmse (1/255, what an 8-bit display shows).
+// Where nothing qualifies it says so and falls back: the fastest overall under a budget, the
+// most accurate overall under an error bound.
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace strata {
+
+// One configuration to measure: a technique and the `name=value` assignments that differ from
+// its defaults (empty: the defaults).
+struct AdvisorCandidate {
+    std::string id;
+    std::vector<std::string> assignments;
+    std::string label() const;  // "ll capacity=16", "abuffer"
+};
+
+// Every technique of `ids` (empty: the whole registry but `floor`, which draws nothing
+// transparent) at its defaults, then, with `trades`, each at the other values of its trading
+// settings. Throws std::invalid_argument for an unknown id.
+std::vector<AdvisorCandidate> advisorCandidates(const std::vector<std::string>& ids, bool trades);
+
+class GpuScene;
+struct BenchOptions;
+
+struct AdvisorPoint;
+// Measures the candidates with `strata bench`'s machinery (bench/bench.hpp): `base` gives the
+// size, frames and camera path; modes and settings are set per candidate. Every candidate at its
+// defaults runs in one bench, each other configuration in its own. A run stopped by a signal
+// returns the points measured so far. Needs a current GL context.
+std::vector<AdvisorPoint> measureCandidates(const GpuScene& scene, const std::vector<AdvisorCandidate>& candidates,
+                                            const BenchOptions& base,
+                                            const std::function<void(const std::string&)>& progress);
+
+struct AdvisorPoint {
+    AdvisorCandidate candidate;
+    double frameMs = 0.0;      // median GPU ms of the whole frame
+    double techniqueMs = 0.0;  // median GPU ms of the technique's passes
+    double rmse = 0.0, psnr = 100.0, maxAbsError = 0.0;
+    bool overflowed = false;
+    std::uint64_t bytes = 0;
+    bool pareto = false;       // no other point is as fast and as accurate, and better in one
+};
+
+struct AdvisorCriteria {
+    std::optional<double> budgetMs;
+    std::optional<double> maxRmse;
+};
+
+constexpr double kDefaultMaxRmse = 1.0 / 255.0;
+
+struct AdvisorPick {
+    int index = -1;      // into the points; -1 only for an empty list
+    std::string reason;  // one line: which rule chose it, or why it fell back
+};
+
+// Sets AdvisorPoint::pareto.
+void markPareto(std::vector<AdvisorPoint>& points);
+
+AdvisorPick recommend(const std::vector<AdvisorPoint>& points, const AdvisorCriteria& criteria);
+
+// The Pareto front first (fastest to slowest), then the rest, one row each; the pick marked.
+std::string advisorTable(const std::vector<AdvisorPoint>& points, const AdvisorPick& pick);
+
+// Frame time (x, logarithmic) against RMSE (y, logarithmic) in characters: '*' the Pareto
+// front, '.' the rest, '@' the pick; the axes' ranges underneath.
+std::string advisorPlot(const std::vector<AdvisorPoint>& points, const AdvisorPick& pick, int width = 64,
+                        int height = 16);
+
+nlohmann::json advisorToJson(const std::vector<AdvisorPoint>& points, const AdvisorPick& pick,
+                             const AdvisorCriteria& criteria);
+
+}  // namespace strata
