@@ -1,12 +1,18 @@
 // `strata view`: the interactive viewer.
 #include "commands.hpp"
 
+#include "open_scene.hpp"
 #include "oit/technique.hpp"
 #include "settings_options.hpp"
 #include "view_app.hpp"
 
+#include "bench/advisor.hpp"
+#include "bench/bench.hpp"
+#include "gl/context.hpp"
+#include "io/interrupt.hpp"
 #include "io/parse_integers.hpp"
 #include "io/printable.hpp"
+#include "render/frame_size.hpp"
 
 #include <cstdio>
 #include <stdexcept>
@@ -25,6 +31,30 @@ glm::ivec2 parseInspectPixel(const std::string& text, glm::ivec2 size) {
     return {x, y};
 }
 
+// `--mode auto`: the advisor's pick under its default bound (bench/advisor.hpp), two frames a
+// configuration at the window's size, in a headless context of its own.
+AdvisorCandidate adviseTechnique(const std::string& sceneSpec, glm::ivec2 size) {
+    Scene scene = openSceneAndWarn(sceneSpec);
+    gl::HeadlessContext context;
+    checkFrameSize(size);
+    GpuScene gpu(std::move(scene));
+    BenchOptions base;
+    base.sceneName = sceneSpec;
+    base.size = size;
+    base.frames = 2;
+    base.warmupFrames = 1;
+    const std::vector<AdvisorCandidate> candidates = advisorCandidates({}, true);
+    std::fprintf(stderr, "--mode auto: measuring %zu configurations at %dx%d\n", candidates.size(), size.x, size.y);
+    std::vector<AdvisorPoint> points = measureCandidates(gpu, candidates, base, {});
+    if (points.empty()) throw Interrupted(interruptSignal());
+    markPareto(points);
+    const AdvisorPick pick = recommend(points, {});
+    const AdvisorPoint& p = points[std::size_t(pick.index)];
+    std::fprintf(stderr, "--mode auto: %s (%s): frame %.3f ms, RMSE %.2e\n", p.candidate.label().c_str(),
+                 pick.reason.c_str(), p.frameMs, p.rmse);
+    return p.candidate;
+}
+
 }  // namespace
 
 void registerViewCommand(CLI::App& app) {
@@ -36,7 +66,10 @@ void registerViewCommand(CLI::App& app) {
     auto screenshot = std::make_shared<std::string>();
     auto* cmd = app.add_subcommand("view", "open the interactive viewer");
     cmd->add_option("scene", options->scene, "scene to open")->capture_default_str();
-    cmd->add_option("--mode", options->mode, "technique id")->capture_default_str();
+    cmd->add_option("--mode", options->mode,
+                    "technique id, or auto: what `strata advise` recommends for this scene at this size, measured "
+                    "before the window opens")
+        ->capture_default_str();
     auto view = std::make_shared<std::string>(viewName(ViewKind::Image));
     std::vector<std::string> viewNames;
     for (ViewKind v : kViewKinds) viewNames.push_back(viewName(v));
@@ -75,11 +108,18 @@ void registerViewCommand(CLI::App& app) {
     addLodOptions(cmd, options->lod);
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);
+        std::vector<SettingAssignment> chosen;
+        if (options->mode == "auto") {
+            // Measured headless on this device before the window opens (the panel can switch later).
+            const AdvisorCandidate pick = adviseTechnique(options->scene, s);
+            options->mode = pick.id;
+            for (const std::string& a : pick.assignments) chosen.push_back({pick.id + "." + a, "--mode auto"});
+        }
         if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
         if (!findTechnique(options->splitWith)) createTechnique(options->splitWith);
         if (!inspect->empty()) options->inspect = parseInspectPixel(*inspect, s);
         // Against every technique: the panel can switch to any of them.
-        options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
+        options->settings = resolveSettingsArgs(allTechniqueIds(), *settings, chosen);
         options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
         options->lod.options();     // and a bad impostor setting

@@ -17,8 +17,10 @@ struct SettingsArgs {
 
 void addSettingsOptions(CLI::App* command, SettingsArgs& args);
 
-// Resolves the options against the techniques `ids`; throws std::invalid_argument (one line).
-SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const SettingsArgs& args);
+// Resolves the options against the techniques `ids`, then `extra` (which override them);
+// throws std::invalid_argument (one line).
+SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const SettingsArgs& args,
+                                 const std::vector<SettingAssignment>& extra = {});
 
 // Every registered technique: the set a command that can switch techniques resolves against.
 std::vector<std::string> allTechniqueIds();
