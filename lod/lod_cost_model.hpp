@@ -17,7 +17,9 @@ namespace strata::lod {
 
 struct LodCostModel {
     // Geometry: fixed + per triangle (vertex and triangle setup) + per covered pixel (shading
-    // the fragments the model leaves on screen; small for a dense model).
+    // the fragments the model leaves on screen; small for a dense model). The fixed parts of both
+    // models are one more draw's cost on the GPU or on the CPU that submits it, whichever is more
+    // (lod_cost_calibration.cpp): a frame of many small draws waits for the CPU.
     double geometryFixedMs = 0.0;
     double geometryMsPerMegatriangle = 0.0;
     double geometryMsPerMegapixel = 0.0;

@@ -32,12 +32,19 @@ while [[ $# -gt 0 ]]; do
         *) out=$1; shift ;;
     esac
 done
+[[ -n $tarball && $tarball != /* ]] && tarball=$PWD/$tarball  # before the cd below
 [[ -x $bundle/strata && -x $bundle/strata_gl_tests ]] ||
     { echo "gpu_diag.sh: $bundle holds no strata or strata_gl_tests (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
 bundle=$(realpath "$bundle")
+# A report folder is replaced; anything else is left alone.
+if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) && ! -e $out/.strata-gpu-diag ]]; then
+    echo "gpu_diag.sh: $out exists and is not a gpu_diag report; give another folder" >&2
+    exit 1
+fi
 rm -rf "$out"
 mkdir -p "$out/images" || exit 1
 out=$(realpath "$out")
+touch "$out/.strata-gpu-diag"
 cd "$root" || exit 1
 
 export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders

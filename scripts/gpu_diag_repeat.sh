@@ -10,8 +10,14 @@ bundle=$root/.gpu
 out=gpu-diag-repeat
 [[ ${1-} == --bundle ]] && { bundle=$2; shift 2; }
 [[ $# -gt 0 ]] && out=$1
+[[ -x $bundle/strata_gl_tests ]] ||
+    { echo "gpu_diag_repeat.sh: $bundle holds no strata_gl_tests (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
 bundle=$(realpath "$bundle")
-rm -rf "$out" && mkdir -p "$out" && out=$(realpath "$out")
+if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) && ! -e $out/.strata-gpu-diag-repeat ]]; then
+    echo "gpu_diag_repeat.sh: $out exists and is not a gpu_diag_repeat report; give another folder" >&2
+    exit 1
+fi
+rm -rf "$out" && mkdir -p "$out" && out=$(realpath "$out") && touch "$out/.strata-gpu-diag-repeat"
 export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless} STRATA_SOURCE_DIR=$root
 for v in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do

@@ -91,6 +91,17 @@ TEST_CASE("advisor: the pick is never beaten by more than 10 % in error by a mea
     }
 }
 
+TEST_CASE("advisor: near-equal errors cannot chain the pick away from the least error") {
+    // Each point is within 1 % of the next and faster: a pairwise "equal within 1 %, then faster"
+    // would walk to the last; the rule measures from the least error.
+    std::vector<AdvisorPoint> p;
+    double rmse = 1.0e-3, ms = 10.0;
+    for (int i = 0; i < 10; ++i, rmse *= 1.009, ms -= 0.5) p.push_back(point("c" + std::to_string(i), ms, rmse));
+    markPareto(p);
+    const AdvisorPick pick = recommend(p, {100.0, std::nullopt});
+    CHECK(p[std::size_t(pick.index)].candidate.id == "c1");  // 1.009e-3 is within 1 % of 1e-3 and faster; 1.018e-3 is not
+}
+
 TEST_CASE("advisor: the candidates are each technique's defaults, then its trading settings") {
     const auto all = advisorCandidates({}, false);
     CHECK(std::none_of(all.begin(), all.end(), [](const AdvisorCandidate& c) { return c.id == "floor"; }));
@@ -107,4 +118,7 @@ TEST_CASE("advisor: the candidates are each technique's defaults, then its tradi
     REQUIRE(wboit.size() == 2);
     CHECK(wboit[1].label() == "wboit precision=32");
     CHECK_THROWS_AS(advisorCandidates({"nosuch"}, true), std::invalid_argument);
+    CHECK(advisorCandidates({"ll", "ll"}, false).size() == 1);  // an id given twice counts once
+    // The references are measured at their defaults only (a bench compares them with themselves).
+    CHECK(advisorCandidates({"abuffer", "abuffer-volume"}, true).size() == 2);
 }

@@ -207,7 +207,7 @@ if "$strata" bench builtin:layers:3 --size 32x32 --frames 2 --json "$work/bench.
 # The advisor's JSON: every configuration measured, the front marked, a recommendation with its reason.
 if "$strata" advise builtin:layers:3 --size 16x16 --frames 1 --warmup 0 --modes abuffer,wboit,ll --budget-ms 1000 \
      --json "$work/advise.json" >"$tmp/advise" 2>/dev/null &&
-   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); c=d['configurations']; assert len(c) == 9, len(c); assert any(x['pareto'] for x in c); assert d['recommended']['reason']" "$work/advise.json" &&
+   python3 -c "import json,sys; d=json.load(open(sys.argv[1])); c=d['configurations']; assert len(c) == 8, len(c); assert any(x['pareto'] for x in c); assert d['recommended']['reason']" "$work/advise.json" &&
    grep -q "^recommended: " "$tmp/advise"; then ok; else bad "advise JSON/table: $(cat "$tmp/advise")"; fi
 # A report folder (bench/report_page.hpp's layout): the page, its chart and every image it shows,
 # the volumetric row against its own reference. Without gnuplot the page says so, and so does

@@ -3,6 +3,7 @@
 
 #include "gl/shader_program.hpp"
 #include "render/scene_program.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <doctest/doctest.h>
 
@@ -128,5 +129,11 @@ TEST_CASE("a variant copies the pass's uniforms once per change, not on every dr
     pass.uniformsChanged();
     CHECK(viewProjOf(pass.variant(features)) == 3.0f);
     CHECK(&pass.variant(features) == &variant);  // the same variant, built once
+    // Every pass starts with GpuScene::setFrameUniforms, which announces the change itself.
+    GpuScene scene(makeBuiltinScene("layers:1"));
+    scene.setFrameUniforms(pass, glm::mat4(5.0f));
+    CHECK(viewProjOf(pass.variant(features)) == 5.0f);
+    scene.setFrameUniforms(pass, glm::mat4(6.0f));
+    CHECK(viewProjOf(pass.variant(features)) == 6.0f);
     gl::checkGl("variant uniforms");
 }

@@ -63,9 +63,14 @@ void run(const AdviseArgs& a) {
     std::vector<AdvisorPoint> points = measureCandidates(
         gpu, candidates, base, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
     if (points.empty()) throw Interrupted(interruptSignal());
+    const bool interrupted = interruptSignal() != 0;
     markPareto(points);
     const AdvisorPick pick = recommend(points, criteria);
-    std::cout << "device: " << gl::currentDeviceInfo().renderer << "\n\n";
+    std::cout << "device: " << gl::currentDeviceInfo().renderer << "\n";
+    if (interrupted)
+        std::cout << "stopped by a signal: " << points.size() << " of " << candidates.size()
+                  << " configurations measured; the recommendation is among those\n";
+    std::cout << "\n";
     std::cout << advisorTable(points, pick) << "\n" << advisorPlot(points, pick) << "\n";
     const AdvisorPoint& chosen = points[std::size_t(pick.index)];
     std::cout << "recommended: " << chosen.candidate.label() << " (" << pick.reason << "): frame "
@@ -79,6 +84,8 @@ void run(const AdviseArgs& a) {
         j["size"] = {base.size.x, base.size.y};
         j["frames"] = a.frames;
         j["device"] = gl::currentDeviceInfo().renderer;
+        j["interrupted"] = interrupted;
+        j["configurations_planned"] = candidates.size();
         OutputBatch outputs;
         outputs.addText(a.json, j.dump(2) + "\n");
         outputs.commit();
@@ -97,10 +104,10 @@ void registerAdviseCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "WxH")->capture_default_str();
     cmd->add_option("--budget-ms", args->budgetMs,
                     "frame budget: recommend the most accurate configuration whose frame fits it")
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(CLI::PositiveNumber & CLI::Range(0.0, 1e6));
     cmd->add_option("--max-error", args->maxError,
                     "RMSE bound (linear RGB): recommend the fastest configuration within it (default 1/255)")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(CLI::PositiveNumber & CLI::Range(0.0, 1.0));
     cmd->add_option("--modes", args->modes, "all, or technique ids separated by commas")->capture_default_str();
     cmd->add_flag("--no-trades", args->noTrades, "measure each technique at its defaults only");
     cmd->add_option("--frames", args->frames, "recorded frames per configuration")->check(CLI::Range(1, 1000))->capture_default_str();

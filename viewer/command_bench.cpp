@@ -82,6 +82,8 @@ void run(const BenchArgs& a) {
         // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
         // measured on this device at this size, two frames a configuration, then benched.
         BenchOptions probe = options;
+        probe.zoom = 1;  // as `strata advise` measures: zoom 1, geometry
+        probe.budget.reset();
         probe.frames = 2;
         probe.warmupFrames = 1;
         std::vector<AdvisorPoint> points = measureCandidates(gpu, advisorCandidates({}, true), probe, {});

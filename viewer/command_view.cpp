@@ -108,21 +108,26 @@ void registerViewCommand(CLI::App& app) {
     addLodOptions(cmd, options->lod);
     cmd->callback([=] {
         glm::ivec2 s = parseSize(*size);
-        std::vector<SettingAssignment> chosen;
-        if (options->mode == "auto") {
-            // Measured headless on this device before the window opens (the panel can switch later).
-            const AdvisorCandidate pick = adviseTechnique(options->scene, s);
-            options->mode = pick.id;
-            for (const std::string& a : pick.assignments) chosen.push_back({pick.id + "." + a, "--mode auto"});
-        }
-        if (!findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
+        const bool autoMode = options->mode == "auto";
+        if (autoMode && (!settings->set.empty() || !settings->preset.empty()))
+            throw std::invalid_argument("--mode auto chooses the settings itself; drop --set and --settings");
+        if (!autoMode && !findTechnique(options->mode)) createTechnique(options->mode);  // throws the list of known ids
         if (!findTechnique(options->splitWith)) createTechnique(options->splitWith);
         if (!inspect->empty()) options->inspect = parseInspectPixel(*inspect, s);
         // Against every technique: the panel can switch to any of them.
-        options->settings = resolveSettingsArgs(allTechniqueIds(), *settings, chosen);
+        options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
         options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
         options->lod.options();     // and a bad impostor setting
+        if (autoMode) {
+            // Measured headless on this device once everything else is checked, before the window
+            // opens (the panel can switch later).
+            const AdvisorCandidate pick = adviseTechnique(options->scene, s);
+            options->mode = pick.id;
+            std::vector<SettingAssignment> chosen;
+            for (const std::string& a : pick.assignments) chosen.push_back({pick.id + "." + a, "--mode auto"});
+            options->settings = resolveSettingsArgs(allTechniqueIds(), *settings, chosen);
+        }
         options->width = s.x;
         options->height = s.y;
         if (!play->empty()) options->playPath = *play;

@@ -32,10 +32,26 @@ std::vector<double> tradeValues(const SettingDescription& d, bool hasTail) {
     return out;
 }
 
-bool better(const AdvisorPoint& a, const AdvisorPoint& b) {  // more accurate, then faster
-    const double tolerance = 0.01 * std::max(a.rmse, b.rmse);
-    if (std::abs(a.rmse - b.rmse) > tolerance) return a.rmse < b.rmse;
-    return a.frameMs < b.frameMs;
+// The most accurate of `indices`: the least RMSE, and among the points within 1 % of it the
+// fastest (measured from the least, so that a chain of near-equal points cannot drift).
+int mostAccurate(const std::vector<AdvisorPoint>& points, const std::vector<int>& indices) {
+    if (indices.empty()) return -1;
+    double least = points[std::size_t(indices.front())].rmse;
+    for (int i : indices) least = std::min(least, points[std::size_t(i)].rmse);
+    int best = -1;
+    for (int i : indices) {
+        const AdvisorPoint& p = points[std::size_t(i)];
+        if (p.rmse > least * 1.01 + 1e-12) continue;
+        if (best < 0 || p.frameMs < points[std::size_t(best)].frameMs) best = i;
+    }
+    return best;
+}
+
+int fastest(const std::vector<AdvisorPoint>& points, const std::vector<int>& indices) {
+    int best = -1;
+    for (int i : indices)
+        if (best < 0 || points[std::size_t(i)].frameMs < points[std::size_t(best)].frameMs) best = i;
+    return best;
 }
 
 std::string fixed(const char* format, double value) {
@@ -64,10 +80,17 @@ std::vector<AdvisorCandidate> advisorCandidates(const std::vector<std::string>& 
             entries.push_back(e);
         }
     }
+    std::vector<const TechniqueEntry*> unique;
+    for (const TechniqueEntry* e : entries)
+        if (std::find(unique.begin(), unique.end(), e) == unique.end()) unique.push_back(e);
+    entries = unique;
     std::vector<AdvisorCandidate> out;
     for (const TechniqueEntry* e : entries) out.push_back({e->info.id, {}});
     if (!trades) return out;
     for (const TechniqueEntry* e : entries) {
+        // A reference's own trades would be measured against themselves (the bench configures the
+        // reference it runs with them): only their defaults are measured.
+        if (benchReferenceOf(e->info.id) == e->info.id) continue;
         const bool hasTail = std::any_of(e->settings.begin(), e->settings.end(),
                                          [](const SettingDescription& d) { return d.name == "tail"; });
         for (const SettingDescription& d : e->settings)
@@ -88,6 +111,7 @@ AdvisorPoint pointOf(const AdvisorCandidate& candidate, const BenchMode& m) {
     p.maxAbsError = m.maxAbsError;
     p.overflowed = m.overflowed;
     p.bytes = m.bytes;
+    p.reference = m.reference;
     return p;
 }
 
@@ -153,14 +177,13 @@ void markPareto(std::vector<AdvisorPoint>& points) {
 AdvisorPick recommend(const std::vector<AdvisorPoint>& points, const AdvisorCriteria& criteria) {
     AdvisorPick pick;
     if (points.empty()) return pick;
-    auto best = [&](auto&& qualifies, auto&& preferred) {
-        int index = -1;
+    auto where = [&](auto&& qualifies) {
+        std::vector<int> out;
         for (int i = 0; i < int(points.size()); ++i)
-            if (qualifies(points[std::size_t(i)]) && (index < 0 || preferred(points[std::size_t(i)], points[std::size_t(index)])))
-                index = i;
-        return index;
+            if (qualifies(points[std::size_t(i)])) out.push_back(i);
+        return out;
     };
-    auto faster = [](const AdvisorPoint& a, const AdvisorPoint& b) { return a.frameMs < b.frameMs; };
+    const std::vector<int> all = where([](const AdvisorPoint&) { return true; });
     auto fits = [&](const AdvisorPoint& p) { return !criteria.budgetMs || p.frameMs <= *criteria.budgetMs; };
     const double maxRmse = criteria.maxRmse.value_or(kDefaultMaxRmse);
     auto accurate = [&](const AdvisorPoint& p) { return p.rmse <= maxRmse; };
@@ -168,27 +191,27 @@ AdvisorPick recommend(const std::vector<AdvisorPoint>& points, const AdvisorCrit
     if (criteria.budgetMs) {
         const std::string budget = fixed("%.3g", *criteria.budgetMs) + " ms";
         if (criteria.maxRmse) {
-            pick.index = best([&](const AdvisorPoint& p) { return fits(p) && accurate(p); }, better);
+            pick.index = mostAccurate(points, where([&](const AdvisorPoint& p) { return fits(p) && accurate(p); }));
             if (pick.index >= 0) {
                 pick.reason = "the most accurate within " + budget + " and " + bound;
                 return pick;
             }
         }
-        pick.index = best(fits, better);
+        pick.index = mostAccurate(points, where(fits));
         if (pick.index >= 0) {
             pick.reason = std::string(criteria.maxRmse ? "nothing met both bounds; " : "") + "the most accurate within " + budget;
             return pick;
         }
-        pick.index = best([](const AdvisorPoint&) { return true; }, faster);
+        pick.index = fastest(points, all);
         pick.reason = "nothing fits " + budget + "; the fastest";
         return pick;
     }
-    pick.index = best(accurate, faster);
+    pick.index = fastest(points, where(accurate));
     if (pick.index >= 0) {
         pick.reason = "the fastest within " + bound + (criteria.maxRmse ? "" : " (the default bound: 1/255)");
         return pick;
     }
-    pick.index = best([](const AdvisorPoint&) { return true; }, better);
+    pick.index = mostAccurate(points, all);
     pick.reason = "nothing is within " + bound + "; the most accurate";
     return pick;
 }
@@ -205,14 +228,15 @@ std::string advisorTable(const std::vector<AdvisorPoint>& points, const AdvisorP
     for (const AdvisorPoint& p : points) width = std::max(width, p.candidate.label().size());
     std::string out;
     char line[256];
-    std::snprintf(line, sizeof line, "  %-*s %10s %10s %10s %8s %10s  %s\n", int(width), "configuration", "frame ms",
-                  "tech ms", "RMSE", "PSNR", "memory", "");
+    std::snprintf(line, sizeof line, "  %-*s %10s %10s %10s %8s %10s %-14s %s\n", int(width), "configuration",
+                  "frame ms", "tech ms", "RMSE", "PSNR", "memory", "against", "");
     out += line;
     for (int i : order) {
         const AdvisorPoint& p = points[std::size_t(i)];
-        std::snprintf(line, sizeof line, "%c %-*s %10.3f %10.3f %10.2e %8.1f %10s  %s%s\n", i == pick.index ? '>' : ' ',
+        std::snprintf(line, sizeof line, "%c %-*s %10.3f %10.3f %10.2e %8.1f %10s %-14s %s%s\n", i == pick.index ? '>' : ' ',
                       int(width), p.candidate.label().c_str(), p.frameMs, p.techniqueMs, p.rmse, p.psnr,
-                      humanBytes(p.bytes).c_str(), p.pareto ? "front" : "", p.overflowed ? " overflowed" : "");
+                      humanBytes(p.bytes).c_str(), p.reference.c_str(), p.pareto ? "front" : "",
+                      p.overflowed ? " overflowed" : "");
         out += line;
     }
     return out;
@@ -253,8 +277,10 @@ std::string advisorPlot(const std::vector<AdvisorPoint>& points, const AdvisorPi
 nlohmann::json advisorToJson(const std::vector<AdvisorPoint>& points, const AdvisorPick& pick,
                              const AdvisorCriteria& criteria) {
     nlohmann::json j;
+    // The error bound that applied: none under a budget alone.
+    const bool boundApplies = criteria.maxRmse || !criteria.budgetMs;
     j["criteria"] = {{"budget_ms", criteria.budgetMs ? nlohmann::json(*criteria.budgetMs) : nlohmann::json()},
-                     {"max_rmse", criteria.maxRmse.value_or(kDefaultMaxRmse)},
+                     {"max_rmse", boundApplies ? nlohmann::json(criteria.maxRmse.value_or(kDefaultMaxRmse)) : nlohmann::json()},
                      {"max_rmse_given", criteria.maxRmse.has_value()}};
     j["configurations"] = nlohmann::json::array();
     for (const AdvisorPoint& p : points)
@@ -264,6 +290,7 @@ nlohmann::json advisorToJson(const std::vector<AdvisorPoint>& points, const Advi
                                        {"frame_ms", p.frameMs},
                                        {"technique_ms", p.techniqueMs},
                                        {"rmse", p.rmse},
+                                       {"reference", p.reference},
                                        {"psnr", p.psnr},
                                        {"max_abs_error", p.maxAbsError},
                                        {"bytes", p.bytes},

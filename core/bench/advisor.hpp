@@ -6,8 +6,8 @@
 // exact reference (linear RGB), both from `strata bench` (bench/bench.hpp).
 //
 // The rule, stated once (recommend()):
-//  - with a budget: the most accurate configuration whose frame fits it; equal errors (within
-//    1 %) go to the faster;
+//  - with a budget: the most accurate configuration whose frame fits it; of those within 1 % of
+//    the least error, the fastest;
 //  - with an error bound: the fastest configuration within it;
 //  - with both: the most accurate of those within both, else as with the budget alone;
 //  - with neither: the fastest within kDefaultMaxRmse (1/255, what an 8-bit display shows).
@@ -31,8 +31,9 @@ struct AdvisorCandidate {
 };
 
 // Every technique of `ids` (empty: the whole registry but `floor`, which draws nothing
-// transparent) at its defaults, then, with `trades`, each at the other values of its trading
-// settings. Throws std::invalid_argument for an unknown id.
+// transparent; an id given twice counts once) at its defaults, then, with `trades`, each at the
+// other values of its trading settings; a reference (abuffer, abuffer-volume) at its defaults
+// only, since a bench measures it against itself. Throws std::invalid_argument for an unknown id.
 std::vector<AdvisorCandidate> advisorCandidates(const std::vector<std::string>& ids, bool trades);
 
 class GpuScene;
@@ -54,6 +55,7 @@ struct AdvisorPoint {
     double rmse = 0.0, psnr = 100.0, maxAbsError = 0.0;
     bool overflowed = false;
     std::uint64_t bytes = 0;
+    std::string reference;     // what its error is measured against (benchReferenceOf)
     bool pareto = false;       // no other point is as fast and as accurate, and better in one
 };
 

@@ -8,8 +8,8 @@
 // impostors, render/stand_in.hpp) wraps the fragment stage in the impostor alpha test; a base
 // colour texture or vertex colours add their inputs and fetch (common/material.glsl); MASK
 // wraps it in the alpha-cutoff test (common/scene_prelude.glsl, scene_main.glsl). A variant is
-// built on its first draw; before each, the uniforms the technique set on the program are copied
-// onto it, so the technique never knows which drew. A factor-only material draws with the
+// built on its first draw; on its first draw of each pass, the uniforms the technique set on the
+// program are copied onto it (variant()), so the technique never knows which drew. A factor-only material draws with the
 // program itself: no texture fetch, no branch.
 #include "gl/shader_program.hpp"
 
