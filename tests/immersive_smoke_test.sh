@@ -45,6 +45,12 @@ run_case() {  # name, extra arguments...
     scored=$(sed -n 's/^immersive: .*, \([0-9]*\) frames scored, mean error \([0-9.]*\) deg.*/\1/p' <<<"$out")
     (( ${scored:-0} >= 1 )) || fail "$name: no frame was scored"
     if [[ $name == zoomed ]]; then grep -q '^zoom: 2 (fixed)' <<<"$out" || fail "$name: no 'zoom: 2 (fixed)' line"; fi
+    grep -q '^lod ' <<<"$out" || fail "$name: no 'lod' line (the immersive window has level of detail)"
+    if [[ $name == impostors ]]; then
+        local impostors
+        impostors=$(sed -n 's/^lod impostors: \([0-9]*\) of .*/\1/p' <<<"$out")
+        (( ${impostors:-0} > 0 )) || fail "$name: no object drawn as an impostor"
+    fi
     echo "immersive_smoke: $name ok (scene $scene colours, panel $panel px, $scored frames scored)"
 }
 
@@ -52,6 +58,9 @@ run_case mono
 run_case stereo --stereo --ipd 64 --predictor cv --deflect shift --extra-latency 20
 # Zoom 2 folded into the homography deflection: the same checks, and the zoom reported.
 run_case zoomed --zoom 2
+# Level of detail as in the walkthrough window: forced impostors bake (within the frame budget)
+# and draw in both eyes.
+run_case impostors --lod impostors --stereo
 
 # Bad input fails before a window opens, with a message.
 if out=$("$strata" view builtin:default --immersive 2>&1); then fail "--immersive without --trace succeeded"; fi

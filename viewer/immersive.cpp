@@ -18,6 +18,8 @@ WindowModeFactory immersiveMode(const ViewOptions&, Scene) {
 #else
 
 #include "immersive_panel.hpp"
+#include "lod_options.hpp"
+#include "lod_panel.hpp"
 
 #include "gl/context.hpp"
 #include "render/deflection_warp.hpp"
@@ -142,6 +144,11 @@ public:
         choices_.filter = int(DeflectFilter::Bilinear);
         choices_.stereo = options.stereo;
         zoom_.choices() = zoomChoicesFrom(options);
+        // Level of detail as in the walkthrough window (view_app.cpp): baking under a per-frame
+        // budget, geometry drawn until an object's impostor is ready.
+        lod::LodOptions lodOptions = options.lod.options();
+        lodOptions.bakeBudgetMs = kViewerBakeBudgetMs;
+        lod_ = std::make_unique<lod::LodController>(scene_, lodOptions, &std::cerr);
         choices_.ipdMm = float(options.ipdMm);
         choices_.extraLatencyMs = float(options.extraLatencyMs);
         history_.resize(predictorNames_.size() * kDeflects.size());
@@ -182,6 +189,16 @@ public:
         frameOptions.enlarge = false;  // the deflection enlarges, in the same pass
         zoom_.begin(scene_, eyeCamera(inFlight_.first[predictor], signs[0]), inFlight_.eyeSize, technique_.get(),
                     frameOptions, headDegPerSecond_);
+        // One selection for both eyes, from between them (their views differ by the eye distance,
+        // far below what moves an object's impostor choice). A failed bake is reported like a
+        // failed frame, and the eyes draw geometry.
+        try {
+            frameOptions.standIns = lod_->select(eyeCamera(inFlight_.first[predictor], 0.0f), inFlight_.eyeSize);
+        } catch (const std::exception& e) {
+            if (smokeTest()) throw;
+            lastError_ = e.what();
+            frameOptions.standIns = nullptr;
+        }
         for (int e = 0; e < eyes; ++e) {
             eyes_[e].rendered = eyeCamera(inFlight_.first[predictor], signs[e]);
             renderEye(eyes_[e], inFlight_.eyeSize, frameOptions);
@@ -217,6 +234,7 @@ public:
         state.windowSize = size;
         state.eyeSize = inFlight_.eyeSize;
         state.zoom = &zoom_;
+        state.lod = lod_.get();
         state.headDegPerSecond = headDegPerSecond_;
         state.sceneName = scene_.scene().name;
         state.techniqueId = technique_->info().id;
@@ -253,6 +271,7 @@ public:
                     deflectionNames_[std::size_t(choices_.deflection)].c_str(),
                     static_cast<unsigned long long>(scored_), h.mean(), startToDisplay_.value * 1e3);
         zoom_.printFigures();
+        printLodFigures(*lod_);
     }
 
 private:
@@ -389,8 +408,9 @@ private:
     FrameInFlight inFlight_;
     // Last deflection and errors.
     glm::vec2 lastShift_{0.0f};
-    // Zoom rendering and the head speed that drives it.
+    // Zoom rendering and the head speed that drives it; level of detail.
     ZoomDriver zoom_;
+    std::unique_ptr<lod::LodController> lod_;
     tracking::PoseSample lastHead_;
     double lastHeadTime_ = 0.0, headDegPerSecond_ = 0.0;
     bool hasLastHead_ = false;

@@ -1,4 +1,5 @@
 #include "immersive_panel.hpp"
+#include "lod_panel.hpp"
 #include "zoom_driver.hpp"
 
 #include "panel_widgets.hpp"
@@ -104,6 +105,7 @@ void drawImmersivePanel(const ImmersivePanelState& state, ImmersiveChoices& choi
         ImGui::Text("head %.0f deg/s", state.headDegPerSecond);
         drawZoomSection(*state.zoom, true);
     }
+    if (state.lod && ImGui::CollapsingHeader("Level of detail", ImGuiTreeNodeFlags_DefaultOpen)) drawLodSection(*state.lod);
     if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("GPU %.3f ms   CPU %.3f ms per eye   %.0f fps", state.frame->gpuMs, state.frame->cpuMs,
                     ImGui::GetIO().Framerate);

@@ -2,7 +2,8 @@
 // The immersive mode's ImGui panel (viewer/immersive.hpp): the trace's clock, the predictor,
 // deflection and stereo choices, the two-step timing, the viewing error of the selected
 // combination with its plot, and every predictor x deflection side by side. Like the viewer's
-// panel it reads a snapshot, edits copies of the choices and returns requests; it knows the
+// panel it reads a snapshot, edits copies of the choices and returns requests (the zoom and
+// level-of-detail sections edit their drivers, as in the walkthrough panel); it knows the
 // predictors and deflections by name only, so it needs no tracking library.
 #include "frame_history.hpp"
 
@@ -18,6 +19,9 @@
 namespace strata {
 
 class ZoomDriver;
+namespace lod {
+class LodController;
+}
 
 // What the panel lets the user change; the mode uses them from the next frame on.
 struct ImmersiveChoices {
@@ -36,6 +40,7 @@ struct ImmersiveRequests {
 struct ImmersivePanelState {
     glm::ivec2 windowSize{0}, eyeSize{0};
     ZoomDriver* zoom = nullptr;   // zoom rendering: its section edits the driver's choices
+    lod::LodController* lod = nullptr;  // level of detail: its section as in the walkthrough panel
     double headDegPerSecond = 0.0;
     std::string sceneName, techniqueId, renderer;
     // Trace and its clock.
