@@ -60,10 +60,16 @@ TEST_CASE("diagnostic: one frame rendered many times, which renders differ and i
         for (const std::string& id : ids) {
             struct Variant {
                 const char* name;
-                bool reuse, cull, timers;
+                bool keepRenderer, keepTechnique, cull, timers;
             };
-            for (const Variant v : {Variant{"fresh renderer", false, true, true}, Variant{"one renderer", true, true, true},
-                                    Variant{"culling off", false, false, true}, Variant{"timers off", false, true, false}}) {
+            // Keeping one of the two tells whose fresh programs (or targets) the loss follows: the
+            // renderer's (opaque pass, its targets) or the technique's (its passes, its buffers).
+            for (const Variant v : {Variant{"fresh renderer", false, false, true, true},
+                                    Variant{"one renderer", true, true, true, true},
+                                    Variant{"one renderer, fresh techniques", true, false, true, true},
+                                    Variant{"fresh renderers, one technique", false, true, true, true},
+                                    Variant{"culling off", false, false, false, true},
+                                    Variant{"timers off", false, false, true, false}}) {
                 if (quick && std::string(v.name) != "fresh renderer") continue;
                 FrameOptions options;
                 options.cull = v.cull;
@@ -77,8 +83,9 @@ TEST_CASE("diagnostic: one frame rendered many times, which renders differ and i
                 for (int i = 0; i < repeats; ++i) {
                     FrameRenderer fresh;
                     auto freshTechnique = createTechnique(id);
-                    FrameRenderer& renderer = v.reuse ? kept : fresh;
-                    renderer.render(scene, camera, size, v.reuse ? keptTechnique.get() : freshTechnique.get(), options);
+                    FrameRenderer& renderer = v.keepRenderer ? kept : fresh;
+                    renderer.render(scene, camera, size, v.keepTechnique ? keptTechnique.get() : freshTechnique.get(),
+                                    options);
                     gl::checkGl("diagnostic render");
                     Snapshot s = snapshot(renderer, size);
                     if (!first) {

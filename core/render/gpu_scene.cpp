@@ -294,13 +294,14 @@ bool frameUniformsPerDraw() {
 
 void checkUniform(GLuint program, GLint location, const float* want, int count, const char* what, int object) {
     if (location < 0) return;
-    float got[16] = {};
+    float got[16] = {}, set[16] = {};
     glGetUniformfv(program, location, got);
-    if (std::memcmp(got, want, std::size_t(count) * sizeof(float)) == 0) return;
+    std::memcpy(set, want, std::size_t(count) * sizeof(float));
+    if (std::memcmp(got, set, std::size_t(count) * sizeof(float)) == 0) return;
     static int reported = 0;
     if (reported++ < 40)
         std::fprintf(stderr, "[strata debug] %s on program %u (object %d) reads back %g %g %g %g, set %g %g %g %g\n", what,
-                     program, object, got[0], got[1], got[2], got[3], want[0], want[1], want[2], want[3]);
+                     program, object, got[0], got[1], got[2], got[3], set[0], set[1], set[2], set[3]);
 }
 
 }  // namespace
@@ -416,6 +417,15 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
                      objectIndex);
         const glm::vec4 eye = eyeUniform(debugViewProjection_);
         checkUniform(drawing.id(), drawing.eye, glm::value_ptr(eye), 4, "uEye", objectIndex);
+        // The material's too: a wrong colour, alpha or cut-off fits what group 2 showed better
+        // than a wrong transform does.
+        const Material& m = scene_.materials[std::size_t(objects_[std::size_t(objectIndex)].material)];
+        checkUniform(drawing.id(), drawing.baseColor, glm::value_ptr(m.baseColor), 3, "uBaseColor", objectIndex);
+        checkUniform(drawing.id(), drawing.alpha, &m.alpha, 1, "uAlpha", objectIndex);
+        const float cutoff = m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f;
+        checkUniform(drawing.id(), drawing.alphaCutoff, &cutoff, 1, "uAlphaCutoff", objectIndex);
+        checkUniform(drawing.id(), drawing.metallic, &m.metallic, 1, "uMetallic", objectIndex);
+        checkUniform(drawing.id(), drawing.roughness, &m.roughness, 1, "uRoughness", objectIndex);
     }
     bindMaterialTextures(objectIndex);
     if (features) glUseProgram(drawing.id());
