@@ -86,7 +86,7 @@ void run(const BenchArgs& a) {
         probe.budget.reset();
         probe.frames = 2;
         probe.warmupFrames = 1;
-        std::vector<AdvisorPoint> points = measureCandidates(gpu, advisorCandidates({}, true), probe, {});
+        std::vector<AdvisorPoint> points = measureCandidates(gpu, advisorCandidates({}, true), probe, options.progress);
         if (points.empty()) throw Interrupted(interruptSignal());
         markPareto(points);
         const AdvisorPick pick = recommend(points, {});

@@ -45,7 +45,8 @@ AdvisorCandidate adviseTechnique(const std::string& sceneSpec, glm::ivec2 size) 
     base.warmupFrames = 1;
     const std::vector<AdvisorCandidate> candidates = advisorCandidates({}, true);
     std::fprintf(stderr, "--mode auto: measuring %zu configurations at %dx%d\n", candidates.size(), size.x, size.y);
-    std::vector<AdvisorPoint> points = measureCandidates(gpu, candidates, base, {});
+    std::vector<AdvisorPoint> points =
+        measureCandidates(gpu, candidates, base, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
     if (points.empty()) throw Interrupted(interruptSignal());
     markPareto(points);
     const AdvisorPick pick = recommend(points, {});
