@@ -183,7 +183,7 @@ public:
         const std::size_t predictor = std::size_t(choices_.predictor);
         // Section 4.2 of zoom rendering: the head's angular speed between the last two frames'
         // predicted poses raises the zoom during fast turns. One zoom for both eyes.
-        headDegPerSecond_ = headSpeed(inFlight_.first[predictor], display1);
+        headDegPerSecond_ = headSpeed(inFlight_.first[predictor], inFlight_.trace0);
         FrameOptions frameOptions;
         frameOptions.timePasses = true;
         frameOptions.enlarge = false;  // the deflection enlarges, in the same pass
@@ -317,13 +317,18 @@ private:
         return c;
     }
 
-    // Degrees per second between the previous frame's predicted head orientation and this one's.
-    double headSpeed(const tracking::PoseSample& head, double displayTime) {
+    // Degrees per second between the previous frame's predicted head orientation and this one's,
+    // over the trace time that passed between the two frames' starts. Not over the difference of
+    // their predicted display times: that also moves with the latency estimate, which falls fast
+    // after a slow frame (the first one calibrates level of detail, ~250 ms on llvmpipe). Divided
+    // by it, the head-speed floor raised a fixed zoom of 2 to 3 or 4 in 2 of 4 smoke runs; divided
+    // by the trace time, in none of 4.
+    double headSpeed(const tracking::PoseSample& head, double traceTime) {
         double speed = 0.0;
-        if (hasLastHead_ && displayTime > lastHeadTime_)
-            speed = tracking::radToDeg(tracking::angleBetween(lastHead_.q, head.q)) / (displayTime - lastHeadTime_);
+        if (hasLastHead_ && traceTime > lastHeadTime_)
+            speed = tracking::radToDeg(tracking::angleBetween(lastHead_.q, head.q)) / (traceTime - lastHeadTime_);
         lastHead_ = head;
-        lastHeadTime_ = displayTime;
+        lastHeadTime_ = traceTime;
         hasLastHead_ = true;
         return speed;
     }
