@@ -248,3 +248,35 @@ TEST_CASE("advise measures each configuration against the reference and recommen
     CHECK(recommend(points, {1e-9, std::nullopt}).reason.find("nothing fits") != std::string::npos);
     CHECK(points[std::size_t(recommend(points, {1e9, std::nullopt}).index)].candidate.id == "abuffer");
 }
+
+TEST_CASE("bench under a budget reports each frame's PSNR against the same frame without one") {
+    test::glContext();
+    // A budget nothing meets: the reactive controller raises the zoom every frame it may. The first
+    // frame (zoom 1, geometry) equals its unconstrained render; a zoomed one loses the edges.
+    GpuScene scene(makeBuiltinScene("default"));
+    BenchOptions options;
+    options.modes = {"abuffer"};
+    options.size = {64, 48};
+    options.frames = 6;
+    options.warmupFrames = 0;
+    options.settings = resolveSettings(benchModeIds(options.modes), {});
+    ZoomBudget budget;
+    budget.targetMs = 1e-6;
+    budget.minZoom = 1;
+    budget.maxZoom = 4;
+    budget.holdFrames = 1;
+    options.budget = budget;
+    const BenchReport report = runBench(scene, options);
+    REQUIRE(report.modes.size() == 1);
+    const BenchMode& m = report.modes.front();
+    REQUIRE(m.framePsnr.size() == 6);
+    REQUIRE(m.frameZoom.size() == 6);
+    CHECK(m.frameImpostorObjects == std::vector<int>(6, 0));
+    CHECK(m.frameZoom.front() == 1);
+    CHECK(m.framePsnr.front() >= 60.0);
+    CHECK(m.frameZoom.back() > 1);
+    CHECK(m.framePsnr.back() < 40.0);
+    const nlohmann::json j = benchToJson(report);
+    CHECK(j["modes"][0]["budget"]["frame_psnr"].size() == 6);
+    CHECK(j["modes"][0]["budget"]["frame_impostor_objects"].size() == 6);
+}

@@ -188,6 +188,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.settingDescriptions = technique->settingDescriptions();
         mode.settings = technique->settings();
         std::unique_ptr<ZoomController> controller;
+        // Under a budget, each frame is also rendered as it would be without one (zoom 1, every
+        // object as geometry) by a technique and renderer of its own, untimed: what the budget's
+        // choices cost in image quality, frame by frame (BenchMode::framePsnr).
+        std::unique_ptr<Technique> unconstrainedTechnique;
+        FrameRenderer unconstrainedRenderer;
+        if (options.budget) unconstrainedTechnique = createConfiguredTechnique(id, options.settings);
         if (options.budget) {
             ZoomCostModel model;
             if (options.zoomController == ZoomControllerKind::Predictive)
@@ -218,11 +224,13 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                     scene, c.projection(float(options.size.x) / float(options.size.y)) * c.view(), options.size);
                 frameOptions.zoom = controller->choose(load);
             }
+            int frameImpostors = 0;
             if (options.lod) {
                 const auto lodStart = std::chrono::steady_clock::now();
                 const BenchLodFrame lod = options.lod(cameras[f], options.size, 1);
                 lodMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lodStart).count());
                 frameOptions.standIns = lod.standIns;
+                frameImpostors = lod.impostorObjects;
                 mode.impostorObjects = std::max(mode.impostorObjects, lod.impostorObjects);
                 mode.impostorBytes = std::max(mode.impostorBytes, lod.impostorBytes);
             }
@@ -234,6 +242,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 mode.frameZoom.push_back(frameOptions.zoom);
                 mode.frameMs.push_back(r.gpuMs);
                 mode.framePredictedMs.push_back(std::isfinite(predicted) ? predicted : 0.0);
+                mode.frameImpostorObjects.push_back(frameImpostors);
             }
             frame.push_back(r.gpuMs);
             enlarge.push_back(r.enlargeMs);
@@ -264,6 +273,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             mode.primitivesBounded += r.stats.primitivesBounded;
 
             Image image = renderer.readOutput();
+            if (unconstrainedTechnique) {
+                FrameOptions plain;
+                plain.timePasses = false;
+                unconstrainedRenderer.render(scene, cameras[f], options.size, unconstrainedTechnique.get(), plain);
+                mode.framePsnr.push_back(compareImages(image, unconstrainedRenderer.readOutput()).psnr);
+            }
             // Handed to firstFrame once the technique completed: a technique a signal stops
             // leaves no row and no image.
             if (f == 0 && options.firstFrame) first = {image, isReference ? image : reference.image};

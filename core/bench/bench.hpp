@@ -117,6 +117,10 @@ struct BenchMode {
     // controller's prediction (NaN-free: 0 where it had none), and how the times met the target.
     std::vector<int> frameZoom;
     std::vector<double> frameMs, framePredictedMs;
+    // Also per frame under a budget: the objects drawn as impostors, and the PSNR of the frame
+    // against the same technique's frame without a budget (zoom 1, geometry; 100 when equal).
+    std::vector<int> frameImpostorObjects;
+    std::vector<double> framePsnr;
     BudgetHits budgetHits;
     std::vector<BudgetExcursion> excursions;
     ZoomCostModel calibratedModel;                            // predictive: what calibration fitted

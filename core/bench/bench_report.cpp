@@ -80,8 +80,11 @@ nlohmann::json benchToJson(const BenchReport& r) {
             for (double p : m.framePredictedMs) predicted.push_back(finite(p));
             nlohmann::json times = nlohmann::json::array();
             for (double t : m.frameMs) times.push_back(finite(t));
+            nlohmann::json psnr = nlohmann::json::array();
+            for (double p : m.framePsnr) psnr.push_back(finite(p));
             modes.back()["budget"] = {
                 {"frame_zoom", m.frameZoom}, {"frame_ms", times}, {"frame_predicted_ms", predicted},
+                {"frame_impostor_objects", m.frameImpostorObjects}, {"frame_psnr", psnr},
                 {"within_band", finite(m.budgetHits.within)}, {"not_over_band", finite(m.budgetHits.notOver)},
                 {"excursions", excursions},
                 {"model", {{"fixed_ms", finite(m.calibratedModel.fixedMs)},
