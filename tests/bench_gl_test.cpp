@@ -247,6 +247,11 @@ TEST_CASE("advise measures each configuration against the reference and recommen
     // the least error (abuffer's, 0 against itself, but wboit and the overflowing ll are not 0).
     CHECK(recommend(points, {1e-9, std::nullopt}).reason.find("nothing fits") != std::string::npos);
     CHECK(points[std::size_t(recommend(points, {1e9, std::nullopt}).index)].candidate.id == "abuffer");
+    // A trade limit below every default: the trades are not measured, the defaults are.
+    const std::vector<AdvisorCandidate> withDefaults = {{"wboit", {}}, {"ll", {}}, {"ll", {"capacity=2"}}};
+    const std::vector<AdvisorPoint> limited = measureCandidates(scene, withDefaults, base, {}, 1e-9);
+    REQUIRE(limited.size() == 2);
+    CHECK((limited[0].candidate.assignments.empty() && limited[1].candidate.assignments.empty()));
 }
 
 TEST_CASE("bench under a budget reports each frame's PSNR against the same frame without one") {

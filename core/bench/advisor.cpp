@@ -119,7 +119,8 @@ AdvisorPoint pointOf(const AdvisorCandidate& candidate, const BenchMode& m) {
 
 std::vector<AdvisorPoint> measureCandidates(const GpuScene& scene, const std::vector<AdvisorCandidate>& candidates,
                                             const BenchOptions& base,
-                                            const std::function<void(const std::string&)>& progress) {
+                                            const std::function<void(const std::string&)>& progress,
+                                            double tradeLimitMs) {
     std::vector<AdvisorPoint> points;
     auto say = [&](const std::string& line) {
         if (progress) progress(line);
@@ -147,8 +148,18 @@ std::vector<AdvisorPoint> measureCandidates(const GpuScene& scene, const std::ve
         }
         if (r.interrupted) return points;
     }
+    std::size_t skipped = 0;
     for (const AdvisorCandidate& c : candidates) {
         if (c.assignments.empty()) continue;
+        if (tradeLimitMs > 0.0) {
+            const auto defaults = std::find_if(points.begin(), points.end(), [&](const AdvisorPoint& p) {
+                return p.candidate.id == c.id && p.candidate.assignments.empty();
+            });
+            if (defaults != points.end() && defaults->frameMs > tradeLimitMs) {
+                ++skipped;
+                continue;
+            }
+        }
         BenchOptions o = base;
         o.modes = {c.id};
         std::vector<SettingAssignment> assignments;
@@ -163,6 +174,9 @@ std::vector<AdvisorPoint> measureCandidates(const GpuScene& scene, const std::ve
             }
         if (r.interrupted) break;
     }
+    if (skipped)
+        say("advise: " + std::to_string(skipped) + " trades not measured: their techniques' defaults took over " +
+            fixed("%.3g", tradeLimitMs) + " ms");
     return points;
 }
 

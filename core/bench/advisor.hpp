@@ -42,11 +42,14 @@ struct BenchOptions;
 struct AdvisorPoint;
 // Measures the candidates with `strata bench`'s machinery (bench/bench.hpp): `base` gives the
 // size, frames and camera path; modes and settings are set per candidate. Every candidate at its
-// defaults runs in one bench, each other configuration in its own. A run stopped by a signal
-// returns the points measured so far. Needs a current GL context.
+// defaults runs in one bench, each other configuration in its own. With `tradeLimitMs` > 0 the
+// trades of a technique whose defaults took longer than that are not measured (`strata advise`
+// passes 4 x the budget: no trade here saves that much). A run stopped by a signal returns the
+// points measured so far. Needs a current GL context.
 std::vector<AdvisorPoint> measureCandidates(const GpuScene& scene, const std::vector<AdvisorCandidate>& candidates,
                                             const BenchOptions& base,
-                                            const std::function<void(const std::string&)>& progress);
+                                            const std::function<void(const std::string&)>& progress,
+                                            double tradeLimitMs = 0.0);
 
 struct AdvisorPoint {
     AdvisorCandidate candidate;
