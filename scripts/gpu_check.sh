@@ -36,6 +36,7 @@
 # e.g. --sizes 1280x720 --layers 8,16,32 --modes floor,blend-sorted,wboit,f2b,f2b2,dual,abuffer,ll,sbuffer.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+source "$root/scripts/gpu_common.sh"
 strata=${STRATA:-$root/build/viewer/strata}
 tests=${STRATA_GL_TESTS:-$root/build/tests/strata_gl_tests}
 out=gpu-check-report
@@ -79,10 +80,7 @@ if [[ -n $bundle ]]; then
     tests=$bundle/strata_gl_tests
     [[ -z $probe && -x $bundle/oitprobe ]] && probe=$bundle/oitprobe
     [[ -z $scenes_data && -d $bundle/scenes-data ]] && scenes_data=$bundle/scenes-data
-    export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders
-    for v in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
-        [[ -z ${__EGL_VENDOR_LIBRARY_FILENAMES-} && -e $v ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$v
-    done
+    use_gpu_bundle "$bundle"
 fi
 if ((quick)); then
     sizes=(256x256); layers=(4 8); scene_size=256x256; frames=${frames:-2}; warmup=${warmup:-1}
@@ -105,14 +103,8 @@ fi
 [[ -d $scenes_data ]] && scenes_data=$(realpath "$scenes_data")
 
 # The report folder: made fresh; an old report (it has our marker) is replaced, anything else kept.
-if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) && ! -e $out/.strata-gpu-check ]]; then
-    echo "gpu_check.sh: $out exists and is not a gpu_check report; give another folder" >&2
-    exit 1
-fi
-rm -rf "$out"
+out=$(fresh_report_folder gpu_check.sh "$out" .strata-gpu-check) || exit 1
 mkdir -p "$out/runs" || exit 1
-out=$(realpath "$out")
-touch "$out/.strata-gpu-check"
 cd "$root" || exit 1  # scene names in the reports stay relative to the repository
 # Mesa needs surfaceless without a display; strata asks NVIDIA's EGL for its device platform itself.
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}

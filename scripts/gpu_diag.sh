@@ -18,6 +18,7 @@
 #   --quick       small sizes and short limits, to try the script here on llvmpipe
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+source "$root/scripts/gpu_common.sh"
 bundle=$root/.gpu
 out=gpu-diag
 tarball=""
@@ -36,23 +37,13 @@ done
 [[ -x $bundle/strata && -x $bundle/strata_gl_tests ]] ||
     { echo "gpu_diag.sh: $bundle holds no strata or strata_gl_tests (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
 bundle=$(realpath "$bundle")
-# A report folder is replaced; anything else is left alone.
-if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) && ! -e $out/.strata-gpu-diag ]]; then
-    echo "gpu_diag.sh: $out exists and is not a gpu_diag report; give another folder" >&2
-    exit 1
-fi
-rm -rf "$out"
+out=$(fresh_report_folder gpu_diag.sh "$out" .strata-gpu-diag) || exit 1
 mkdir -p "$out/images" || exit 1
-out=$(realpath "$out")
-touch "$out/.strata-gpu-diag"
 cd "$root" || exit 1
 
-export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders
-export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless} STRATA_SOURCE_DIR=$root STRATA_GL_STATS=1
+use_gpu_bundle "$bundle"
+export STRATA_SOURCE_DIR=$root STRATA_GL_STATS=1
 [[ -d $bundle/scenes-data ]] && export STRATA_SHARED_SCENES_DIR=$bundle/scenes-data
-for v in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
-    [[ -z ${__EGL_VENDOR_LIBRARY_FILENAMES-} && -e $v ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$v
-done
 tests=$bundle/strata_gl_tests
 strata=$bundle/strata
 if ((quick)); then

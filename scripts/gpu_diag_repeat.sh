@@ -6,6 +6,7 @@
 # usage: scripts/gpu_diag_repeat.sh [--bundle DIR] [OUT]
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+source "$root/scripts/gpu_common.sh"
 bundle=$root/.gpu
 out=gpu-diag-repeat
 [[ ${1-} == --bundle ]] && { bundle=$2; shift 2; }
@@ -13,16 +14,9 @@ out=gpu-diag-repeat
 [[ -x $bundle/strata_gl_tests ]] ||
     { echo "gpu_diag_repeat.sh: $bundle holds no strata_gl_tests (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
 bundle=$(realpath "$bundle")
-if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) && ! -e $out/.strata-gpu-diag-repeat ]]; then
-    echo "gpu_diag_repeat.sh: $out exists and is not a gpu_diag_repeat report; give another folder" >&2
-    exit 1
-fi
-rm -rf "$out" && mkdir -p "$out" && out=$(realpath "$out") && touch "$out/.strata-gpu-diag-repeat"
-export LD_LIBRARY_PATH=$bundle/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} STRATA_SHADER_DIR=$bundle/shaders
-export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless} STRATA_SOURCE_DIR=$root
-for v in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
-    [[ -z ${__EGL_VENDOR_LIBRARY_FILENAMES-} && -e $v ]] && export __EGL_VENDOR_LIBRARY_FILENAMES=$v
-done
+out=$(fresh_report_folder gpu_diag_repeat.sh "$out" .strata-gpu-diag-repeat) || exit 1
+use_gpu_bundle "$bundle"
+export STRATA_SOURCE_DIR=$root
 run() {  # name [VAR=value ...]
     local name=$1
     shift

@@ -2,6 +2,7 @@
 // a recommendation (bench/advisor.hpp states the rule).
 #include "commands.hpp"
 #include "open_scene.hpp"
+#include "settings_options.hpp"
 
 #include "bench/advisor.hpp"
 #include "bench/bench.hpp"
@@ -12,7 +13,6 @@
 
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 namespace strata {
 namespace {
@@ -30,20 +30,9 @@ struct AdviseArgs {
     std::string json;
 };
 
-std::vector<std::string> splitIds(const std::string& text) {
-    std::vector<std::string> out;
-    if (text == "all") return out;
-    std::stringstream in(text);
-    std::string id;
-    while (std::getline(in, id, ','))
-        if (!id.empty()) out.push_back(id);
-    if (out.empty()) throw std::invalid_argument("--modes '" + text + "' names no technique");
-    return out;
-}
-
 void run(const AdviseArgs& a) {
     if (!a.json.empty()) checkWritable(a.json);
-    const std::vector<AdvisorCandidate> candidates = advisorCandidates(splitIds(a.modes), !a.noTrades);
+    const std::vector<AdvisorCandidate> candidates = advisorCandidates(parseModeList(a.modes), !a.noTrades);
     AdvisorCriteria criteria;
     if (a.budgetMs > 0.0) criteria.budgetMs = a.budgetMs;
     if (a.maxError > 0.0) criteria.maxRmse = a.maxError;

@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
-#include <sstream>
 
 namespace strata {
 namespace {
@@ -37,17 +36,6 @@ struct BenchArgs {
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
 };
 
-std::vector<std::string> splitModes(const std::string& text) {
-    std::vector<std::string> out;
-    if (text == "all") return out;
-    std::stringstream in(text);
-    std::string id;
-    while (std::getline(in, id, ','))
-        if (!id.empty()) out.push_back(id);
-    if (out.empty()) throw std::invalid_argument("--modes '" + text + "' names no technique");
-    return out;
-}
-
 void run(const BenchArgs& a) {
     // Outputs are written after the whole run: refuse an unwritable one before it starts.
     for (const std::string& out : {a.json, a.csv})
@@ -55,7 +43,7 @@ void run(const BenchArgs& a) {
     BenchOptions options;
     options.sceneName = a.scene;
     const bool autoMode = a.modes == "auto";
-    if (!autoMode) options.modes = splitModes(a.modes);
+    if (!autoMode) options.modes = parseModeList(a.modes);
     options.size = parseSize(a.size);
     options.frames = a.frames;
     options.warmupFrames = a.warmup;

@@ -2,6 +2,9 @@
 
 #include "oit/technique.hpp"
 
+#include <sstream>
+#include <stdexcept>
+
 namespace strata {
 
 void addSettingsOptions(CLI::App* command, SettingsArgs& args) {
@@ -24,6 +27,17 @@ std::vector<std::string> allTechniqueIds() {
     std::vector<std::string> ids;
     for (const auto& e : techniqueRegistry()) ids.push_back(e.info.id);
     return ids;
+}
+
+std::vector<std::string> parseModeList(const std::string& text) {
+    std::vector<std::string> out;
+    if (text == "all") return out;
+    std::stringstream in(text);
+    std::string id;
+    while (std::getline(in, id, ','))
+        if (!id.empty()) out.push_back(id);
+    if (out.empty()) throw std::invalid_argument("--modes '" + text + "' names no technique");
+    return out;
 }
 
 }  // namespace strata

@@ -25,4 +25,8 @@ SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const Sett
 // Every registered technique: the set a command that can switch techniques resolves against.
 std::vector<std::string> allTechniqueIds();
 
+// `--modes`: "all" (empty: every technique) or ids separated by commas; throws
+// std::invalid_argument when it names none. The ids themselves are checked by the command.
+std::vector<std::string> parseModeList(const std::string& text);
+
 }  // namespace strata

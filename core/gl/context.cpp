@@ -5,7 +5,6 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -59,8 +58,7 @@ HeadlessContext::HeadlessContext() {
 
     // STRATA_DEBUG_NO_DEBUG_CONTEXT=1: a context without the debug flag (docs/gpu-h100.md's
     // group 2 experiments; errors are then seen through glGetError only).
-    const char* noDebug = std::getenv("STRATA_DEBUG_NO_DEBUG_CONTEXT");
-    const EGLint debugFlag = noDebug && std::string(noDebug) == "1" ? EGL_FALSE : EGL_TRUE;
+    const EGLint debugFlag = debugSwitch("STRATA_DEBUG_NO_DEBUG_CONTEXT") ? EGL_FALSE : EGL_TRUE;
     const EGLint contextAttributes[] = {
         EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
         EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,

@@ -1,5 +1,7 @@
 #include "gl/debug.hpp"
 
+#include <cstdlib>
+
 #include <epoxy/gl.h>
 
 #include <mutex>
@@ -65,6 +67,11 @@ void checkGl(const char* where) {
     std::string message = std::string("GL error at ") + where + ": " + errors.front();
     if (errors.size() > 1) message += " (+" + std::to_string(errors.size() - 1) + " more)";
     throw std::runtime_error(message);
+}
+
+bool debugSwitch(const char* name) {
+    const char* env = std::getenv(name);
+    return env && std::string(env) == "1";
 }
 
 }  // namespace strata::gl

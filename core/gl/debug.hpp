@@ -20,4 +20,8 @@ std::size_t errorCount();
 // Throws std::runtime_error("GL error at <where>: <first message>") when errors are pending.
 void checkGl(const char* where);
 
+// Whether the environment variable `name` is "1": the STRATA_DEBUG_* switches of a GPU
+// diagnostic run (docs/testing.md), read once by each caller (a static).
+bool debugSwitch(const char* name);
+
 }  // namespace strata::gl

@@ -1,5 +1,7 @@
 #include "gl/shader_program.hpp"
 
+#include "gl/debug.hpp"
+
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -207,10 +209,7 @@ namespace {
 // diagnostic for drivers that finish a link asynchronously (docs/gpu-h100.md, group 2: an object
 // drawn by a program built inside the frame goes missing on NVIDIA); it costs a stall per build.
 void finishIfDebugging() {
-    static const bool finish = [] {
-        const char* env = std::getenv("STRATA_DEBUG_FINISH_BUILDS");
-        return env && std::string(env) == "1";
-    }();
+    static const bool finish = debugSwitch("STRATA_DEBUG_FINISH_BUILDS");
     if (finish) glFinish();
 }
 

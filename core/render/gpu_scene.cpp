@@ -1,8 +1,8 @@
 #include "render/gpu_scene.hpp"
 
-#include <cstdlib>
 
 #include "common/bindings.h"
+#include "gl/debug.hpp"
 #include "scene/lights.hpp"
 #include "scene/texture_sampling.hpp"
 
@@ -71,10 +71,7 @@ gl::Texture uploadImage(const TextureImage& image, bool srgb) {
 // loses objects now and then (docs/gpu-h100.md, group 2): if the loss goes, it is a hazard
 // between draws; it costs a stall per object.
 void finishIfDebugging() {
-    static const bool finish = [] {
-        const char* env = std::getenv("STRATA_DEBUG_FINISH_DRAWS");
-        return env && std::string(env) == "1";
-    }();
+    static const bool finish = gl::debugSwitch("STRATA_DEBUG_FINISH_DRAWS");
     if (finish) glFinish();
 }
 
@@ -274,21 +271,16 @@ void GpuScene::uploadTextures() {
 
 namespace {
 
-bool debugEnv(const char* name) {
-    const char* env = std::getenv(name);
-    return env && std::string(env) == "1";
-}
-
 // STRATA_DEBUG_CHECK_UNIFORMS=1: reads back what was just set (docs/gpu-h100.md, group 2).
 bool checkingUniforms() {
-    static const bool on = debugEnv("STRATA_DEBUG_CHECK_UNIFORMS");
+    static const bool on = gl::debugSwitch("STRATA_DEBUG_CHECK_UNIFORMS");
     return on;
 }
 
 // STRATA_DEBUG_FRAME_UNIFORMS_PER_DRAW=1: the frame's uniforms set again on the drawing program
 // before every draw, rather than once per pass and copied onto variants.
 bool frameUniformsPerDraw() {
-    static const bool on = debugEnv("STRATA_DEBUG_FRAME_UNIFORMS_PER_DRAW");
+    static const bool on = gl::debugSwitch("STRATA_DEBUG_FRAME_UNIFORMS_PER_DRAW");
     return on;
 }
 
