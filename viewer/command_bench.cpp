@@ -69,18 +69,7 @@ void run(const BenchArgs& a) {
     if (autoMode) {
         // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
         // measured on this device at this size, two frames a configuration, then benched.
-        BenchOptions probe = options;
-        probe.zoom = 1;  // as `strata advise` measures: zoom 1, geometry
-        probe.budget.reset();
-        probe.frames = 2;
-        probe.warmupFrames = 1;
-        std::vector<AdvisorPoint> points = measureCandidates(gpu, advisorCandidates({}, true), probe, options.progress);
-        if (points.empty()) throw Interrupted(interruptSignal());
-        markPareto(points);
-        const AdvisorPick pick = recommend(points, {});
-        const AdvisorCandidate& chosen = points[std::size_t(pick.index)].candidate;
-        std::fprintf(stderr, "--modes auto: %s (%s, of %zu configurations)\n", chosen.label().c_str(), pick.reason.c_str(),
-                     points.size());
+        const AdvisorCandidate chosen = autoPick(gpu, options, options.progress);
         options.modes = {chosen.id};
         std::vector<SettingAssignment> assignments;
         for (const std::string& s : chosen.assignments) assignments.push_back({chosen.id + "." + s, "--modes auto"});

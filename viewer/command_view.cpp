@@ -41,19 +41,8 @@ AdvisorCandidate adviseTechnique(const std::string& sceneSpec, glm::ivec2 size) 
     BenchOptions base;
     base.sceneName = sceneSpec;
     base.size = size;
-    base.frames = 2;
-    base.warmupFrames = 1;
-    const std::vector<AdvisorCandidate> candidates = advisorCandidates({}, true);
-    std::fprintf(stderr, "--mode auto: measuring %zu configurations at %dx%d\n", candidates.size(), size.x, size.y);
-    std::vector<AdvisorPoint> points =
-        measureCandidates(gpu, candidates, base, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
-    if (points.empty()) throw Interrupted(interruptSignal());
-    markPareto(points);
-    const AdvisorPick pick = recommend(points, {});
-    const AdvisorPoint& p = points[std::size_t(pick.index)];
-    std::fprintf(stderr, "--mode auto: %s (%s): frame %.3f ms, RMSE %.2e\n", p.candidate.label().c_str(),
-                 pick.reason.c_str(), p.frameMs, p.rmse);
-    return p.candidate;
+    std::fprintf(stderr, "--mode auto: measuring every technique and its trades at %dx%d\n", size.x, size.y);
+    return autoPick(gpu, base, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "bench/advisor.hpp"
 
 #include "bench/bench.hpp"
+#include "io/interrupt.hpp"
 #include "oit/technique.hpp"
 
 #include <algorithm>
@@ -178,6 +179,24 @@ std::vector<AdvisorPoint> measureCandidates(const GpuScene& scene, const std::ve
         say("advise: " + std::to_string(skipped) + " trades not measured: their techniques' defaults took over " +
             fixed("%.3g", tradeLimitMs) + " ms");
     return points;
+}
+
+AdvisorCandidate autoPick(const GpuScene& scene, BenchOptions base,
+                          const std::function<void(const std::string&)>& progress) {
+    base.zoom = 1;  // as `strata advise` measures: zoom 1, every object as geometry
+    base.budget.reset();
+    base.lod = nullptr;
+    base.frames = 2;
+    base.warmupFrames = 1;
+    std::vector<AdvisorPoint> points = measureCandidates(scene, advisorCandidates({}, true), base, progress);
+    if (points.empty()) throw Interrupted(interruptSignal());
+    markPareto(points);
+    const AdvisorPick pick = recommend(points, {});
+    const AdvisorPoint& p = points[std::size_t(pick.index)];
+    if (progress)
+        progress("auto: " + p.candidate.label() + " (" + pick.reason + ", of " + std::to_string(points.size()) +
+                 " configurations): frame " + fixed("%.3f", p.frameMs) + " ms, RMSE " + fixed("%.2e", p.rmse));
+    return p.candidate;
 }
 
 void markPareto(std::vector<AdvisorPoint>& points) {

@@ -87,6 +87,13 @@ std::string advisorTable(const std::vector<AdvisorPoint>& points, const AdvisorP
 std::string advisorPlot(const std::vector<AdvisorPoint>& points, const AdvisorPick& pick, int width = 64,
                         int height = 16);
 
+// What `bench --modes auto` and `view --mode auto` run: every technique with its trades at
+// `base`'s size, two frames and one warm-up each, under the default rule. Prints one line naming
+// the pick through `progress`. Throws Interrupted (io/interrupt.hpp) when a signal stopped it
+// before anything was measured.
+AdvisorCandidate autoPick(const GpuScene& scene, BenchOptions base,
+                          const std::function<void(const std::string&)>& progress);
+
 nlohmann::json advisorToJson(const std::vector<AdvisorPoint>& points, const AdvisorPick& pick,
                              const AdvisorCriteria& criteria);
 
