@@ -144,11 +144,7 @@ public:
         choices_.filter = int(DeflectFilter::Bilinear);
         choices_.stereo = options.stereo;
         zoom_.choices() = zoomChoicesFrom(options);
-        // Level of detail as in the walkthrough window (view_app.cpp): baking under a per-frame
-        // budget, geometry drawn until an object's impostor is ready.
-        lod::LodOptions lodOptions = options.lod.options();
-        lodOptions.bakeBudgetMs = kViewerBakeBudgetMs;
-        lod_ = std::make_unique<lod::LodController>(scene_, lodOptions, &std::cerr);
+        lod_ = makeWindowLod(scene_, options.lod);  // as the walkthrough window's
         choices_.ipdMm = float(options.ipdMm);
         choices_.extraLatencyMs = float(options.extraLatencyMs);
         history_.resize(predictorNames_.size() * kDeflects.size());

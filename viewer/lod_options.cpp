@@ -1,6 +1,7 @@
 #include "lod_options.hpp"
 
 #include <cstdio>
+#include <iostream>
 
 namespace strata {
 
@@ -130,6 +131,12 @@ std::string lodSummary(const lod::LodController& controller) {
     else if (c)
         add("; cost model calibrated in %.0f ms", c->wallMs);
     return line;
+}
+
+std::unique_ptr<lod::LodController> makeWindowLod(const GpuScene& scene, const LodArgs& args) {
+    lod::LodOptions options = args.options();
+    options.bakeBudgetMs = kViewerBakeBudgetMs;
+    return std::make_unique<lod::LodController>(scene, options, &std::cerr);
 }
 
 }  // namespace strata

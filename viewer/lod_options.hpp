@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <string>
 
 namespace strata {
@@ -30,6 +31,10 @@ struct LodArgs {
 };
 
 void addLodOptions(CLI::App* cmd, LodArgs& args);
+
+// The LOD of an interactive window (walkthrough and immersive): baking under kViewerBakeBudgetMs
+// a frame, objects drawn as geometry until their impostor is ready; progress on stderr.
+std::unique_ptr<lod::LodController> makeWindowLod(const GpuScene& scene, const LodArgs& args);
 
 // What a bench JSON's "lod" holds: the mode, the impostor settings, and once calibrated the
 // cost model (lod/lod_cost_model.hpp) and the bake's time and memory.

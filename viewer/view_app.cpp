@@ -60,11 +60,9 @@ public:
         settings_.technique = technique_->settings();
         settings_.view = options.view;
         zoom_.choices() = zoomChoicesFrom(options);
-        lod::LodOptions lodOptions = options.lod.options();
-        // Interactive: a frame starts no impostor bake past this (one at least); objects draw
-        // their geometry until their impostor is ready, and the panel says how many wait.
-        lodOptions.bakeBudgetMs = kViewerBakeBudgetMs;
-        lod_ = std::make_unique<lod::LodController>(scene_, lodOptions, &std::cerr);
+        // Interactive: a frame starts no impostor bake past its budget (one at least); objects
+        // draw their geometry until their impostor is ready, and the panel says how many wait.
+        lod_ = makeWindowLod(scene_, options.lod);
         recordPath_ = options.recordPath ? *options.recordPath : std::filesystem::path("strata-path.txt");
         if (options.playPath) {
             path_ = CameraPath::read(*options.playPath);
