@@ -1,6 +1,7 @@
 #include "lod/lod_controller.hpp"
 
 #include "lod/view_directions.hpp"
+#include "render/frustum.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -197,30 +198,11 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
         framesDrawn_ += std::max(frames, 0);
         return nullptr;
     }
-    if (options_.mode == LodMode::Auto && !calibration_ && options_.costModel) {
-        calibration_ = LodCalibration{};
-        calibration_->model = *options_.costModel;
-        calibration_->device = "given";
-    }
-    if (options_.mode == LodMode::Auto && !calibration_) {
-        calibration_ = calibrateLodCost();
-        if (progress_)
-            *progress_ << "lod: cost model on " << calibration_->device << ": geometry "
-                       << calibration_->model.geometryMsPerMegatriangle << " ms/Mtri, impostor "
-                       << calibration_->model.impostorMsPerMegapixel << " ms per million layer pixels ("
-                       << calibration_->wallMs << " ms)\n";
-    }
+    ensureCalibrated();
     const LodView view = lodView(camera, size);
     const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
     bakeCandidates(view, model);
-    for (std::size_t i = 0; i < inputs_.size(); ++i) {
-        if (!inputs_[i].hasImpostor) continue;
-        const LayeredImpostor& impostor = *impostors_->impostorOfId(keys_.ofUnit[i]);
-        const glm::vec3 eye = impostors_->eyeInObject(keys_.units.units[i].objects[0], camera.position);
-        const int nearest = impostor.nearestView(eye);
-        inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(eye);
-        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofUnit[i])][std::size_t(nearest)];
-    }
+    updateViewAngles(camera.position);
     unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     if (enforceMemoryCap()) unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     std::vector<bool> use(inputs_.size());
@@ -240,6 +222,91 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
     selection_.geometryOnlyMs = unitSelection_.geometryOnlyMs;
     framesDrawn_ += std::max(frames, 0);
     return selection_.impostorObjects > 0 ? &standIns_ : nullptr;
+}
+
+void LodController::ensureCalibrated() {
+    if (options_.mode != LodMode::Auto || calibration_) return;
+    if (options_.costModel) {
+        calibration_ = LodCalibration{};
+        calibration_->model = *options_.costModel;
+        calibration_->device = "given";
+        return;
+    }
+    calibration_ = calibrateLodCost();
+    if (progress_)
+        *progress_ << "lod: cost model on " << calibration_->device << ": geometry "
+                   << calibration_->model.geometryMsPerMegatriangle << " ms/Mtri, impostor "
+                   << calibration_->model.impostorMsPerMegapixel << " ms per million layer pixels ("
+                   << calibration_->wallMs << " ms)\n";
+}
+
+void LodController::updateViewAngles(const glm::vec3& eye) {
+    if (!impostors_) return;
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+        if (!inputs_[i].hasImpostor) continue;
+        const LayeredImpostor& impostor = *impostors_->impostorOfId(keys_.ofUnit[i]);
+        const glm::vec3 local = impostors_->eyeInObject(keys_.units.units[i].objects[0], eye);
+        const int nearest = impostor.nearestView(local);
+        inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(local);
+        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofUnit[i])][std::size_t(nearest)];
+    }
+}
+
+LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, const std::vector<double>& boundsPx) {
+    LodPreview preview;
+    if (options_.mode != LodMode::Auto) return preview;  // no bound to steer
+    ensureCalibrated();
+    const LodView view = lodView(camera, size);
+    const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
+    updateViewAngles(camera.position);
+    // The units the renderer will draw (outside the frustum they cost nothing at any bound); one
+    // not baked yet is judged as bakeCandidates judges it: as if baked, seen along a view.
+    const Frustum frustum(camera.projection(float(size.x) / float(std::max(size.y, 1))) * camera.view());
+    std::vector<LodObjectInput> inputs;
+    inputs.reserve(inputs_.size());
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+        if (frustum.classify(inputs_[i].center, inputs_[i].radius) == Frustum::Side::Outside) continue;
+        LodObjectInput& in = inputs.emplace_back(inputs_[i]);
+        const int id = keys_.ofUnit[i];
+        if (in.hasImpostor || id < 0 || (impostors_ && impostors_->tried(id))) continue;
+        in.hasImpostor = true;
+        in.impostor.slices = options_.impostor.slices;
+        in.impostor.resolution = options_.impostor.resolution;
+        in.impostor.viewAngleRadians = 0.0;
+        in.impostor.drawnFraction = 0.785;
+    }
+    const double area = double(size.x) * double(size.y);
+    auto discArea = [&](const LodDecision& d) {
+        const double px = std::isfinite(d.projectedPx) ? d.projectedPx : 2.0 * double(std::max(size.x, size.y));
+        return std::min(0.7853981633974483 * px * px, area);
+    };
+    bool first = true;
+    for (double bound : boundsPx) {
+        const LodSelection s = selectLod(inputs, view, model, {LodMode::Auto, bound});
+        LodLevelPreview level;
+        level.boundPx = bound;
+        level.predictedMs = s.predictedMs;
+        level.impostorObjects = s.impostorObjects;
+        // The loss is the impostors' error bounds weighted by their discs, over the larger of the
+        // discs' summed area and the image's (overlapping discs share pixels): at most the bound.
+        double covered = 0.0, weightedError = 0.0;
+        for (std::size_t i = 0; i < s.objects.size(); ++i) {
+            const LodDecision& d = s.objects[i];
+            if (d.impostor) weightedError += d.errorPx * discArea(d);
+            covered += discArea(d);
+            // What of the prediction scales with the frame's pixels (a zoom divides it by z^2):
+            // the impostor's layer pixels, the geometry's covered pixels.
+            const double fixedMs = d.impostor ? model.impostorFixedMs
+                                              : model.geometryMs(double(inputs[i].triangles), 0.0,
+                                                                 double(std::max(inputs[i].objects, 1)));
+            level.pixelMs += std::max(0.0, (d.impostor ? d.impostorMs : d.geometryMs) - fixedMs);
+        }
+        level.lossPx = weightedError / std::max({covered, area, 1.0});
+        if (first) preview.coverage = std::min(1.0, covered / std::max(area, 1.0));
+        first = false;
+        preview.levels.push_back(level);
+    }
+    return preview;
 }
 
 std::uint64_t LodController::formulaBytes(std::size_t id) const {

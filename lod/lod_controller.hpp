@@ -9,6 +9,7 @@
 #include "lod/lod_cost_model.hpp"
 #include "lod/lod_select.hpp"
 #include "camera/camera.hpp"
+#include "frame/budget_governor.hpp"
 #include "render/gpu_scene.hpp"
 #include "render/stand_in.hpp"
 
@@ -67,6 +68,13 @@ public:
     // LodOptions::plannedFrames).
     const StandIns* select(const Camera& camera, glm::ivec2 size, int frames = 1);
 
+    // What auto would select this frame at each error bound (the frame budget's LOD lever,
+    // frame/budget_governor.hpp): predicted time, the impostors' loss and count per bound, and
+    // the share of the image the units cover. Units not baked yet count as if baked (as the bake
+    // step judges them). Empty levels unless the mode is auto. Bakes nothing; calibrates the
+    // cost model when it is not yet.
+    LodPreview previewBounds(const Camera& camera, glm::ivec2 size, const std::vector<double>& boundsPx);
+
     // The last frame's decisions per object (each its unit's; totals over the units) and per
     // LOD unit (lod/lod_units.hpp: units().units[u]).
     const LodSelection& selection() const { return selection_; }
@@ -86,6 +94,8 @@ public:
 
 private:
     void bakeCandidates(const LodView& view, const LodCostModel& model);
+    void ensureCalibrated();                    // auto: the given model, or one measured now
+    void updateViewAngles(const glm::vec3& eye); // each baked unit's nearest view from `eye`
 
     const GpuScene& scene_;
     LodOptions options_;

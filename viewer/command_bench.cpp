@@ -55,7 +55,11 @@ void run(const BenchArgs& a) {
     options.zoom = a.zoom.fixedZoom();
     options.zoomFilter = a.zoom.filter();
     options.budget = a.zoom.budget();
-    if (options.budget) options.zoomController = a.zoom.controllerKind();
+    if (options.budget) {
+        options.zoomController = a.zoom.controllerKind();
+        options.levers = a.zoom.levers(a.lod.options().mode);
+        options.lodLadder.basePx = a.lod.options().maxErrorPx;
+    }
     if (!a.images.empty()) checkFolderCreatable(a.images);
     if (!a.report.empty()) checkFolderCreatable(a.report);
     const lod::LodOptions lodOptions = a.lod.options();
@@ -100,14 +104,19 @@ void run(const BenchArgs& a) {
         planned.plannedFrames = (long long)modes * (options.frames + options.warmupFrames);
         lodController.emplace(gpu, planned, &std::cerr);
         lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size, 0);  // bakes before timing
-        options.lod = [&](const Camera& camera, glm::ivec2 size, int frames) {
+        options.lod = [&](const Camera& camera, glm::ivec2 size, int frames, double maxErrorPx) {
             BenchLodFrame frame;
+            lodController->setMaxErrorPx(maxErrorPx > 0.0 ? maxErrorPx : lodOptions.maxErrorPx);
             frame.standIns = lodController->select(camera, size, frames);
             frame.impostorObjects = lodController->selection().impostorObjects;
             frame.impostorBytes = lodController->selection().impostorBytes;
             return frame;
         };
         options.lodReport = lodReport(*lodController);
+        if (lodOptions.mode == lod::LodMode::Auto)
+            options.lodPreview = [&](const Camera& camera, glm::ivec2 size, const std::vector<double>& bounds) {
+                return lodController->previewBounds(camera, size, bounds);
+            };
     } else {
         options.lodReport = {{"mode", "geometry"}};
     }

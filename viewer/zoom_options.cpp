@@ -14,6 +14,15 @@ std::optional<ZoomBudget> ZoomArgs::budget() const {
     return b;
 }
 
+BudgetLevers ZoomArgs::levers(lod::LodMode mode) const {
+    BudgetLevers l = parseBudgetLevers(leverList);
+    if (mode == lod::LodMode::Auto || !l.lod) return l;
+    if (!l.zoom)
+        throw std::invalid_argument("--budget-levers lod needs --lod auto (the bound steers auto's choice; --lod is " +
+                                    std::string(lod::to_string(mode)) + ")");
+    return {true, false};
+}
+
 void addZoomOptions(CLI::App* cmd, ZoomArgs& args, bool withBudget, const std::string& what) {
     auto* zoom = cmd->add_option("--zoom", args.zoom, "draw at 1/Z of the " + what + " and enlarge (1..16)")
                      ->capture_default_str();
@@ -25,6 +34,11 @@ void addZoomOptions(CLI::App* cmd, ZoomArgs& args, bool withBudget, const std::s
     budget->excludes(zoom);
     cmd->add_option("--zoom-controller", args.controller, "reactive or predictive (with --frame-budget-ms)")
         ->check(CLI::IsMember({"reactive", "predictive"}))
+        ->capture_default_str()
+        ->needs(budget);
+    cmd->add_option("--budget-levers", args.leverList,
+                    "what the budget steers: zoom, lod (the auto LOD error bound) or zoom,lod")
+        ->check(CLI::IsMember({"zoom", "lod", "zoom,lod", "lod,zoom"}))
         ->capture_default_str()
         ->needs(budget);
     cmd->add_option("--zoom-max", args.maxZoom, "the largest zoom a controller may pick")

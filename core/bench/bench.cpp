@@ -100,7 +100,13 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     report.zoom = options.budget ? 0 : options.zoom;
     report.zoomFilter = std::string(deflectFilterName(options.zoomFilter));
     report.budget = options.budget;
-    if (options.budget) report.zoomController = std::string(zoomControllerName(options.zoomController));
+    // The LOD lever needs LOD previews (an auto LOD controller); without them the zoom steers alone.
+    const BudgetLevers levers{options.levers.zoom || !options.lodPreview,
+                              options.levers.lod && bool(options.lodPreview)};
+    if (options.budget) {
+        report.zoomController = std::string(zoomControllerName(options.zoomController));
+        report.budgetLevers = to_string(levers);
+    }
     // A zoomed technique is compared with the reference at zoom 1: the reference's own rows then
     // render like any other technique's, against a reference technique of their own.
     // So is a technique drawn with stand-ins (BenchOptions::lod): the reference draws geometry.
@@ -175,7 +181,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         frameOptions.zoom = options.budget ? 1 : options.zoom;
         frameOptions.zoomFilter = options.zoomFilter;
         if (options.lod)
-            frameOptions.standIns = options.lod(cameras.front(), options.size, options.warmupFrames).standIns;
+            frameOptions.standIns = options.lod(cameras.front(), options.size, options.warmupFrames, 0.0).standIns;
         for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique, frameOptions);
         gl::checkGl(("bench warm-up of " + id).c_str());
 
@@ -187,7 +193,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.rgbTransmittance = technique->info().rgbTransmittance;
         mode.settingDescriptions = technique->settingDescriptions();
         mode.settings = technique->settings();
-        std::unique_ptr<ZoomController> controller;
+        std::unique_ptr<BudgetGovernor> controller;
         // Under a budget, each frame is also rendered as it would be without one (zoom 1, every
         // object as geometry) by a technique and renderer of its own, untimed: what the budget's
         // choices cost in image quality, frame by frame (BenchMode::framePsnr).
@@ -199,7 +205,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             if (options.zoomController == ZoomControllerKind::Predictive)
                 model = calibrateZoomCost(*technique, options.size, options.budget->maxZoom, options.progress).model;
             mode.calibratedModel = model;
-            controller = makeZoomController(options.zoomController, *options.budget, model);
+            controller = std::make_unique<BudgetGovernor>(*options.budget, levers, options.zoomController, model);
         }
         mode.zoom = options.budget ? 0 : options.zoom;
         std::vector<double> gpu, cpu, opaque, frame, enlarge, lodMs;
@@ -216,18 +222,22 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             // The reference frame first (when it is not in hand), so the technique's frame is the
             // last one rendered when its output is read.
             if (!isReference) referenceFor(reference, referenceId, f);
-            FrameLoad load;
+            GovernorLoad load;
+            double boundPx = 0.0;  // the LOD options' own
             if (controller) {
                 const Camera& c = cameras[f];
-                load.displaySize = options.size;
-                load.transparentArea = transparentScreenArea(
+                load.zoom.displaySize = options.size;
+                load.zoom.transparentArea = transparentScreenArea(
                     scene, c.projection(float(options.size.x) / float(options.size.y)) * c.view(), options.size);
-                frameOptions.zoom = controller->choose(load);
+                if (levers.lod) load.lod = options.lodPreview(c, options.size, options.lodLadder.bounds());
+                const GovernorChoice choice = controller->choose(load);
+                frameOptions.zoom = choice.zoom;
+                if (levers.lod && !load.lod.levels.empty()) boundPx = options.lodLadder.bound(choice.lodLevel);
             }
             int frameImpostors = 0;
             if (options.lod) {
                 const auto lodStart = std::chrono::steady_clock::now();
-                const BenchLodFrame lod = options.lod(cameras[f], options.size, 1);
+                const BenchLodFrame lod = options.lod(cameras[f], options.size, 1, boundPx);
                 lodMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - lodStart).count());
                 frameOptions.standIns = lod.standIns;
                 frameImpostors = lod.impostorObjects;
@@ -237,8 +247,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             FrameResult r = renderer.render(scene, cameras[f], options.size, technique, frameOptions);
             gl::checkGl(("bench frame of " + id).c_str());
             if (controller) {
-                const double predicted = controller->predictedMs();
-                controller->observe(FrameCost{frameOptions.zoom, r.gpuMs, fragmentsRasterized(r.stats), load});
+                const double predicted = controller->last().predictedMs;
+                mode.frameLodBoundPx.push_back(boundPx);
+                mode.frameLossPx.push_back(controller->last().lossPx);
+                controller->observe(FrameCost{frameOptions.zoom, r.gpuMs, fragmentsRasterized(r.stats), load.zoom});
                 mode.frameZoom.push_back(frameOptions.zoom);
                 mode.frameMs.push_back(r.gpuMs);
                 mode.framePredictedMs.push_back(std::isfinite(predicted) ? predicted : 0.0);

@@ -7,6 +7,7 @@
 // does not grow with the frame count. With a camera path, each technique frame is preceded by the
 // reference frame for the same camera (untimed); with a fixed camera the reference renders once.
 #include "camera/camera_path.hpp"
+#include "frame/budget_governor.hpp"
 #include "frame/zoom_controller.hpp"
 #include "gl/context.hpp"
 #include "image/image.hpp"
@@ -68,8 +69,15 @@ struct BenchOptions {
     // warm-up's call draws warmupFrames); says what stands in for objects (null: all
     // geometry) and how many and how much. The reference always draws geometry, so the error
     // includes what the impostors lose. `lodReport` goes into the JSON as "lod" as given.
-    std::function<BenchLodFrame(const Camera&, glm::ivec2 size, int frames)> lod;
+    // `maxErrorPx`: the LOD error bound for this frame (the frame budget's LOD lever); 0 keeps the
+    // LOD options' own.
+    std::function<BenchLodFrame(const Camera&, glm::ivec2 size, int frames, double maxErrorPx)> lod;
     nlohmann::json lodReport;
+    // Under a budget with the LOD lever (frame/budget_governor.hpp): what LOD would do at each of
+    // the ladder's bounds this frame (LodController::previewBounds); empty: no LOD lever.
+    std::function<LodPreview(const Camera&, glm::ivec2 size, const std::vector<double>& boundsPx)> lodPreview;
+    BudgetLevers levers{true, false};  // what the budget steers (the LOD lever needs lodPreview)
+    LodLadder lodLadder;               // the bounds it steers among
 };
 
 // A run of consecutive frames over the budget's upper edge (target x (1 + band)).
@@ -121,6 +129,9 @@ struct BenchMode {
     // against the same technique's frame without a budget (zoom 1, geometry; 100 when equal).
     std::vector<int> frameImpostorObjects;
     std::vector<double> framePsnr;
+    // And the LOD error bound each frame used (0: the LOD options' own, no LOD lever), and the
+    // governor's loss for its state (budget_governor.hpp's rule, display pixels).
+    std::vector<double> frameLodBoundPx, frameLossPx;
     BudgetHits budgetHits;
     std::vector<BudgetExcursion> excursions;
     ZoomCostModel calibratedModel;                            // predictive: what calibration fitted
@@ -151,6 +162,7 @@ struct BenchReport {
     std::string zoomFilter = "nearest";
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
+    std::string budgetLevers;          // "zoom", "lod" or "zoom,lod" under a budget
     nlohmann::json lod;                // BenchOptions::lodReport (null without LOD)
     // A signal stopped the run: `modes` are those that completed, of `modesPlanned`.
     bool interrupted = false;

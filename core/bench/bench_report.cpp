@@ -82,9 +82,13 @@ nlohmann::json benchToJson(const BenchReport& r) {
             for (double t : m.frameMs) times.push_back(finite(t));
             nlohmann::json psnr = nlohmann::json::array();
             for (double p : m.framePsnr) psnr.push_back(finite(p));
+            nlohmann::json bounds = nlohmann::json::array(), losses = nlohmann::json::array();
+            for (double b : m.frameLodBoundPx) bounds.push_back(finite(b));
+            for (double l : m.frameLossPx) losses.push_back(finite(l));
             modes.back()["budget"] = {
                 {"frame_zoom", m.frameZoom}, {"frame_ms", times}, {"frame_predicted_ms", predicted},
                 {"frame_impostor_objects", m.frameImpostorObjects}, {"frame_psnr", psnr},
+                {"frame_lod_bound_px", bounds}, {"frame_loss_px", losses},
                 {"within_band", finite(m.budgetHits.within)}, {"not_over_band", finite(m.budgetHits.notOver)},
                 {"excursions", excursions},
                 {"model", {{"fixed_ms", finite(m.calibratedModel.fixedMs)},
@@ -113,6 +117,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"zoom_filter", r.zoomFilter},
         {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
         {"zoom_controller", r.zoomController},
+        {"budget_levers", r.budgetLevers},
         {"lod", r.lod},
         {"interrupted", r.interrupted},
     };

@@ -1,0 +1,228 @@
+#include "frame/budget_governor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace strata {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double median(std::deque<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// Two losses (or times) closer than this are equal: the tie goes to the other criterion.
+constexpr double kTie = 1e-9;
+
+}  // namespace
+
+BudgetLevers parseBudgetLevers(std::string_view text) {
+    if (text == "zoom") return {true, false};
+    if (text == "lod") return {false, true};
+    if (text == "zoom,lod" || text == "lod,zoom") return {true, true};
+    throw std::invalid_argument("budget levers '" + std::string(text) + "' are not one of zoom|lod|zoom,lod");
+}
+
+std::string to_string(BudgetLevers levers) {
+    if (levers.zoom && levers.lod) return "zoom,lod";
+    return levers.zoom ? "zoom" : "lod";
+}
+
+double LodLadder::bound(int level) const { return basePx * std::ldexp(1.0, std::max(level, 0)); }
+
+std::vector<double> LodLadder::bounds() const {
+    std::vector<double> b;
+    for (int k = 0; k < levels; ++k) b.push_back(bound(k));
+    return b;
+}
+
+double zoomLossPx(int zoom) { return 0.5 * double(std::max(zoom, 1) - 1); }
+
+BudgetGovernor::BudgetGovernor(const ZoomBudget& budget, BudgetLevers levers, ZoomControllerKind kind,
+                               const ZoomCostModel& model, LossScales scales)
+    : budget_(budget), levers_(levers), kind_(kind), model_(model), scales_(scales), beforeMs_(kNaN) {
+    if (!levers.zoom && !levers.lod) throw std::invalid_argument("a frame budget needs at least one lever");
+    // Both controllers check the budget; the zoom part is built either way for that.
+    zoomOnly_ = makeZoomController(kind, budget, model);
+    if (levers_.lod) zoomOnly_.reset();
+    if (levers_.lod && kind == ZoomControllerKind::Predictive)
+        zoomPart_ = std::make_unique<PredictiveZoomController>(budget, model);
+    zoom_ = budget.minZoom;
+    hold_ = budget.holdFrames;
+}
+
+int BudgetGovernor::lowestZoom(const GovernorLoad& load) const {
+    return std::min(std::max(budget_.minZoom, load.zoom.zoomFloor), budget_.maxZoom);
+}
+
+int BudgetGovernor::highestZoom(const GovernorLoad& load) const {
+    // Without the zoom lever the zoom stays at its floor (the head speed still raises it).
+    return levers_.zoom ? budget_.maxZoom : lowestZoom(load);
+}
+
+int BudgetGovernor::highestLevel(const GovernorLoad& load) const {
+    return levers_.lod && !load.lod.levels.empty() ? int(load.lod.levels.size()) - 1 : 0;
+}
+
+double BudgetGovernor::lodMs(const GovernorLoad& load, int level, int zoom) const {
+    if (load.lod.levels.empty()) return 0.0;
+    const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
+    const double z2 = double(zoom) * double(zoom);
+    return l.predictedMs - l.pixelMs + l.pixelMs / z2;
+}
+
+double BudgetGovernor::loss(const GovernorLoad& load, int zoom, int level) const {
+    double px = scales_.zoom * zoomLossPx(zoom) * std::clamp(load.lod.coverage, 0.0, 1.0);
+    if (!load.lod.levels.empty())
+        px += scales_.lod * load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))].lossPx;
+    return px;
+}
+
+GovernorChoice BudgetGovernor::choose(const GovernorLoad& load) {
+    lastLoad_ = load;
+    if (zoomOnly_) {
+        last_ = GovernorChoice{zoomOnly_->choose(load.zoom), 0, zoomOnly_->predictedMs(), 0.0};
+        last_.lossPx = loss(load, last_.zoom, 0);
+        return last_;
+    }
+    last_ = kind_ == ZoomControllerKind::Predictive ? choosePredictive(load) : chooseReactive(load);
+    return last_;
+}
+
+// --- predictive -------------------------------------------------------------------------------
+
+GovernorChoice BudgetGovernor::choosePredictive(const GovernorLoad& load) {
+    GovernorChoice best{lowestZoom(load), 0, kNaN, 0.0};
+    bool bestFits = false;
+    for (int z = lowestZoom(load); z <= highestZoom(load); ++z)
+        for (int k = 0; k <= highestLevel(load); ++k) {
+            const double ms = zoomPart_->predict(load.zoom, z) + lodMs(load, k, z);
+            const double px = loss(load, z, k);
+            const bool fits = ms <= budget_.targetMs;
+            bool better;
+            if (!std::isfinite(best.predictedMs)) better = true;
+            else if (fits != bestFits) better = fits;
+            else if (fits) better = px < best.lossPx - kTie || (px <= best.lossPx + kTie && ms < best.predictedMs);
+            else better = ms < best.predictedMs - kTie || (ms <= best.predictedMs + kTie && px < best.lossPx);
+            if (better) {
+                best = GovernorChoice{z, k, ms, px};
+                bestFits = fits;
+            }
+        }
+    return best;
+}
+
+// --- reactive ---------------------------------------------------------------------------------
+
+double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int zoom, int level) const {
+    const glm::ivec2 display = load.zoom.displaySize;
+    double scaled = ms;
+    if (display.x > 0 && zoom != zoom_) {
+        const double p1 = zoomPixels(display, 1);
+        auto model = [&](int z) { return (1.0 - pixelShare_) + pixelShare_ * zoomPixels(display, z) / p1; };
+        scaled = ms * model(zoom) / model(zoom_);
+    }
+    return scaled + lodMs(load, level, zoom) - lodMs(load, level_, zoom);
+}
+
+void BudgetGovernor::changeState(int zoom, int level, bool controlled) {
+    beforeZoom_ = zoom_;
+    beforeLevel_ = level_;
+    beforeMs_ = controlled && !recent_.empty() ? median(recent_) : kNaN;
+    lastWasStepDown_ = zoom < zoom_ || level < level_;
+    zoom_ = zoom;
+    level_ = level;
+    recent_.clear();
+    sinceChange_ = 0;
+}
+
+GovernorChoice BudgetGovernor::chooseReactive(const GovernorLoad& load) {
+    const int zoom = std::clamp(zoom_, lowestZoom(load), highestZoom(load));
+    const int level = std::clamp(level_, 0, highestLevel(load));
+    // The head-speed floor (or a ladder that shrank) overrides: what was measured no longer applies.
+    if (zoom != zoom_ || level != level_) changeState(zoom, level, false);
+    const double predicted = recent_.empty() ? kNaN : median(recent_);
+    return GovernorChoice{zoom_, level_, predicted, loss(load, zoom_, level_)};
+}
+
+void BudgetGovernor::observe(const FrameCost& cost) {
+    if (zoomOnly_) {
+        zoomOnly_->observe(cost);
+        return;
+    }
+    const GovernorLoad& load = lastLoad_;
+    if (zoomPart_) {
+        // The zoom model learns the frame without LOD's predicted part, which the state adds back.
+        FrameCost zoomCost = cost;
+        zoomCost.ms = cost.ms - lodMs(load, last_.lodLevel, cost.zoom);
+        zoomPart_->observe(zoomCost);
+        return;
+    }
+    if (cost.zoom != zoom_) return;  // not the frame this governor chose
+    recent_.push_back(cost.ms);
+    while (int(recent_.size()) > budget_.holdFrames) recent_.pop_front();
+    if (++sinceChange_ < hold_) return;
+    const double now = median(recent_);
+
+    // Learn the pixel share from a change of zoom alone (the bound held): t = a + b P through the
+    // medians before and after, as the reactive zoom controller does.
+    const glm::ivec2 display = load.zoom.displaySize;
+    if (std::isfinite(beforeMs_) && beforeZoom_ != zoom_ && beforeLevel_ == level_ && display.x > 0) {
+        const double p1 = zoomPixels(display, 1);
+        const double pb = zoomPixels(display, beforeZoom_) / p1, pn = zoomPixels(display, zoom_) / p1;
+        const double b = (beforeMs_ - now) / (pb - pn);
+        const double a = now - b * pn;
+        const double share = std::clamp(b / std::max(a + b, 1e-9), 0.02, 1.0);
+        if (std::isfinite(share)) pixelShare_ = share;
+    }
+    beforeMs_ = kNaN;
+
+    const double target = budget_.targetMs;
+    const bool over = now > target * (1.0 + budget_.band);
+    const bool under = now < target * (1.0 - budget_.band);
+    if (over || under) {
+        // Over: the lossier states (neither lever eased); under: the less lossy ones (neither
+        // lever raised). The least loss estimated to fit; over with none fitting, the fastest.
+        int bestZoom = zoom_, bestLevel = level_;
+        double bestMs = kNaN, bestPx = 0.0;
+        bool bestFits = false;
+        for (int z = lowestZoom(load); z <= highestZoom(load); ++z)
+            for (int k = 0; k <= highestLevel(load); ++k) {
+                if (z == zoom_ && k == level_) continue;
+                if (over && (z < zoom_ || k < level_)) continue;
+                if (under && (z > zoom_ || k > level_)) continue;
+                const double ms = reactiveEstimate(load, now, z, k);
+                // A bound that predicts no saving is no step at all.
+                if (over && z == zoom_ && ms >= now - kTie) continue;
+                const double px = loss(load, z, k);
+                const bool fits = ms <= target;
+                if (under && !fits) continue;
+                bool better;
+                if (!std::isfinite(bestMs)) better = true;
+                else if (fits != bestFits) better = fits;
+                else if (fits) better = px < bestPx - kTie || (px <= bestPx + kTie && ms < bestMs);
+                else better = ms < bestMs - kTie || (ms <= bestMs + kTie && px < bestPx);
+                if (better) {
+                    bestZoom = z;
+                    bestLevel = k;
+                    bestMs = ms;
+                    bestPx = px;
+                    bestFits = fits;
+                }
+            }
+        if (bestZoom != zoom_ || bestLevel != level_) {
+            // A relief that had to be undone doubles the hold before the next one (up to 8x).
+            if (over && lastWasStepDown_ && sinceChange_ <= hold_) hold_ = std::min(hold_ * 2, budget_.holdFrames * 8);
+            changeState(bestZoom, bestLevel, true);
+            return;
+        }
+    }
+    if (sinceChange_ >= 4 * hold_) hold_ = budget_.holdFrames;  // settled: the back-off ends
+}
+
+}  // namespace strata

@@ -1,0 +1,137 @@
+#pragma once
+// One frame budget for two levers (issue 24): the zoom factor (zoom rendering, Mazuryk et al.
+// 1996, section 3: "choose zoom factor based on graphics load, LOD algorithm, head movement
+// speed") and the LOD error bound (the layered-impostor paper's cost model decides, per object,
+// whether its impostor is cheaper; a larger bound lets more objects be impostors). CPU only: the
+// renderer measures and the LOD controller previews, this decides.
+//
+// The rule: among the (zoom, bound) states predicted to fit the target, the one that loses the
+// least; when none fits, the one predicted fastest. Loss is one unit for both levers: the mean
+// screen-space error per display pixel, in display pixels,
+//  - zoom z: every covered pixel shows a sample up to zoomLossPx(z) away (the enlarged block's
+//    corner from its sample), over the share of the display objects cover;
+//  - LOD at bound b: each impostor's error bound (parallax + sampling, lod/lod_error.hpp) over
+//    its screen area (LodLevelPreview::lossPx, from the LOD controller);
+// each times a per-lever scale (LossScales) that calibration may measure as image RMSE per pixel
+// of error (1 and 1 leave the pixel units as they are).
+//  - predictive: the time of every state, before the frame, from the zoom cost model (pixels,
+//    fragments, a learned offset) plus the LOD selection's predicted time at each bound.
+//  - reactive: from the measured median of the last `holdFrames` frames at the current state:
+//    over budget it moves to a lossier state (more zoom, a larger bound, or both), under it to a
+//    less lossy one, each estimated from the measured time (zoom: the learned pixel share; LOD:
+//    the selection's predicted difference), and never within the band.
+// With the zoom lever alone it is today's zoom controller (frame/zoom_controller.hpp), unchanged.
+#include "frame/zoom_controller.hpp"
+
+#include <deque>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace strata {
+
+struct BudgetLevers {
+    bool zoom = true;
+    bool lod = true;
+};
+// "zoom", "lod", "zoom,lod" (either order); anything else throws std::invalid_argument naming
+// the known ones.
+BudgetLevers parseBudgetLevers(std::string_view text);
+std::string to_string(BudgetLevers levers);
+
+// The LOD error bounds the governor chooses among: basePx x 2^k for k = 0 .. levels - 1.
+struct LodLadder {
+    double basePx = 4.0;
+    int levels = 4;
+    double bound(int level) const;
+    std::vector<double> bounds() const;
+};
+
+// What LOD would do this frame at one error bound (LodController::previewBounds).
+struct LodLevelPreview {
+    double boundPx = 0.0;
+    double predictedMs = 0.0;  // the selection's predicted time at zoom 1 (LodSelection::predictedMs)
+    double pixelMs = 0.0;      // the part of it that scales with the frame's pixels (1 / z^2 at zoom z)
+    // The impostors' error bounds weighted by their screen discs, over the larger of the discs'
+    // summed area and the display's: a mean error in display pixels, at most the bound.
+    double lossPx = 0.0;
+    int impostorObjects = 0;
+};
+
+struct LodPreview {
+    std::vector<LodLevelPreview> levels;  // one per ladder level; empty: no LOD lever this frame
+    double coverage = 1.0;                // share of the display the objects' discs cover (0..1)
+};
+
+struct GovernorLoad {
+    FrameLoad zoom;   // display size, transparent area, the head-speed floor
+    LodPreview lod;
+};
+
+struct GovernorChoice {
+    int zoom = 1;
+    int lodLevel = 0;         // index into the ladder (0 without the LOD lever)
+    double predictedMs = 0.0; // NaN where the policy has no estimate yet
+    double lossPx = 0.0;      // the state's loss under the rule above
+};
+
+// Per-lever weights of the loss (image RMSE per pixel of error, or 1 for pixel units).
+struct LossScales {
+    double zoom = 1.0;
+    double lod = 1.0;
+};
+
+// The farthest a display pixel lies from the sample it shows when a zoom-z frame is enlarged by
+// replication: a block corner from the block's sample, (z - 1) / 2 along each axis.
+double zoomLossPx(int zoom);
+
+class BudgetGovernor {
+public:
+    BudgetGovernor(const ZoomBudget& budget, BudgetLevers levers, ZoomControllerKind kind, const ZoomCostModel& model,
+                   LossScales scales = {});
+    // The state for the next frame. The caller draws with it and reports it through observe.
+    GovernorChoice choose(const GovernorLoad& load);
+    // The frame just drawn with the last choice (cost.zoom must be the chosen zoom).
+    void observe(const FrameCost& cost);
+
+    const ZoomBudget& budget() const { return budget_; }
+    BudgetLevers levers() const { return levers_; }
+    ZoomControllerKind kind() const { return kind_; }
+    const ZoomCostModel& model() const { return model_; }
+    const GovernorChoice& last() const { return last_; }
+    // The state's loss for a load (the rule's; public for tests and the panel).
+    double loss(const GovernorLoad& load, int zoom, int level) const;
+
+private:
+    GovernorChoice choosePredictive(const GovernorLoad& load);
+    GovernorChoice chooseReactive(const GovernorLoad& load);
+    // LOD's predicted time at a level and zoom (its pixel part divided by z^2).
+    double lodMs(const GovernorLoad& load, int level, int zoom) const;
+    int lowestZoom(const GovernorLoad& load) const;
+    int highestZoom(const GovernorLoad& load) const;
+    int highestLevel(const GovernorLoad& load) const;
+    // Reactive: the time at (zoom, level) of a frame measured `ms` at the current state.
+    double reactiveEstimate(const GovernorLoad& load, double ms, int zoom, int level) const;
+    void changeState(int zoom, int level, bool controlled);
+
+    ZoomBudget budget_;
+    BudgetLevers levers_;
+    ZoomControllerKind kind_;
+    ZoomCostModel model_;
+    LossScales scales_;
+    std::unique_ptr<ZoomController> zoomOnly_;         // the zoom lever alone: today's controller
+    std::unique_ptr<PredictiveZoomController> zoomPart_;  // predictive: the zoom model, LOD's predicted part removed
+    GovernorLoad lastLoad_;
+    GovernorChoice last_;
+    // Reactive state.
+    int zoom_ = 1, level_ = 0;
+    int sinceChange_ = 0, hold_ = 1;
+    bool lastWasStepDown_ = false;
+    std::deque<double> recent_;
+    int beforeZoom_ = 0, beforeLevel_ = 0;
+    double beforeMs_;
+    double pixelShare_ = 1.0;  // of the time at the current zoom, what scales with pixels
+};
+
+}  // namespace strata
