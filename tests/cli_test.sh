@@ -68,6 +68,10 @@ expect_error "--zoom excludes --frame-budget-ms" bench builtin:layers:2 --zoom 2
 expect_error "--zoom excludes --frame-budget-ms" view --zoom 3 --frame-budget-ms 5
 expect_error "--frame-budget-ms: Value -1 not in range" bench builtin:layers:2 --frame-budget-ms -1
 expect_error "--zoom-controller: pid not in {reactive,predictive}" bench builtin:layers:2 --frame-budget-ms 10 --zoom-controller pid
+expect_error "--budget-levers requires --frame-budget-ms" bench builtin:layers:2 --budget-levers lod
+expect_error "budget levers 'fps' are not one of zoom|lod|zoom,lod" bench builtin:layers:2 --frame-budget-ms 10 --budget-levers fps
+expect_error "--budget-levers lod needs --lod auto (the bound steers auto's choice; --lod is geometry)" bench builtin:layers:2 --frame-budget-ms 10 --budget-levers lod --lod geometry
+expect_error "--budget-levers lod needs --lod auto" view --frame-budget-ms 10 --budget-levers lod --lod impostors
 expect_error "--depth-tie-ulps: Value -1 not in range" render builtin:layers:2 --depth-tie-ulps -1 --out "$work/out.png"
 expect_error "--lod: fast not in {geometry,impostors,auto}" render builtin:layers:2 --lod fast --out "$work/out.png"
 expect_error "--impostor-views: 7 not in {12,20,32}" bench builtin:layers:2 --impostor-views 7
@@ -236,6 +240,11 @@ assert len(b['frame_zoom']) == len(b['frame_ms']) == len(b['frame_predicted_ms']
 assert all(1 <= z <= 3 for z in b['frame_zoom'])
 assert 0.0 <= b['within_band'] <= b['not_over_band'] <= 1.0
 assert b['model']['ms_per_megafragment'] >= 0.0
+# By default the budget also steers auto LOD's bound: one of 4, 8, 16, 32 px every frame.
+assert d['budget_levers'] == 'zoom,lod'
+assert len(b['frame_lod_bound_px']) == len(b['frame_loss_px']) == 6
+assert all(x in (4, 8, 16, 32) for x in b['frame_lod_bound_px']), b['frame_lod_bound_px']
+assert all(x >= 0 for x in b['frame_loss_px'])
 PY
 # Level of detail: forced impostors on a field of 4 (the ground stays geometry: the eye is within
 # 2 of its radii), in the render summary and the bench JSON; geometry bakes nothing.

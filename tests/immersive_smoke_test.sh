@@ -46,6 +46,11 @@ run_case() {  # name, extra arguments...
     (( ${scored:-0} >= 1 )) || fail "$name: no frame was scored"
     if [[ $name == zoomed ]]; then grep -q '^zoom: 2 (fixed)' <<<"$out" || fail "$name: no 'zoom: 2 (fixed)' line"; fi
     grep -q '^lod ' <<<"$out" || fail "$name: no 'lod' line (the immersive window has level of detail)"
+    if [[ $name == budget ]]; then
+        # The LOD lever alone: the zoom stays 1 and the bound is one of the ladder's.
+        grep -Eq '^zoom: 1 \(reactive, levers lod\), frame [0-9.]+ ms GPU(, predicted [0-9.]+ ms)?, lod bound (4|8|16|32)\.00 px' <<<"$out" ||
+            fail "$name: no 'zoom: 1 (reactive, levers lod) ... lod bound' line"
+    fi
     if [[ $name == impostors ]]; then
         local impostors
         impostors=$(sed -n 's/^lod impostors: \([0-9]*\) of .*/\1/p' <<<"$out")
@@ -61,6 +66,8 @@ run_case zoomed --zoom 2
 # Level of detail as in the walkthrough window: forced impostors bake (within the frame budget)
 # and draw in both eyes.
 run_case impostors --lod impostors --stereo
+# The frame budget steers the LOD error bound in this window too.
+run_case budget --frame-budget-ms 5 --budget-levers lod
 
 # Bad input fails before a window opens, with a message.
 if out=$("$strata" view builtin:default --immersive 2>&1); then fail "--immersive without --trace succeeded"; fi

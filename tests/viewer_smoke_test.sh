@@ -120,7 +120,7 @@ echo "viewer_smoke: inspector ok ($n fragments)"
 
 # Zoom rendering: at zoom 3 the error view measures what the zoom loses against the reference at
 # zoom 1 (abuffer against abuffer: only the zoom differs); under a frame budget the predictive
-# controller calibrates first and then picks a zoom within --zoom-max.
+# policy calibrates first and then picks a zoom within --zoom-max and a LOD bound.
 out=$(view --zoom 3 --view error --mode abuffer) || { echo "$out"; fail "strata view --zoom 3 failed"; }
 grep -q '^zoom: 3 (fixed)' <<<"$out" || fail "no 'zoom: 3 (fixed)' line: $out"
 line=$(grep '^error: ' <<<"$out") || fail "no 'error:' line at zoom 3"
@@ -130,7 +130,8 @@ out=$(view --frame-budget-ms 50 --zoom-controller predictive --zoom-max 4) ||
 grep -q '^zoom calibrated: ' <<<"$out" || fail "the predictive controller did not calibrate: $out"
 line=$(grep '^zoom: ' <<<"$out") || fail "no 'zoom:' line under a budget"
 echo "$line"
-[[ $line =~ ^zoom:\ [1-4]\ \(predictive\),\ frame\ [0-9.]+\ ms\ GPU,\ predicted\ [0-9.]+\ ms$ ]] ||
+# By default the budget steers the zoom and auto LOD's error bound (among 4, 8, 16 and 32 px).
+[[ $line =~ ^zoom:\ [1-4]\ \(predictive,\ levers\ zoom,lod\),\ frame\ [0-9.]+\ ms\ GPU,\ predicted\ [0-9.]+\ ms,\ lod\ bound\ (4|8|16|32)\.00\ px,\ loss\ [0-9.]+\ px$ ]] ||
     fail "unexpected zoom line under a budget: $line"
 echo "viewer_smoke: zoom ok"
 

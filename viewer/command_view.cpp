@@ -109,6 +109,7 @@ void registerViewCommand(CLI::App& app) {
         options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
         options->lod.options();     // and a bad impostor setting
+        options->zoom.levers(options->lod.options().mode);  // and a LOD lever with no auto LOD
         if (autoMode) {
             // Measured headless on this device once everything else is checked, before the window
             // opens (the panel can switch later).

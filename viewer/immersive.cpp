@@ -183,12 +183,12 @@ public:
         FrameOptions frameOptions;
         frameOptions.timePasses = true;
         frameOptions.enlarge = false;  // the deflection enlarges, in the same pass
-        zoom_.begin(scene_, eyeCamera(inFlight_.first[predictor], signs[0]), inFlight_.eyeSize, technique_.get(),
-                    frameOptions, headDegPerSecond_);
         // One selection for both eyes, from between them (their views differ by the eye distance,
-        // far below what moves an object's impostor choice). A failed bake is reported like a
-        // failed frame, and the eyes draw geometry.
+        // far below what moves an object's impostor choice), with the bound the budget sets. A
+        // failed bake is reported like a failed frame, and the eyes draw geometry.
         try {
+            zoom_.begin(scene_, eyeCamera(inFlight_.first[predictor], 0.0f), inFlight_.eyeSize, technique_.get(),
+                        frameOptions, headDegPerSecond_, lod_.get());
             frameOptions.standIns = lod_->select(eyeCamera(inFlight_.first[predictor], 0.0f), inFlight_.eyeSize);
         } catch (const std::exception& e) {
             if (smokeTest()) throw;

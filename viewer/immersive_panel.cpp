@@ -105,7 +105,8 @@ void drawImmersivePanel(const ImmersivePanelState& state, ImmersiveChoices& choi
         ImGui::Text("head %.0f deg/s", state.headDegPerSecond);
         drawZoomSection(*state.zoom, true);
     }
-    if (state.lod && ImGui::CollapsingHeader("Level of detail", ImGuiTreeNodeFlags_DefaultOpen)) drawLodSection(*state.lod);
+    if (state.lod && ImGui::CollapsingHeader("Level of detail", ImGuiTreeNodeFlags_DefaultOpen))
+        drawLodSection(*state.lod, state.zoom ? state.zoom->lodBoundPx() : 0.0);
     if (ImGui::CollapsingHeader("GPU time", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::Text("GPU %.3f ms   CPU %.3f ms per eye   %.0f fps", state.frame->gpuMs, state.frame->cpuMs,
                     ImGui::GetIO().Framerate);

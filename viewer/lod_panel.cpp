@@ -15,12 +15,14 @@ constexpr int kListedObjects = 200;  // the table lists this many units; the tot
 
 }  // namespace
 
-void drawLodSection(lod::LodController& lod) {
+void drawLodSection(lod::LodController& lod, double budgetBoundPx) {
     int mode = int(lod.options().mode);
     if (ImGui::Combo("level of detail", &mode, kModeNames, 3)) lod.setMode(lod::LodMode(mode));
     float maxError = float(lod.options().maxErrorPx);
-    if (lod.options().mode == lod::LodMode::Auto &&
-        ImGui::SliderFloat("max error px", &maxError, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+    if (lod.options().mode == lod::LodMode::Auto && budgetBoundPx > 0.0)
+        ImGui::Text("max error %.2f px, set by the frame budget", budgetBoundPx);
+    else if (lod.options().mode == lod::LodMode::Auto &&
+             ImGui::SliderFloat("max error px", &maxError, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
         lod.setMaxErrorPx(maxError);
     const lod::LodSelection& s = lod.selection();
     ImGui::TextWrapped("%s", lodSummary(lod).c_str());

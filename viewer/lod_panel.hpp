@@ -7,7 +7,9 @@
 
 namespace strata {
 
-void drawLodSection(lod::LodController& lod);
+// `budgetBoundPx` > 0: the frame budget sets auto's error bound (zoom_driver.hpp), so the panel
+// shows it instead of the slider.
+void drawLodSection(lod::LodController& lod, double budgetBoundPx = 0.0);
 void printLodFigures(const lod::LodController& lod);
 
 }  // namespace strata

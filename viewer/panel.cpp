@@ -229,7 +229,8 @@ glm::vec4 drawPanel(const PanelState& state, PanelSettings& settings, PanelReque
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) drawCamera(state, requests);
     if (state.zoom && ImGui::CollapsingHeader("Zoom rendering", ImGuiTreeNodeFlags_DefaultOpen))
         drawZoomSection(*state.zoom, false);
-    if (state.lod && ImGui::CollapsingHeader("Level of detail", ImGuiTreeNodeFlags_DefaultOpen)) drawLodSection(*state.lod);
+    if (state.lod && ImGui::CollapsingHeader("Level of detail", ImGuiTreeNodeFlags_DefaultOpen))
+        drawLodSection(*state.lod, state.zoom ? state.zoom->lodBoundPx() : 0.0);
     if (ImGui::Checkbox("vsync", &settings.vsync)) requests.vsyncChanged = true;
     ImGui::SameLine();
     drawErrorLines(state.lastGlError, state.lastError);

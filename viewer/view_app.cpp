@@ -335,13 +335,13 @@ private:
             technique_->setSettings(settings_.technique);
             techniqueSettings_[techniqueId_] = settings_.technique;
         }
-        zoom_.begin(scene_, camera_, size, technique_.get(), frameOptions);
-        // The heatmap is of the frame drawn: shown at the window's size, it needs zoom 1.
-        if (frameOptions.detectCoplanarity) frameOptions.zoom = 1;
         try {
             frameOk_ = false;
             // A failed bake or calibration (an edited shader) is reported like a failed frame.
             standIns_ = nullptr;
+            zoom_.begin(scene_, camera_, size, technique_.get(), frameOptions, 0.0, lod_.get());
+            // The heatmap is of the frame drawn: shown at the window's size, it needs zoom 1.
+            if (frameOptions.detectCoplanarity) frameOptions.zoom = 1;
             frameOptions.standIns = standIns_ = lod_->select(camera_, size);
             frame_ = renderer_->render(scene_, camera_, size, technique_.get(), frameOptions);
             zoom_.end(frame_, technique_.get());

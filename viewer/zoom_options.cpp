@@ -38,7 +38,14 @@ void addZoomOptions(CLI::App* cmd, ZoomArgs& args, bool withBudget, const std::s
         ->needs(budget);
     cmd->add_option("--budget-levers", args.leverList,
                     "what the budget steers: zoom, lod (the auto LOD error bound) or zoom,lod")
-        ->check(CLI::IsMember({"zoom", "lod", "zoom,lod", "lod,zoom"}))
+        ->check([](const std::string& text) {
+            try {
+                parseBudgetLevers(text);
+                return std::string();
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+        })
         ->capture_default_str()
         ->needs(budget);
     cmd->add_option("--zoom-max", args.maxZoom, "the largest zoom a controller may pick")
