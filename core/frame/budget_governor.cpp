@@ -157,7 +157,8 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     }
     const GovernorLoad& load = lastLoad_;
     if (zoomPart_) {
-        // The zoom model learns the frame without LOD's predicted part, which the state adds back.
+        // The zoom model learns the frame less LOD's predicted part at the state drawn, so its
+        // offset takes in what both models miss (a constant bias of LOD's included).
         FrameCost zoomCost = cost;
         zoomCost.ms = cost.ms - lodMs(load, last_.lodLevel, cost.zoom);
         zoomPart_->observe(zoomCost);

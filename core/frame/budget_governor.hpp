@@ -15,7 +15,10 @@
 // each times a per-lever scale (LossScales) that calibration may measure as image RMSE per pixel
 // of error (1 and 1 leave the pixel units as they are).
 //  - predictive: the time of every state, before the frame, from the zoom cost model (pixels,
-//    fragments, a learned offset) plus the LOD selection's predicted time at each bound.
+//    fragments) plus the LOD selection's predicted time at each bound (its pixel part divided by
+//    z^2), and an offset learnt from the frames drawn: what both models miss, a constant bias of
+//    LOD's included. A bias that grows with the bound or shrinks with the zoom is not learnt
+//    (on llvmpipe, what the LOD model counts per triangle is partly per pixel).
 //  - reactive: from the measured median of the last `holdFrames` frames at the current state:
 //    over budget it moves to a lossier state (more zoom, a larger bound, or both), under it to a
 //    less lossy one, each estimated from the measured time (zoom: the learned pixel share; LOD:
