@@ -41,8 +41,6 @@ done
 [[ -x $strata ]] || { echo "bench_budget.sh: no strata executable at $strata (run scripts/build.sh build)" >&2; exit 1; }
 mkdir -p "$out"
 export EGL_PLATFORM=${EGL_PLATFORM:-surfaceless}
-# Impostors baked once, here, not in the user's cache.
-export XDG_CACHE_HOME=${XDG_CACHE_HOME:-$out/cache}
 
 for name in ${scenes//,/ }; do
     case $name in
@@ -68,9 +66,9 @@ print('%.2f' % (float(sys.argv[2]) * statistics.median(d['modes'][0]['budget']['
                 --json "$out/$name-${levers/,/+}-$policy.json" >/dev/null 2>"$out/$name-${levers/,/+}-$policy.log"
         done
     done
-    python3 - "$out" "$name" "$scene" "$size" "$base" "$budget" <<'PY'
+    python3 - "$out" "$name" "$scene" "$size" "$base" "$budget" "$share" <<'PY'
 import json, statistics, sys
-out, name, scene, size, base, budget = sys.argv[1:]
+out, name, scene, size, base, budget, share = sys.argv[1:]
 budget = float(budget)
 def row(label, policy, path):
     d = json.load(open(path))
@@ -81,7 +79,7 @@ def row(label, policy, path):
     print('| %s | %s | %.0f %% | %.2f | %.1f | %.2f | %s |' % (label, policy, 100 * not_over, statistics.mean(psnr),
           statistics.median(ms), statistics.mean(zoom), bound_text))
 print()
-print('%s at %s, %s, least LOD bound %s px; budget %.2f ms (half the median without one)' % (scene, size, name, base, budget))
+print('%s at %s, %s, least LOD bound %s px; budget %.2f ms (%s x the median without one)' % (scene, size, name, base, budget, share))
 print()
 print('| levers | policy | frames not over (+10 %) | mean PSNR dB | median ms | mean zoom | mean bound px |')
 print('|---|---|---:|---:|---:|---:|---:|')

@@ -19,6 +19,9 @@ double median(std::deque<double> values) {
 // Two losses (or times) closer than this are equal: the tie goes to the other criterion.
 constexpr double kTie = 1e-9;
 
+// Reactive: a frame this many times over the target ends the hold.
+constexpr double kJumpOverTarget = 2.0;
+
 }  // namespace
 
 BudgetLevers parseBudgetLevers(std::string_view text) {
@@ -167,8 +170,11 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     if (cost.zoom != zoom_) return;  // not the frame this governor chose
     recent_.push_back(cost.ms);
     while (int(recent_.size()) > budget_.holdFrames) recent_.pop_front();
-    if (++sinceChange_ < hold_) return;
-    const double now = median(recent_);
+    // A frame over twice the target is no outlier to wait out (a cut, a turn into a dense view):
+    // it is judged at once, on its own time.
+    const bool jump = cost.ms > kJumpOverTarget * budget_.targetMs;
+    if (++sinceChange_ < hold_ && !jump) return;
+    const double now = jump ? cost.ms : median(recent_);
 
     // Learn the pixel share from a change of zoom alone (the bound held): t = a + b P through the
     // medians before and after, as the reactive zoom controller does.

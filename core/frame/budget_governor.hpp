@@ -22,7 +22,8 @@
 //  - reactive: from the measured median of the last `holdFrames` frames at the current state:
 //    over budget it moves to a lossier state (more zoom, a larger bound, or both), under it to a
 //    less lossy one, each estimated from the measured time (zoom: the learned pixel share; LOD:
-//    the selection's predicted difference), and never within the band.
+//    the selection's predicted difference), and never within the band. A frame over twice the
+//    target is judged at once instead of after the hold.
 // With the zoom lever alone it is today's zoom controller (frame/zoom_controller.hpp), unchanged.
 #include "frame/zoom_controller.hpp"
 
