@@ -8,8 +8,8 @@
 // Stopping: the peel pass counts (atomic counter) every fragment still to be peeled, and the
 // layer pass counts (samples passed) the fragments it captured. When the two are equal nothing
 // lies behind this layer and no further pass is issued, so D layers cost exactly D peels; a
-// pass that finds nothing (only coincident leftovers, which a strict test never peels) stops
-// it too. max_passes bounds the loop; hitting it is reported as an overflow.
+// layer pass that captures nothing (only coincident leftovers were left, which a strict test
+// never peels) stops it too. max_passes bounds the loop; hitting it is reported as an overflow.
 //
 // In a scene with coloured filters (oit/color_model.hpp) both composite them per channel: the
 // accumulation (and f2b's layer target) gains a second target, what lets light through per
@@ -45,13 +45,15 @@ public:
         options.between = [&](int layer) { skipper_.query(frame, depth_[layer % 2].id(), {RemainingSide::NotNearerThanR}); };
         loop.run(options, [&](int layer) {
             const int cur = layer % 2;
-            const bool anyLeft = peel(frame, layer, cur);
+            peel(frame, layer, cur);
             // The first peel counts every transparent fragment (its atomic counter). Later
             // peels do not: an atomic per fragment per pass costs a third of a peel pass on
             // llvmpipe. What lies strictly behind a layer is then what lay behind the previous
             // one less the fragments just captured (the loop's remaining count).
             if (layer == 0) loop.setTotal(readCounter());
-            if (loop.remaining() == 0 || !anyLeft) return PeelStep{};
+            // A peel that found nothing (only coincident leftovers, which a strict test never
+            // peels) is not waited for: its layer pass captures nothing, which ends the loop.
+            if (loop.remaining() == 0) return PeelStep{};
             const std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
             return PeelStep{captured, captured};
         });
@@ -75,7 +77,10 @@ private:
             gl::Defines defines = withColorModel({}, model);
             if (twoPass_) defines["DEPTH_ONLY"] = "";
             p.peel = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
-            p.firstLayer = glGetUniformLocation(p.peel.id(), "uFirstLayer");
+            // The counting program of the first layer; the others write no memory, so their
+            // depth test runs before the shader (f2b_peel.frag.glsl).
+            defines["FIRST_LAYER"] = "";
+            p.peelFirst = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
             if (twoPass_)
                 p.shade = buildSceneProgram("oit/peeling/f2b2_shade.frag.glsl", withColorModel({}, model));
             else
@@ -86,7 +91,6 @@ private:
         counter_ = gl::Buffer::create();
         glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
-        anyLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
 
     void ensureTargets(glm::ivec2 size, ColorModel model) {
@@ -126,11 +130,9 @@ private:
         }
     }
 
-    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur]; returns whether any
-    // fragment was left to peel (exact whatever the order: the first fragment left at a pixel
-    // always passes the depth test against the cleared buffer). The first layer also counts
-    // every fragment in front of the opaque depth (readCounter).
-    bool peel(const FrameContext& frame, int layer, int cur) {
+    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur]. The first layer also
+    // counts every fragment in front of the opaque depth (readCounter).
+    void peel(const FrameContext& frame, int layer, int cur) {
         gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 depth" : "f2b peel");
         if (layer == 0) {
             GLuint zero = 0;
@@ -152,19 +154,16 @@ private:
         glDisable(GL_STENCIL_TEST);
         if (twoPass_) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
-        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[1 - cur].id());
-        glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
-        glProgramUniform1i(programs_->peel.id(), programs_->firstLayer, layer == 0 ? 1 : 0);
-        glBeginQuery(GL_ANY_SAMPLES_PASSED, anyLeft_.id());
-        skipper_.draw(frame, programs_->peel, stats_);
-        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        if (layer == 0)
+            glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
+        else
+            glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[1 - cur].id());
+        skipper_.draw(frame, layer == 0 ? programs_->peelFirst : programs_->peel, stats_);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_FALSE);
         ++stats_.passes;
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-        GLuint any = 0;
-        glGetQueryObjectuiv(anyLeft_.id(), GL_QUERY_RESULT, &any);
-        return any != 0;
+        // No memory barrier: the next passes sample what this one rendered, which GL orders by
+        // itself (barriers are for image and buffer stores; on llvmpipe one is a full finish).
     }
 
     std::uint64_t readCounter() {
@@ -229,7 +228,6 @@ private:
         gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 composite" : "f2b composite");
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
         glDisable(GL_BLEND);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
         if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
@@ -238,16 +236,15 @@ private:
     }
 
     struct Programs {
-        SceneProgram peel, shade;
+        SceneProgram peel, peelFirst, shade;  // peelFirst: the first layer's, which counts
         gl::Program blend, composite;
-        GLint firstLayer = -1;
     };
     bool twoPass_;
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Buffer counter_;
-    gl::Query samples_, anyLeft_;
+    gl::Query samples_;
     glm::ivec2 size_{0, 0};
     gl::Texture accum_, layerColor_, depth_[2];
     gl::Texture layerFilter_, accumFilter_;  // the RGB build's (what passes, per channel)

@@ -114,7 +114,7 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, remaining);
     glUseProgram(reduceProgram_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    // No memory barrier: the rectangles sample what was just rendered, which GL orders itself.
 
     // One rectangle per live object and side, under an occlusion query.
     glBindFramebuffer(GL_FRAMEBUFFER, queryFbo_.id());

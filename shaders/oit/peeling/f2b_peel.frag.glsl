@@ -1,18 +1,23 @@
 #version 450 core
 // Front-to-back peel pass: among the fragments strictly behind the previous layer (reversed-Z:
 // depth strictly less than the last peeled depth) and in front of the opaque depth, the regular
-// depth test (GL_GREATER against a per-pass buffer cleared to 0) keeps the nearest. On the
-// first layer every fragment bumps a counter: the total the host peels down to (later passes
-// need no atomics: what remains is the total less what was captured, see front_to_back.cpp).
+// depth test (GL_GREATER against a per-pass buffer cleared to 0) keeps the nearest.
+// FIRST_LAYER (its own program): every fragment bumps a counter, the total the host peels down
+// to. The later layers' program has no atomic at all, not one behind a uniform: a shader that
+// can write memory is depth-tested late (Mesa's llvmpipe and radeonsi test early only without
+// memory writes), so every fragment behind the layer would run it. Without, the depth test
+// runs before it and rejects what lies behind the nearest fragment drawn so far.
 // DEPTH_ONLY (f2b2's pre-pass): no colour output, the shading pass follows with GL_EQUAL.
 // No early_fragment_tests: the discards below must happen before the depth write.
 #include "surface.glsl"
 #include "peel_bindings.h"
 
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
-layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uPreviousDepth;
+#ifdef FIRST_LAYER
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uRemaining;
-uniform bool uFirstLayer;
+#else
+layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uPreviousDepth;
+#endif
 
 #ifndef DEPTH_ONLY
 layout(location = 0) out vec4 outColor;
@@ -26,8 +31,11 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     float z = gl_FragCoord.z;
     if (z <= texelFetch(uOpaqueDepth, pixel, 0).r) discard;
-    if (!uFirstLayer && z >= texelFetch(uPreviousDepth, pixel, 0).r) discard;
-    if (uFirstLayer) atomicCounterIncrement(uRemaining);
+#ifdef FIRST_LAYER
+    atomicCounterIncrement(uRemaining);
+#else
+    if (z >= texelFetch(uPreviousDepth, pixel, 0).r) discard;
+#endif
 #if defined(STRATA_RGB_TRANSMITTANCE) && !defined(DEPTH_ONLY)
     SurfaceOptics o = surfaceOptics();
     outColor = vec4(o.premultiplied, 1.0);
