@@ -174,7 +174,8 @@ private:
     // llvmpipe.
     PeelStep blend(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "dual blend");
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        // No memory barrier: the peel rendered what this pass samples, which GL orders itself
+        // (barriers are for image and buffer stores; on llvmpipe one is a full finish).
         glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
         glEnable(GL_BLEND);
