@@ -25,6 +25,8 @@
 #include "oit/peeling/peeling_settings.hpp"
 #include "oit/precision.hpp"
 
+#include <array>
+
 namespace strata::peeling {
 namespace {
 
@@ -113,7 +115,10 @@ private:
         p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl", {{"DUAL", ""}});
         p.side = glGetUniformLocation(p.check.id(), "uSide");
         p.minCount = glGetUniformLocation(p.check.id(), "uMinCount");
-        if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+        if (!samples_) {
+            samples_ = gl::createQuery(GL_SAMPLES_PASSED);
+            for (gl::Query& q : checkQueries_) q = gl::createQuery(GL_SAMPLES_PASSED);
+        }
     }
 
     void ensureTargets(glm::ivec2 size, ColorModel model) {
@@ -235,11 +240,16 @@ private:
                 }
                 glProgramUniform1i(program, programs_->side, side);
                 glProgramUniform1f(program, programs_->minCount, float(minCount));
-                glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+                const gl::Query& q = checkQueries_[std::size_t(side * 2 + (minCount == 2 ? 0 : 1))];
+                glBeginQuery(GL_SAMPLES_PASSED, q.id());
                 drawFullscreen(frame, program);
                 glEndQuery(GL_SAMPLES_PASSED);
-                (minCount == 2 ? c.coplanar : c.any) += gl::queryResult(samples_);
             }
+        }
+        // Read once all four draws are queued: one wait, not one per draw.
+        for (int side = 0; side < 2; ++side) {
+            c.coplanar += gl::queryResult(checkQueries_[std::size_t(side * 2)]);
+            c.any += gl::queryResult(checkQueries_[std::size_t(side * 2 + 1)]);
         }
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         ++stats_.passes;
@@ -298,6 +308,7 @@ private:
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
+    std::array<gl::Query, 4> checkQueries_;  // per side: two or more, one or more
     glm::ivec2 size_{0, 0};
     Side side_[2];
     gl::Texture bound_;
