@@ -2,6 +2,8 @@
 // (ordered_composite.glsl) and the coplanarity detector (coplanarity_detect.comp.glsl), so
 // "one depth layer" means the same thing wherever it is asked. The host sets both uniforms
 // with setDepthOrderUniforms (core/oit/draw_transparent.hpp).
+#ifndef STRATA_DEPTH_LAYER_GLSL
+#define STRATA_DEPTH_LAYER_GLSL
 uniform float uDepthOffset;   // n / (f - n) of the frame's camera
 uniform float uTieTolerance;  // relative: Scene::depthTieUlps * 2^-23
 
@@ -10,3 +12,4 @@ uniform float uTieTolerance;  // relative: Scene::depthTieUlps * 2^-23
 float layerKey(float windowDepth) { return windowDepth + uDepthOffset; }
 
 bool sameLayer(float a, float b) { return abs(a - b) <= uTieTolerance * max(a, b); }
+#endif

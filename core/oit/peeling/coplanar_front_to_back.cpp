@@ -10,8 +10,10 @@
 //           check (full screen: pixels with two or more) + extraction (geometry, only if the
 //           check passed anywhere) + resolve (full screen). Where the count is one the colour
 //           sum is the fragment, so a scene without coplanarity costs one geometry pass a layer.
-//   f2b-3p: depth pass (geometry, GL_GREATER: the next anchor) + counting pass (no shading) +
-//           shading pass (the ids found) + resolve.
+//   f2b-3p: depth pass (geometry, GL_GREATER: the next anchor) + band (full screen: the far
+//           edge of the layer's tie band as depth) + counting pass (no shading) + shading pass
+//           (the ids found) + resolve. The counting and shading passes test GL_GEQUAL against
+//           the band in hardware, so what lies behind the layer is rejected before they shade it.
 // Both start with an initialisation pass (the first anchors, and the total by GL_SAMPLES_PASSED)
 // and end with peel_composite. The loop stops once every fragment is captured (the captured
 // count comes from occlusion queries, no atomics), when an iteration captures nothing, or at
@@ -51,7 +53,7 @@ public:
         glClearTexImage(state_.id(), 0, GL_RGBA, GL_FLOAT, noLayer);
         clearAccumulation(accum_.id(), rgb() ? accumPasses_.id() : 0);
         clearAccumulation(layer_.id(), rgb() ? layerPasses_.id() : 0);
-        for (GLuint p : {programs_->count.id(), programs_->extract.id(), programs_->next.id()})
+        for (GLuint p : {programs_->count.id(), programs_->extract.id(), programs_->next.id(), programs_->band.id()})
             if (p) setDepthOrderUniforms(frame, p);
 
         loop.setTotal(initialise(frame));
@@ -63,7 +65,10 @@ public:
             // Every fragment of a layer is captured, coplanar ones included: what an iteration
             // takes out of the range is what it keeps.
             loop.run(options, [&](int) {
-                if (threePass_) nextAnchors(frame);
+                if (threePass_) {
+                    nextAnchors(frame);
+                    band(frame);
+                }
                 count(frame);
                 std::uint64_t captured = 0;
                 if (threePass_) {
@@ -82,9 +87,9 @@ public:
         const std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
         // State and count RGBA32F (16 B each), min and max colour, layer far part and
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each), as many again with coloured
-        // filters; f2b-3p's next-anchor depth (4 B).
+        // filters; f2b-3p's next-anchor and band depths (4 B each).
         stats_.bytes = pixels * (2 * 16 + (rgb() ? 8 : 4) * floatTexelBytes(settings_.precision, 4) +
-                                 (threePass_ ? 4 : 0));
+                                 (threePass_ ? 8 : 0));
     }
 
 private:
@@ -102,8 +107,10 @@ private:
         p.init = buildSceneProgram("oit/peeling/coplanar_init.frag.glsl");
         if (threePass_) {
             p.next = buildSceneProgram("oit/peeling/coplanar_next.frag.glsl");
-            p.count = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl");
-            p.extract = scene("oit/peeling/coplanar_extract.frag.glsl");
+            // The counting and shading passes test against the layer band's far edge (band()).
+            p.band = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_band.frag.glsl"});
+            p.count = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl", {{"BAND_DEPTH", ""}});
+            p.extract = scene("oit/peeling/coplanar_extract.frag.glsl", {{"BAND_DEPTH", ""}});
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"NEXT_FROM_DEPTH", ""}});
         } else {
             p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
@@ -150,14 +157,23 @@ private:
             nextFbo_ = gl::Framebuffer::create();
             glNamedFramebufferTexture(nextFbo_.id(), GL_DEPTH_ATTACHMENT, nextDepth_.id(), 0);
             glNamedFramebufferDrawBuffer(nextFbo_.id(), GL_NONE);
+            // The band's far edge: the depth the counting and shading passes test against.
+            bandDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+            bandFbo_ = gl::Framebuffer::create();
+            glNamedFramebufferTexture(bandFbo_.id(), GL_DEPTH_ATTACHMENT, bandDepth_.id(), 0);
+            glNamedFramebufferDrawBuffer(bandFbo_.id(), GL_NONE);
+            for (const gl::Framebuffer* fbo : {&countFbo_, &extractFbo_})
+                glNamedFramebufferTexture(fbo->id(), GL_DEPTH_ATTACHMENT, bandDepth_.id(), 0);
         }
     }
 
     // The geometry passes test against the opaque depth in hardware (early, no writes); the
     // frame targets replace that texture when the size changes, so it is attached per frame.
+    // f2b-3p's counting and shading passes test against the band's far edge instead (band()).
     void attachOpaqueDepth(const FrameContext& frame) {
         for (const gl::Framebuffer* fbo : {&initFbo_, &countFbo_, &extractFbo_})
-            glNamedFramebufferTexture(fbo->id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
+            if (!threePass_ || fbo == &initFbo_)
+                glNamedFramebufferTexture(fbo->id(), GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
     }
 
     void bindTextures(const FrameContext& frame) {
@@ -218,13 +234,39 @@ private:
         ++stats_.passes;
     }
 
+    // f2b-3p: the far edge of the tie band of each pixel's layer (the state's anchor) into
+    // bandDepth_, so that the counting and shading passes reject before shading what lies behind
+    // the layer: without it every fragment left behind it was shaded twice an iteration.
+    void band(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, "f2b-3p band");
+        glBindFramebuffer(GL_FRAMEBUFFER, bandFbo_.id());
+        glViewport(0, 0, frame.size.x, frame.size.y);
+        glDisable(GL_BLEND);
+        bindTextures(frame);
+        glUseProgram(programs_->band.id());
+        glBindVertexArray(frame.targets.emptyVertexArray());
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_ALWAYS);
+        glDepthMask(GL_TRUE);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDepthMask(GL_FALSE);
+        ++stats_.passes;
+    }
+
+    // The depth test of the counting and shading passes: f2b-3p's at or nearer than the band's
+    // far edge; f2b-2p's nearer than the opaque depth.
+    void layerDepthTest(const FrameContext& frame) {
+        setTransparentDepthState(frame);
+        if (threePass_) glDepthFunc(GL_GEQUAL);
+    }
+
     void count(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p count" : "f2b-2p count");
         const float countClear[4] = {kNoId, kNoId, kNoId, 0.0f};
         glClearTexImage(count_.id(), 0, GL_RGBA, GL_FLOAT, countClear);
         if (!threePass_) clearFragments(false);
         glBindFramebuffer(GL_FRAMEBUFFER, countFbo_.id());
-        setTransparentDepthState(frame);
+        layerDepthTest(frame);
         bindTextures(frame);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
@@ -258,7 +300,7 @@ private:
         if (threePass_) clearFragments(false);
         clearFragments(true);
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
-        setTransparentDepthState(frame);
+        layerDepthTest(frame);
         bindTextures(frame);
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
@@ -299,7 +341,7 @@ private:
 
     struct Programs {
         SceneProgram init, next, count, extract;
-        gl::Program check, resolve, composite;
+        gl::Program check, resolve, composite, band;
     };
     bool threePass_;
     int allocatedPrecision_ = 0;
@@ -307,9 +349,9 @@ private:
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
     glm::ivec2 size_{0, 0};
-    gl::Texture state_, count_, minColor_, maxColor_, layer_, accum_, nextDepth_;
+    gl::Texture state_, count_, minColor_, maxColor_, layer_, accum_, nextDepth_, bandDepth_;
     gl::Texture minOpacity_, maxOpacity_, layerPasses_, accumPasses_;  // the RGB build's second texels
-    gl::Framebuffer initFbo_, countFbo_, extractFbo_, resolveFbo_, nextFbo_;
+    gl::Framebuffer initFbo_, countFbo_, extractFbo_, resolveFbo_, nextFbo_, bandFbo_;
     CoplanarIds ids_;
     ObjectSkipper skipper_;
 };
@@ -334,10 +376,10 @@ TechniqueEntry f2b2pEntry() {
 
 TechniqueEntry f2b3pEntry() {
     TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
-                       "2 + sum over layers of 4*ceil(C/2) (depth, tie-test count, shading, resolve per "
-                       "iteration); no coplanarity: 4D+2; Table 1: 3C(Zall)/2",
-                       "w*h*68 B at precision=16: as f2b-2p + next-anchor depth (4); w*h*100 B at 32; + four "
-                       "more RGBA targets in a scene with coloured filters",
+                       "2 + sum over layers of 5*ceil(C/2) (depth, band, tie-test count, shading, resolve per "
+                       "iteration); no coplanarity: 5D+2; Table 1: 3C(Zall)/2",
+                       "w*h*72 B at precision=16: as f2b-2p + next-anchor and band depths (4 each); w*h*104 B "
+                       "at 32; + four more RGBA targets in a scene with coloured filters",
                        "coplanarity-aware f2b with a depth pass, a tie-test counting pass and a shading pass "
                        "per iteration"};
     info.rgbTransmittance = true;

@@ -5,6 +5,8 @@
 // largest id (MAX) and how many (ADD, alpha).
 // NEXT_ANCHOR (f2b-2p): fragments beyond the layer put their depth in b (MAX: the nearest one),
 //   the anchor of the next layer, so f2b-2p needs no depth pass.
+// BAND_DEPTH (f2b-3p): the depth attachment holds the layer band's far edge (coplanar_band), not
+//   the opaque depth, so the opaque test is done here; fragments behind the band never run.
 // SUM_COLOR (f2b-2p): the layer's fragments add their colour into target 1 (with
 //   STRATA_RGB_TRANSMITTANCE their opacity into target 2, coplanar_fragment.glsl). Where the
 //   count is 1, that sum is the fragment: the pixel needs no extraction pass (no coplanarity,
@@ -16,6 +18,9 @@
 
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
+#ifdef BAND_DEPTH
+layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
+#endif
 layout(location = 0) out vec4 outCount;
 #ifdef SUM_COLOR
 layout(location = 1) out vec4 outColor;
@@ -33,6 +38,9 @@ void sumFragment(FragmentTexels f) {
 void main() {
     vec4 state = texelFetch(uState, ivec2(gl_FragCoord.xy), 0);
     float z = gl_FragCoord.z;
+#ifdef BAND_DEPTH
+    if (z <= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r) discard;  // the attachment is the band's
+#endif
     if (!hasAnchor(state.r) || z > state.r) discard;  // nothing left here, or peeled already
     if (!inLayerOf(z, state.r)) {
 #ifdef NEXT_ANCHOR

@@ -7,6 +7,9 @@
 // COPLANAR_ONLY (f2b-2p): only pixels with two or more; a single fragment came with its colour.
 // Without it (f2b-3p) no early tests: GL_SAMPLES_PASSED then counts exactly the fragments
 // extracted (discarded ones never reach the late test).
+// BAND_DEPTH (f2b-3p): the depth attachment holds the layer band's far edge (coplanar_band), not
+// the opaque depth, so the opaque test is done here. The shader writes no memory and no depth,
+// so a driver still tests depth before it runs and only the layer's fragments are shaded.
 #include "surface.glsl"
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"
@@ -16,6 +19,9 @@
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 #endif
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
+#ifdef BAND_DEPTH
+layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
+#endif
 layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;
 layout(location = 0) out vec4 outMin;
 layout(location = 1) out vec4 outMax;
@@ -32,6 +38,9 @@ void main() {
 #endif
     float anchor = texelFetch(uState, pixel, 0).r;
     float z = gl_FragCoord.z;
+#ifdef BAND_DEPTH
+    if (z <= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r) discard;  // the attachment is the band's
+#endif
     if (!hasAnchor(anchor) || z > anchor || !inLayerOf(z, anchor)) discard;
     float id = fragmentIdKey(uObjectId);
     bool isMin = id == -count.r;
