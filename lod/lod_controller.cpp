@@ -268,7 +268,9 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
         if (frustum.classify(inputs_[i].center, inputs_[i].radius) == Frustum::Side::Outside) continue;
         LodObjectInput& in = inputs.emplace_back(inputs_[i]);
         const int id = keys_.ofUnit[i];
-        if (in.hasImpostor || id < 0 || (impostors_ && impostors_->tried(id))) continue;
+        // One the bake step declined (it would not pay over the frames planned) stays geometry.
+        const bool declined = id >= 0 && std::size_t(id) < declined_.size() && declined_[std::size_t(id)];
+        if (in.hasImpostor || id < 0 || declined || (impostors_ && impostors_->tried(id))) continue;
         in.hasImpostor = true;
         in.impostor.slices = options_.impostor.slices;
         in.impostor.resolution = options_.impostor.resolution;

@@ -213,3 +213,43 @@ TEST_CASE("budget governor: both levers lose less than either alone, for both po
         CHECK(over == (kind == ZoomControllerKind::Predictive ? 0 : 1 + ZoomBudget{}.holdFrames));
     }
 }
+
+TEST_CASE("budget governor: LOD's pixel part shrinks with the zoom in the prediction") {
+    // Level 0 takes 30 ms, 20 of them the impostors' and geometry's pixels: at zoom 2 it predicts
+    // 10 + 20 / 4 = 15 ms, so (2, 0) is 11.216 + 15 = 26.216 ms and fits a 30 ms budget at 0.5 px.
+    Device d;
+    GovernorLoad load = d.load();
+    load.lod.levels[0].pixelMs = 20.0;
+    BudgetGovernor governor(budgetOf(30), {true, true}, ZoomControllerKind::Predictive, d.cost);
+    const GovernorChoice c = governor.choose(load);
+    CHECK(c.zoom == 2);
+    CHECK(c.lodLevel == 0);
+    CHECK(c.predictedMs == doctest::Approx(26.216));
+    // Without a preview (LOD not in auto mode this frame) the bound is no lever and LOD adds
+    // nothing predicted: zoom 1 (38.864 ms) misses, zoom 2 (11.216 ms) fits.
+    GovernorLoad noLod = d.load();
+    noLod.lod = {};
+    BudgetGovernor zoomOnly(budgetOf(30), {true, true}, ZoomControllerKind::Predictive, d.cost);
+    const GovernorChoice z = zoomOnly.choose(noLod);
+    CHECK(z.lodLevel == 0);
+    CHECK(z.zoom == 2);
+    CHECK(z.predictedMs == doctest::Approx(11.216));
+}
+
+TEST_CASE("budget governor: reactive judges a frame over twice the target at once, not after its hold") {
+    // Settled at (1, 2), 48.864 ms under a 50 ms budget; then the load jumps: every LOD level
+    // costs 70 ms more (a dense view), so (1, 2) takes 118.9 ms, over twice the target.
+    Device d;
+    d.lodLossPx = {0.0, 0.1, 0.3, 1.0};
+    BudgetGovernor governor(budgetOf(50), {true, true}, ZoomControllerKind::Reactive, d.cost);
+    Run settled = drive(governor, d, 20);
+    REQUIRE(settled.choices.back().zoom == 1);
+    REQUIRE(settled.choices.back().lodLevel == 2);
+    for (double& ms : d.lodMs) ms += 70.0;
+    const GovernorLoad load = d.load();
+    GovernorChoice c = governor.choose(load);
+    governor.observe(FrameCost{c.zoom, d.ms(c.zoom, c.lodLevel), 0, load.zoom});
+    // The very next frame is already lossier (without the rule it would wait for 4 frames).
+    c = governor.choose(d.load());
+    CHECK((c.zoom > 1 || c.lodLevel > 2));
+}

@@ -186,9 +186,11 @@ public:
         // One selection for both eyes, from between them (their views differ by the eye distance,
         // far below what moves an object's impostor choice), with the bound the budget sets. A
         // failed bake is reported like a failed frame, and the eyes draw geometry.
+        bool zoomBegun = false;  // a failed begin leaves no choice for end to learn from
         try {
             zoom_.begin(scene_, eyeCamera(inFlight_.first[predictor], 0.0f), inFlight_.eyeSize, technique_.get(),
                         frameOptions, headDegPerSecond_, lod_.get());
+            zoomBegun = true;
             frameOptions.standIns = lod_->select(eyeCamera(inFlight_.first[predictor], 0.0f), inFlight_.eyeSize);
         } catch (const std::exception& e) {
             if (smokeTest()) throw;
@@ -199,7 +201,7 @@ public:
             eyes_[e].rendered = eyeCamera(inFlight_.first[predictor], signs[e]);
             renderEye(eyes_[e], inFlight_.eyeSize, frameOptions);
         }
-        zoom_.end(frame_, technique_.get());
+        if (zoomBegun) zoom_.end(frame_, technique_.get());
         // Step 2: re-read, predict again for the now better-known display time, deflect.
         inFlight_.t1 = glfwGetTime();
         const double trace1 = inFlight_.trace0 + inFlight_.paceScale * (inFlight_.t1 - inFlight_.t0);

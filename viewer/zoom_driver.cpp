@@ -82,6 +82,8 @@ int ZoomDriver::begin(const GpuScene& scene, const Camera& camera, glm::ivec2 di
         predictedMs_ = choice.predictedMs;
         lossPx_ = choice.lossPx;
         if (!load_.lod.levels.empty()) {
+            // The bound the user set, kept for when the budget stops steering it.
+            if (!steeredBound_) userBoundPx_ = lod->options().maxErrorPx;
             lodBoundPx_ = ladder.bound(choice.lodLevel);
             lod->setMaxErrorPx(lodBoundPx_);
         }
@@ -89,8 +91,8 @@ int ZoomDriver::begin(const GpuScene& scene, const Camera& camera, glm::ivec2 di
         zoom_ = std::clamp(std::max(choices_.fixedZoom, headFloor_), 1, 16);
         predictedMs_ = std::nan("");
     }
-    // The budget stopped steering the bound (another lever, no budget): the least one is auto's again.
-    if (lod && steeredBound_ && lodBoundPx_ == 0.0) lod->setMaxErrorPx(choices_.lodBasePx);
+    // The budget stopped steering the bound (another lever, no budget): the user's is auto's again.
+    if (lod && steeredBound_ && lodBoundPx_ == 0.0) lod->setMaxErrorPx(userBoundPx_);
     steeredBound_ = lodBoundPx_ > 0.0;
     options.zoom = zoom_;
     options.zoomFilter = choices_.blur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;

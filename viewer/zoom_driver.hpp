@@ -77,6 +77,7 @@ private:
     int zoom_ = 1, headFloor_ = 1;
     double predictedMs_ = 0.0, measuredMs_ = 0.0, lodBoundPx_ = 0.0, lossPx_ = 0.0;
     bool steeredBound_ = false;  // the last frame's bound was the budget's
+    double userBoundPx_ = 4.0;   // the LOD bound before the budget steered it
     FrameHistory zoomHistory_, measuredHistory_, predictedHistory_, boundHistory_;
     std::string status_;
 };

@@ -179,7 +179,8 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     // Learn the pixel share from a change of zoom alone (the bound held): t = a + b P through the
     // medians before and after, as the reactive zoom controller does.
     const glm::ivec2 display = load.zoom.displaySize;
-    if (std::isfinite(beforeMs_) && beforeZoom_ != zoom_ && beforeLevel_ == level_ && display.x > 0) {
+    // Not from a jump: one frame of a changed load says nothing of how the time splits.
+    if (!jump && std::isfinite(beforeMs_) && beforeZoom_ != zoom_ && beforeLevel_ == level_ && display.x > 0) {
         const double p1 = zoomPixels(display, 1);
         const double pb = zoomPixels(display, beforeZoom_) / p1, pn = zoomPixels(display, zoom_) / p1;
         const double b = (beforeMs_ - now) / (pb - pn);
@@ -187,7 +188,7 @@ void BudgetGovernor::observe(const FrameCost& cost) {
         const double share = std::clamp(b / std::max(a + b, 1e-9), 0.02, 1.0);
         if (std::isfinite(share)) pixelShare_ = share;
     }
-    beforeMs_ = kNaN;
+    if (!jump) beforeMs_ = kNaN;
 
     const double target = budget_.targetMs;
     const bool over = now > target * (1.0 + budget_.band);
@@ -225,7 +226,8 @@ void BudgetGovernor::observe(const FrameCost& cost) {
         if (bestZoom != zoom_ || bestLevel != level_) {
             // A relief that had to be undone doubles the hold before the next one (up to 8x).
             if (over && lastWasStepDown_ && sinceChange_ <= hold_) hold_ = std::min(hold_ * 2, budget_.holdFrames * 8);
-            changeState(bestZoom, bestLevel, true);
+            // A change on a jump is not one to learn from (its "before" is one frame of a new load).
+            changeState(bestZoom, bestLevel, !jump);
             return;
         }
     }

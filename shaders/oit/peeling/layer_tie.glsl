@@ -15,8 +15,9 @@ bool peeledWith(float z, float layer) {
 }
 
 // A window depth at or below the farthest depth of the layer anchored at `layer` (its band's far
-// edge), lowered by a relative 1e-6 against rounding: a depth test against it lets every
-// fragment of the layer through, and the exact test above decides.
+// edge), lowered by a relative 1e-6 of the key against rounding: a depth test against it lets
+// every fragment of the layer through, and the exact test above decides. (The margin is taken
+// in key space: near the far plane a window depth's own 1e-6 is below the rounding of z + offset.)
 float layerFarEdge(float layer) {
-    return max(0.0, (layerKey(layer) * (1.0 - uTieTolerance) - uDepthOffset) * (1.0 - 1e-6));
+    return max(0.0, layerKey(layer) * (1.0 - uTieTolerance) * (1.0 - 1e-6) - uDepthOffset);
 }
