@@ -261,9 +261,11 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
     updateViewAngles(camera.position);
     // The units the renderer will draw (outside the frustum they cost nothing at any bound); one
     // not baked yet is judged as bakeCandidates judges it: as if baked, seen along a view.
+    // The scratch list is a member, reused: a megabyte allocated and freed per frame is given
+    // back to the system and faulted in again by whatever the frame allocates next.
     const Frustum frustum(camera.projection(float(size.x) / float(std::max(size.y, 1))) * camera.view());
-    std::vector<LodObjectInput> inputs;
-    inputs.reserve(inputs_.size());
+    std::vector<LodObjectInput>& inputs = previewInputs_;
+    inputs.clear();
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         if (frustum.classify(inputs_[i].center, inputs_[i].radius) == Frustum::Side::Outside) continue;
         LodObjectInput& in = inputs.emplace_back(inputs_[i]);
@@ -284,16 +286,16 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
     };
     bool first = true;
     for (double bound : boundsPx) {
-        const LodSelection s = selectLod(inputs, view, model, {LodMode::Auto, bound});
         LodLevelPreview level;
         level.boundPx = bound;
-        level.predictedMs = s.predictedMs;
-        level.impostorObjects = s.impostorObjects;
         // The loss is the impostors' error bounds weighted by their discs, over the larger of the
         // discs' summed area and the image's (overlapping discs share pixels): at most the bound.
+        // Each decision is selectLod's (selectLodFor), summed without keeping them.
         double covered = 0.0, weightedError = 0.0;
-        for (std::size_t i = 0; i < s.objects.size(); ++i) {
-            const LodDecision& d = s.objects[i];
+        for (std::size_t i = 0; i < inputs.size(); ++i) {
+            const LodDecision d = selectLodFor(inputs[i], view, model, {LodMode::Auto, bound});
+            level.predictedMs += d.impostor ? d.impostorMs : d.geometryMs;
+            if (d.impostor) level.impostorObjects += inputs[i].objects;
             if (d.impostor) weightedError += d.errorPx * discArea(d);
             covered += discArea(d);
             // What of the prediction scales with the frame's pixels (a zoom divides it by z^2):

@@ -110,6 +110,7 @@ private:
     std::unique_ptr<ImpostorSet> impostors_;
     std::optional<LodCalibration> calibration_;
     std::vector<LodObjectInput> inputs_;  // per LOD unit
+    std::vector<LodObjectInput> previewInputs_;  // previewBounds' scratch: the units in view
     LodSelection selection_, unitSelection_;
     StandIns standIns_;
     glm::vec3 lastEye_{0.0f};
