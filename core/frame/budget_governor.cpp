@@ -10,12 +10,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double median(std::deque<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // Two losses (or times) closer than this are equal: the tie goes to the other criterion.
 constexpr double kTie = 1e-9;
 
@@ -136,7 +130,7 @@ double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int
 void BudgetGovernor::changeState(int zoom, int level, bool controlled) {
     beforeZoom_ = zoom_;
     beforeLevel_ = level_;
-    beforeMs_ = controlled && !recent_.empty() ? median(recent_) : kNaN;
+    beforeMs_ = controlled && !recent_.empty() ? medianMs(recent_) : kNaN;
     lastWasStepDown_ = zoom < zoom_ || level < level_;
     zoom_ = zoom;
     level_ = level;
@@ -149,7 +143,7 @@ GovernorChoice BudgetGovernor::chooseReactive(const GovernorLoad& load) {
     const int level = std::clamp(level_, 0, highestLevel(load));
     // The head-speed floor (or a ladder that shrank) overrides: what was measured no longer applies.
     if (zoom != zoom_ || level != level_) changeState(zoom, level, false);
-    const double predicted = recent_.empty() ? kNaN : median(recent_);
+    const double predicted = recent_.empty() ? kNaN : medianMs(recent_);
     return GovernorChoice{zoom_, level_, predicted, loss(load, zoom_, level_)};
 }
 
@@ -174,7 +168,7 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     // it is judged at once, on its own time.
     const bool jump = cost.ms > kJumpOverTarget * budget_.targetMs;
     if (++sinceChange_ < hold_ && !jump) return;
-    const double now = jump ? cost.ms : median(recent_);
+    const double now = jump ? cost.ms : medianMs(recent_);
 
     // Learn the pixel share from a change of zoom alone (the bound held): t = a + b P through the
     // medians before and after, as the reactive zoom controller does.

@@ -14,12 +14,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double median(std::deque<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 int clampZoom(int zoom, const ZoomBudget& budget, int floor) {
     return std::clamp(zoom, std::max(budget.minZoom, floor), budget.maxZoom);
 }
@@ -34,6 +28,12 @@ ZoomControllerKind parseZoomController(std::string_view name) {
     if (name == "reactive") return ZoomControllerKind::Reactive;
     if (name == "predictive") return ZoomControllerKind::Predictive;
     throw std::invalid_argument("unknown zoom controller '" + std::string(name) + "' (known: reactive, predictive)");
+}
+
+double medianMs(std::deque<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 double zoomPixels(glm::ivec2 displaySize, int zoom) {
@@ -65,7 +65,7 @@ double ReactiveZoomController::scaled(double ms, int from, int to) const {
 
 void ReactiveZoomController::change(int zoom) {
     beforeZoom_ = zoom_;
-    beforeMs_ = recent_.empty() ? kNaN : median(recent_);
+    beforeMs_ = recent_.empty() ? kNaN : medianMs(recent_);
     lastWasStepDown_ = zoom < zoom_;
     zoom_ = zoom;
     recent_.clear();
@@ -80,7 +80,7 @@ int ReactiveZoomController::choose(const FrameLoad& load) {
         change(forced);
         beforeMs_ = kNaN;  // not a controlled step: nothing to learn from it
     }
-    predicted_ = recent_.empty() ? kNaN : median(recent_);
+    predicted_ = recent_.empty() ? kNaN : medianMs(recent_);
     return zoom_;
 }
 
@@ -89,7 +89,7 @@ void ReactiveZoomController::observe(const FrameCost& cost) {
     recent_.push_back(cost.ms);
     while (int(recent_.size()) > budget_.holdFrames) recent_.pop_front();
     if (++sinceChange_ < hold_) return;
-    const double now = median(recent_);
+    const double now = medianMs(recent_);
 
     // Learn how the time splits into fixed and per-pixel parts from the change just held:
     // t = a + b P through (P_before, t_before) and (P_now, t_now), kept relative (a + b P_1 = 1).

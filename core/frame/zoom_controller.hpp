@@ -142,6 +142,9 @@ struct HeadSpeedZoom {
 };
 int zoomFloorForHeadSpeed(double degPerSecond, const HeadSpeedZoom& rule = {});
 
+// The median of frame times (the reactive controllers' judgement over their hold).
+double medianMs(std::deque<double> values);
+
 // Reduced pixels of a display at a zoom (zoomRenderSize's area).
 double zoomPixels(glm::ivec2 displaySize, int zoom);
 

@@ -29,6 +29,18 @@ void drawFullscreen(const FrameContext& frame, GLuint program) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void drawFullscreenDepth(const FrameContext& frame, GLuint program) {
+    glViewport(0, 0, frame.size.x, frame.size.y);
+    glDisable(GL_BLEND);
+    glUseProgram(program);
+    glBindVertexArray(frame.targets.emptyVertexArray());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_FALSE);
+}
+
 void setDepthOrderUniforms(const FrameContext& frame, GLuint program) {
     const double n = frame.camera.nearPlane, f = frame.camera.farPlane;
     glProgramUniform1f(program, glGetUniformLocation(program, "uDepthOffset"), float(n / (f - n)));

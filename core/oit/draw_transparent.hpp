@@ -17,6 +17,9 @@ void setTransparentDepthState(const FrameContext& frame);
 
 // Draws one full-screen triangle with `program` (depth test off).
 void drawFullscreen(const FrameContext& frame, GLuint program);
+// A full-screen draw that writes depth (GL_ALWAYS, depth writes on, left off after) into the
+// bound framebuffer: a per-pixel depth bound a following geometry pass tests against.
+void drawFullscreenDepth(const FrameContext& frame, GLuint program);
 
 // Sets the uniforms of shaders/oit/ordered_composite.glsl (the tie rule of
 // render/depth_order.hpp) on a resolve program: the camera's n / (f - n) and the scene's

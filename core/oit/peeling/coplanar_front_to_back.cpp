@@ -240,16 +240,8 @@ private:
     void band(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, "f2b-3p band");
         glBindFramebuffer(GL_FRAMEBUFFER, bandFbo_.id());
-        glViewport(0, 0, frame.size.x, frame.size.y);
-        glDisable(GL_BLEND);
         bindTextures(frame);
-        glUseProgram(programs_->band.id());
-        glBindVertexArray(frame.targets.emptyVertexArray());
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
-        glDepthMask(GL_TRUE);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glDepthMask(GL_FALSE);
+        drawFullscreenDepth(frame, programs_->band.id());
         ++stats_.passes;
     }
 

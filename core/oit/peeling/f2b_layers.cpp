@@ -166,16 +166,8 @@ private:
     void band(const FrameContext& frame, int cur, TechniqueStats& stats) {
         gl::ScopedPass pass(frame.timer, id_ + " band");
         glBindFramebuffer(GL_FRAMEBUFFER, bandFbo_.id());
-        glViewport(0, 0, frame.size.x, frame.size.y);
-        glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, depth_[cur].id());
-        glUseProgram(programs_->band.id());
-        glBindVertexArray(frame.targets.emptyVertexArray());
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
-        glDepthMask(GL_TRUE);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-        glDepthMask(GL_FALSE);
+        drawFullscreenDepth(frame, programs_->band.id());
         ++stats.passes;
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     }
