@@ -231,11 +231,10 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         camera.farPlane = 10.0f;
         camera.lookAt({0.3f, 0.4f, 2.55f}, {0.0f, 0.0f, 0.0f});
         const glm::mat4 viewProjection = camera.projection(1.0f) * camera.view();
-        const glm::mat4 model(1.0f);
-        const glm::mat3 normalMatrix(1.0f);
         glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "uViewProj"), 1, GL_FALSE, &viewProjection[0][0]);
-        glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "uModel"), 1, GL_FALSE, &model[0][0]);
-        glProgramUniformMatrix3fv(program.id(), glGetUniformLocation(program.id(), "uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+        // One object at the origin (render/object_records.hpp).
+        const gpu::ObjectRecord record = makeObjectRecord(glm::mat4(1.0f), 0u);
+        setCurrentObject(record);
         glDisable(GL_CULL_FACE);  // as the frame's opaque pass draws: both faces rasterised
         gl::Query samples = gl::createQuery(GL_SAMPLES_PASSED);
         std::vector<LodCalibrationPoint> points;
@@ -265,6 +264,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
                 const GpuScene one = oneObjectScene(mesh);
                 coarseMarginal = marginalDraw(timer, [&] { clear(side); }, [&] { one.draw(scene, 0); });
                 glBindVertexArray(gpu.vertexArray.id());
+                setCurrentObject(record);  // the scene's draw may have set another object
             }
             points.push_back(p);
         }
@@ -306,10 +306,8 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         const gl::Program& program = scene.program;
         glUseProgram(program.id());
         const glm::mat4 identity(1.0f);
-        const glm::mat3 identity3(1.0f);
         glProgramUniformMatrix4fv(program.id(), scene.viewProj, 1, GL_FALSE, &identity[0][0]);
-        glProgramUniformMatrix4fv(program.id(), scene.model, 1, GL_FALSE, &identity[0][0]);
-        glProgramUniformMatrix3fv(program.id(), scene.normalMatrix, 1, GL_FALSE, &identity3[0][0]);
+        setCurrentObject(makeObjectRecord(identity, 0u));
         glProgramUniform1f(program.id(), scene.impostorOverlap, 0.5f);  // the default overlap
         gl::Texture atlas = makeAtlas();
         glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, atlas.id());

@@ -6,6 +6,7 @@
 #include "gl_test_support.hpp"
 
 #include "common/bindings.h"
+#include "common/object_records.h"
 #include "debug/error_map.h"
 #include "lod/lod_bindings.h"
 #include "gl/shader_program.hpp"

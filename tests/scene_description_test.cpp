@@ -89,6 +89,26 @@ TEST_CASE("scene description: the shipped scenes load") {
         CHECK(opaqueObjects[i - 1].worldBounds.max.x < opaqueObjects[i].worldBounds.min.x);
 }
 
+TEST_CASE("scene description: objects with the same override share one material") {
+    const std::string model = quadModel().string();
+    auto path = writeDescription("shared-overrides", R"({
+      "objects": [
+        {"model": ")" + model + R"(", "material": {"base_color": [0.1, 0.2, 0.3], "alpha": 0.5}},
+        {"model": ")" + model + R"(", "translate": [2, 0, 0], "material": {"base_color": [0.1, 0.2, 0.3], "alpha": 0.5}},
+        {"model": ")" + model + R"(", "translate": [4, 0, 0], "material": {"base_color": [0.1, 0.2, 0.3], "alpha": 0.25}},
+        {"model": ")" + model + R"(", "translate": [6, 0, 0]}
+      ]})");
+    Scene s = loadSceneDescription(path);
+    // default + the model's + two distinct overrides (the first two objects write theirs alike)
+    CHECK(s.materials.size() == 4);
+    auto objects = flatten(s);
+    REQUIRE(objects.size() == 4);
+    CHECK(objects[0].material == objects[1].material);
+    CHECK(objects[2].material != objects[0].material);
+    CHECK(s.materials[std::size_t(objects[2].material)].alpha == doctest::Approx(0.25f));
+    CHECK(objects[3].material != objects[0].material);
+}
+
 TEST_CASE("scene description: transforms, overrides and merged indices") {
     std::string model = quadModel().string();
     auto path = writeDescription("two-quads", R"({

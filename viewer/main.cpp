@@ -1,6 +1,7 @@
 // strata: the command line. Errors are caught here, once, and printed as one line.
 #include "commands.hpp"
 
+#include "io/heap_trim.hpp"
 #include "io/interrupt.hpp"
 #include "io/printable.hpp"
 
@@ -41,6 +42,7 @@ std::string unknownCommand(const CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    strata::keepFreedHeap();  // frame times free of page-fault churn (io/heap_trim.hpp)
     CLI::App app{"Strata: order-independent transparency and multi-fragment rendering, measured"};
     app.require_subcommand(1);
     strata::registerModesCommand(app);

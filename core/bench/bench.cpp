@@ -208,7 +208,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             controller = std::make_unique<BudgetGovernor>(*options.budget, levers, options.zoomController, model);
         }
         mode.zoom = options.budget ? 0 : options.zoom;
-        std::vector<double> gpu, cpu, opaque, frame, enlarge, lodMs;
+        std::vector<double> gpu, cpu, threadCpu, drawCalls, opaque, frame, enlarge, lodMs;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
@@ -269,6 +269,8 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             gpu.push_back(techniqueMs);
             opaque.push_back(opaqueMs);
             cpu.push_back(r.cpuMs);
+            threadCpu.push_back(r.threadCpuMs);
+            drawCalls.push_back(double(r.drawCalls));
             mode.passes = std::max(mode.passes, r.stats.passes);
             mode.bytes = std::max(mode.bytes, r.stats.bytes);
             mode.fragmentsTotal += r.fragmentsTotal.value_or(0);
@@ -311,6 +313,8 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.msMedian = percentile(gpu, 0.5);
         mode.msP95 = percentile(gpu, 0.95);
         mode.cpuMsMedian = percentile(cpu, 0.5);
+        mode.threadCpuMsMedian = percentile(threadCpu, 0.5);
+        mode.drawCallsMedian = percentile(drawCalls, 0.5);
         mode.lodMsMedian = lodMs.empty() ? 0.0 : percentile(lodMs, 0.5);
         mode.opaqueMsMedian = percentile(opaque, 0.5);
         mode.frameMsMedian = percentile(frame, 0.5);

@@ -96,6 +96,8 @@ struct BenchMode {
     bool rgbTransmittance = false;  // TechniqueInfo::rgbTransmittance
     double msMedian = 0, msP95 = 0;          // GPU ms of the technique's passes (opaque pass excluded)
     double cpuMsMedian = 0;                  // CPU wall ms of the whole frame
+    double threadCpuMsMedian = 0;            // CPU ms of the rendering thread (FrameResult::threadCpuMs)
+    double drawCallsMedian = 0;              // GL draws of scene objects per frame (all passes)
     double lodMsMedian = 0;                  // CPU ms of the frame's LOD step (BenchOptions::lod), 0 without
     double opaqueMsMedian = 0;               // GPU ms of the opaque pass, for scale
     int passes = 0;

@@ -46,6 +46,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"id", m.id}, {"family", m.family}, {"reference", m.reference}, {"robust", m.robust}, {"handles_coplanarity", m.handlesCoplanarity},
             {"rgb_transmittance", m.rgbTransmittance},
             {"ms_median", finite(m.msMedian)}, {"ms_p95", finite(m.msP95)}, {"cpu_ms_median", finite(m.cpuMsMedian)},
+            {"thread_cpu_ms_median", finite(m.threadCpuMsMedian)}, {"draw_calls_median", finite(m.drawCallsMedian)},
             {"lod_ms_median", finite(m.lodMsMedian)},
             {"opaque_ms_median", finite(m.opaqueMsMedian)}, {"pass_ms_median", passes},
             {"passes", m.passes}, {"bytes", m.bytes},

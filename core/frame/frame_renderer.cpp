@@ -9,12 +9,25 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 
 namespace strata {
+namespace {
+
+// CPU time the calling thread has used, in ms.
+double threadCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+}  // namespace
 
 FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, glm::ivec2 size,
                                   Technique* technique, const FrameOptions& options) {
     auto cpuStart = std::chrono::steady_clock::now();
+    const double threadStart = threadCpuMs();
+    const std::uint64_t drawsBefore = scene.drawCalls();
     const glm::ivec2 displaySize = size;
     size = zoomRenderSize(displaySize, options.zoom);
     targets_.resize(size);
@@ -25,11 +38,13 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     glm::mat4 view = camera.view();
     glm::mat4 projection =
         zoomProjection(camera.projection(float(displaySize.x) / float(displaySize.y)), displaySize, options.zoom);
+    const bool ordered = technique && technique->info().keepsSubmissionOrder;
     FrameContext frame{scene, camera, view, projection, projection * view, size, targets_, timer,
-                       scene.transparentObjects(), options.standIns};
+                       ordered ? scene.transparentObjects() : scene.transparentObjectsBatched(), options.standIns};
     // Only what can reach the view is drawn, by the opaque pass and by every technique's passes
     // (they draw frame.transparentOrder).
-    opaqueOrder_ = scene.opaqueObjects();
+    // Batched: the depth test decides, and where two opaque surfaces tie in depth no order is right.
+    opaqueOrder_ = scene.opaqueObjectsBatched();
     // A LOD unit's other parts stay in the orders though their stand-in draws nothing: a
     // technique that samples meshes rather than drawing (screendoor-object-sw) still needs them.
     std::size_t culled = 0, unitsCulled = 0;
@@ -70,7 +85,7 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         glClearNamedFramebufferfv(targets_.opaqueFramebuffer(), GL_DEPTH, 0, &clearDepth);
         glUseProgram(opaqueProgram_.id());
         scene.setFrameUniforms(opaqueProgram_, frame.viewProjection);
-        for (int object : opaqueOrder_) frame.draw(opaqueProgram_, object);
+        frame.drawAll(opaqueProgram_, opaqueOrder_);
     }
     targets_.copyOpaqueToOutput();
 
@@ -110,6 +125,8 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         if (p.name == "enlarge") result.enlargeMs += p.gpuMs;
     }
     result.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
+    result.threadCpuMs = threadCpuMs() - threadStart;
+    result.drawCalls = scene.drawCalls() - drawsBefore;
     return result;
 }
 

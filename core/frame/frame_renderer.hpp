@@ -50,6 +50,11 @@ struct FrameResult {
     double gpuMs = 0.0;     // sum over passes, the coplanarity detector's apart
     double coplanarityMs = 0.0;  // GPU time of the detector's passes (in passTimes too)
     double cpuMs = 0.0;     // wall time of the whole frame, including waits for results
+    // CPU time of the thread that rendered the frame (its own, not the driver's worker threads;
+    // a software driver such as llvmpipe shades vertices on it too), and the GL draws of scene
+    // objects its passes issued (GpuScene::drawCalls): what submission costs per object.
+    double threadCpuMs = 0.0;
+    std::uint64_t drawCalls = 0;
     TechniqueStats stats;
     std::optional<std::uint64_t> fragmentsTotal;
     std::optional<CoplanarityStats> coplanarity;  // when FrameOptions::detectCoplanarity

@@ -89,6 +89,7 @@ TechniqueEntry blendUnsortedEntry() {
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending in submission order (wrong wherever objects arrive front to back)"};
     info.rgbTransmittance = true;
+    info.keepsSubmissionOrder = true;
     return techniqueEntry<BlendTechnique>(info, false);
 }
 
@@ -97,6 +98,7 @@ TechniqueEntry blendSortedEntry() {
                        "w*h*8 RGBA16F scratch at precision=16; none at 32 (blends into the output)",
                        "alpha blending with objects sorted back to front by bounds centre"};
     info.rgbTransmittance = true;
+    info.keepsSubmissionOrder = true;
     return techniqueEntry<BlendTechnique>(info, true);
 }
 

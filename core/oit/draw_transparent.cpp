@@ -17,7 +17,7 @@ void setTransparentDepthState(const FrameContext& frame) {
 std::uint64_t drawTransparent(const FrameContext& frame, const SceneProgram& program, const std::vector<int>& order) {
     glUseProgram(program.id());
     frame.scene.setFrameUniforms(program, frame.viewProjection);
-    for (int object : order) frame.draw(program, object);
+    frame.drawAll(program, order);
     return order.size();
 }
 

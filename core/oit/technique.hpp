@@ -33,6 +33,10 @@ struct TechniqueInfo {
     // Composites a transmissive material's coloured filter per channel, exactly (oit/color_model.hpp);
     // the others composite its scalar form, which keeps its brightness and loses its tint.
     bool rgbTransmittance = false;
+    // Its image depends on the order the objects are submitted in (plain blending, and sorted
+    // blending's ties): it draws them in object order. The others draw them batched
+    // (GpuScene::transparentObjectsBatched), which changes nothing but the draw count.
+    bool keepsSubmissionOrder = false;
 };
 
 struct TechniqueStats {
@@ -76,6 +80,11 @@ struct FrameContext {
     // Draws `object` (or its stand-in) with `program`, which must be bound: every pass draws
     // scene objects through this, so a stand-in reaches every technique.
     void draw(const SceneProgram& program, int object) const { scene.draw(program, object, standInOf(object)); }
+    // Draws `order` the same way, objects that share a mesh instanced together
+    // (GpuScene::drawObjects); returns the GL draws issued.
+    std::size_t drawAll(const SceneProgram& program, const std::vector<int>& order) const {
+        return scene.drawObjects(program, order, standIns);
+    }
 };
 
 class Technique {

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -215,6 +216,29 @@ GpuScene::GpuScene(Scene scene) : scene_(std::move(scene)), objects_(flatten(sce
         features_.push_back(f);
         volumeFilter_.push_back(volumeFilterOnEntry(m, o.world));
     }
+    records_.reserve(objects_.size());
+    for (std::size_t i = 0; i < objects_.size(); ++i)
+        records_.push_back(makeObjectRecord(objects_[i].world, unsigned(objects_[i].id), volumeEntry_[i], volumeFilter_[i]));
+
+    // Batched orders: stable by (mesh, material), so each batch's objects keep their object order.
+    auto batchKey = [&](int o) {
+        const Object& object = objects_[std::size_t(o)];
+        return std::pair(object.mesh, object.material);
+    };
+    for (auto [from, to] : {std::pair{&opaque_, &opaqueBatched_}, std::pair{&transparent_, &transparentBatched_}}) {
+        *to = *from;
+        std::stable_sort(to->begin(), to->end(), [&](int a, int b) { return batchKey(a) < batchKey(b); });
+    }
+
+    // The record buffer: the objects' own records, then the ring. A run is at most every object,
+    // so the ring holds two of the longest and a pass's runs rarely wrap.
+    streamRing_ = std::max<std::size_t>(2 * objects_.size(), 1024);
+    std::vector<gpu::ObjectRecord> initial = records_;
+    initial.resize(records_.size() + streamRing_);
+    recordBuffer_ = gl::Buffer::create();
+    glNamedBufferStorage(recordBuffer_.id(), GLsizeiptr(initial.size() * sizeof(gpu::ObjectRecord)), initial.data(),
+                         GL_DYNAMIC_STORAGE_BIT);
+    for (GpuMesh& mesh : meshes_) attachObjectRecords(mesh.vertexArray.id(), recordBuffer_.id());
 }
 
 void GpuScene::uploadTextures() {
@@ -319,20 +343,15 @@ void GpuScene::setLightUniforms(GLuint program, GLint countLocation) const {
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::BIND_LIGHTS, lights_.id());
 }
 
-void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
-    const Object& o = objects_[objectIndex];
-    const Material& m = scene_.materials[o.material];
-    glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(o.world)));
-    GLuint program = p.id();
-    glProgramUniformMatrix4fv(program, p.model, 1, GL_FALSE, glm::value_ptr(o.world));
-    glProgramUniformMatrix3fv(program, p.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+void GpuScene::setMaterialUniforms(const SceneProgram& p, int objectIndex) const {
+    const Object& o = objects_[std::size_t(objectIndex)];
+    const Material& m = scene_.materials[std::size_t(o.material)];
+    const GLuint program = p.id();
     glProgramUniform3fv(program, p.baseColor, 1, glm::value_ptr(m.baseColor));
     glProgramUniform1f(program, p.alpha, m.alpha);
-    glProgramUniform1ui(program, p.objectId, GLuint(o.id));
     glProgramUniform1f(program, p.alphaCutoff, m.alphaMode == AlphaMode::Mask ? m.alphaCutoff : 0.0f);
     glProgramUniform3fv(program, p.tau, 1, glm::value_ptr(m.tau));
     glProgramUniform3fv(program, p.albedo, 1, glm::value_ptr(m.albedo));
-    glProgramUniform1i(program, p.volumeEntry, volumeEntry_[std::size_t(objectIndex)]);
     // The light loop's count, on the variant that has it (the pass's plain program does not, so
     // SceneProgram::variant has no value of it to copy).
     if (p.lightCount >= 0) setLightUniforms(program, p.lightCount);
@@ -345,7 +364,6 @@ void GpuScene::setObjectUniforms(const SceneProgram& p, int objectIndex) const {
     if (features & kSceneTransmission) {
         glProgramUniform1f(program, p.transmission, m.transmission);
         glProgramUniform1f(program, p.ior, m.ior);
-        glProgramUniform3fv(program, p.volumeFilter, 1, glm::value_ptr(volumeFilter_[std::size_t(objectIndex)]));
         glProgramUniform1i(program, p.alphaBlend, m.alphaMode == AlphaMode::Blend);
     }
     for (int slot = 0; slot < kMaterialSlots; ++slot) {
@@ -387,26 +405,17 @@ void GpuScene::bindMaterialTextures(int objectIndex) const {
     }
 }
 
-void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
-    if (standIn) {
-        drawStandIn(p, objectIndex, *standIn);
-        return;
-    }
-    const GpuMesh& mesh = meshes_[objects_[objectIndex].mesh];
-    if (mesh.indexCount == 0) return;
+const SceneProgram& GpuScene::prepareVariant(const SceneProgram& p, int objectIndex) const {
     // A material that needs more than its factors draws with the pass's program built for it,
     // the pass's uniforms copied over; a factor-only one with the pass's own program.
-    const unsigned features = features_[std::size_t(objectIndex)];
-    const SceneProgram& drawing = p.variant(features);
-    setObjectUniforms(drawing, objectIndex);
+    const SceneProgram& drawing = p.variant(features_[std::size_t(objectIndex)]);
+    setMaterialUniforms(drawing, objectIndex);
     if (frameUniformsPerDraw()) {
         glProgramUniformMatrix4fv(drawing.id(), drawing.viewProj, 1, GL_FALSE, glm::value_ptr(debugViewProjection_));
         setViewLightUniforms(drawing.id(), drawing.lightDir, drawing.eye, debugViewProjection_);
     }
     if (checkingUniforms()) {
         checkUniform(drawing.id(), drawing.viewProj, glm::value_ptr(debugViewProjection_), 16, "uViewProj", objectIndex);
-        checkUniform(drawing.id(), drawing.model, glm::value_ptr(objects_[std::size_t(objectIndex)].world), 16, "uModel",
-                     objectIndex);
         const glm::vec4 eye = eyeUniform(debugViewProjection_);
         checkUniform(drawing.id(), drawing.eye, glm::value_ptr(eye), 4, "uEye", objectIndex);
         // The material's too: a wrong colour, alpha or cut-off fits what group 2 showed better
@@ -420,11 +429,78 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
         checkUniform(drawing.id(), drawing.roughness, &m.roughness, 1, "uRoughness", objectIndex);
     }
     bindMaterialTextures(objectIndex);
-    if (features) glUseProgram(drawing.id());
+    if (&drawing != &p) glUseProgram(drawing.id());
+    return drawing;
+}
+
+bool GpuScene::sameBatch(int a, int b) const {
+    // The material's uniforms, textures and program variant are set once per draw; the variant
+    // follows from the mesh and the material.
+    const Object &x = objects_[std::size_t(a)], &y = objects_[std::size_t(b)];
+    return x.mesh == y.mesh && x.material == y.material;
+}
+
+void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
+    if (standIn) {
+        drawStandIn(p, objectIndex, *standIn);
+        return;
+    }
+    const GpuMesh& mesh = meshes_[objects_[std::size_t(objectIndex)].mesh];
+    if (mesh.indexCount == 0) return;
+    const SceneProgram& drawing = prepareVariant(p, objectIndex);
     glBindVertexArray(mesh.vertexArray.id());
-    glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    // One instance reading record `objectIndex`: the object's own.
+    glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr, 1,
+                                        GLuint(objectIndex));
+    ++drawCalls_;
     finishIfDebugging();
-    if (features) glUseProgram(p.id());  // the pass goes on with its own program bound
+    if (&drawing != &p) glUseProgram(p.id());  // the pass goes on with its own program bound
+}
+
+std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>& order,
+                                  const StandIns* standIns) const {
+    const std::uint64_t before = drawCalls_;
+    auto standInOf = [&](int o) { return standIns ? (*standIns)[std::size_t(o)] : nullptr; };
+    std::size_t i = 0;
+    while (i < order.size()) {
+        const int first = order[i];
+        if (const StandInDraw* s = standInOf(first)) {
+            draw(p, first, s);
+            ++i;
+            continue;
+        }
+        std::size_t end = i + 1;
+        // STRATA_DEBUG_NO_BATCH=1: a draw per object, for telling a batching fault from another.
+        static const bool noBatch = gl::debugSwitch("STRATA_DEBUG_NO_BATCH");
+        while (!noBatch && end < order.size() && !standInOf(order[end]) && sameBatch(first, order[end])) ++end;
+        const std::size_t n = end - i;
+        if (n == 1) {
+            draw(p, first);
+            i = end;
+            continue;
+        }
+        const GpuMesh& mesh = meshes_[objects_[std::size_t(first)].mesh];
+        if (mesh.indexCount > 0) {
+            // The run's records into the ring; glNamedBufferSubData leaves draws already issued
+            // reading what they read, so a wrapped ring is still right (the driver may stall).
+            runScratch_.clear();
+            for (std::size_t k = i; k < end; ++k) runScratch_.push_back(records_[std::size_t(order[k])]);
+            if (streamHead_ + n > streamRing_) streamHead_ = 0;
+            const std::size_t at = objects_.size() + streamHead_;
+            glNamedBufferSubData(recordBuffer_.id(), GLintptr(at * sizeof(gpu::ObjectRecord)),
+                                 GLsizeiptr(n * sizeof(gpu::ObjectRecord)), runScratch_.data());
+            streamHead_ += n;
+            const SceneProgram& drawing = prepareVariant(p, first);
+            glBindVertexArray(mesh.vertexArray.id());
+            glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr, GLsizei(n),
+                                                GLuint(at));
+            ++drawCalls_;
+            finishIfDebugging();
+            if (&drawing != &p) glUseProgram(p.id());
+        }
+        i = end;
+    }
+    return std::size_t(drawCalls_ - before);
 }
 
 void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandInDraw& standIn) const {
@@ -432,7 +508,9 @@ void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandIn
     // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
     const SceneProgram& variant =
         p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & kSceneStandInKeeps));
-    setObjectUniforms(variant, objectIndex);
+    setMaterialUniforms(variant, objectIndex);
+    // The stand-in's vertex array has no record attributes: it draws with the generic values.
+    setCurrentObject(records_[std::size_t(objectIndex)]);
     glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
     glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);
     glProgramUniform1i(variant.id(), variant.impostorAlbedo, standIn.albedo != 0);
@@ -441,6 +519,7 @@ void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandIn
     glUseProgram(variant.id());
     glBindVertexArray(standIn.vertexArray);
     glMultiDrawArrays(GL_TRIANGLES, standIn.first.data(), standIn.count.data(), GLsizei(standIn.first.size()));
+    ++drawCalls_;
     glUseProgram(p.id());  // the pass goes on with its own program bound
 }
 

@@ -4,6 +4,7 @@
 #include "gl/objects.hpp"
 #include "render/scene_program.hpp"
 #include "render/cull_hierarchy.hpp"
+#include "render/object_records.hpp"
 #include "render/stand_in.hpp"
 #include "scene/mesh_volume.hpp"
 #include "scene/scene.hpp"
@@ -69,6 +70,11 @@ public:
     const std::vector<int>& opaqueObjects() const { return opaque_; }
     const std::vector<int>& transparentObjects() const { return transparent_; }
     bool hasTransparency() const { return !transparent_.empty(); }
+    // The same lists with the objects that can share an instanced draw (sameBatch) next to each
+    // other, otherwise in object order: the order a pass whose result does not depend on the
+    // submission order draws in (drawObjects then issues one draw per batch).
+    const std::vector<int>& opaqueObjectsBatched() const { return opaqueBatched_; }
+    const std::vector<int>& transparentObjectsBatched() const { return transparentBatched_; }
     const Bounds& bounds() const { return bounds_; }
     // The mesh an object draws, for passes that read its buffers directly (vertex pulling).
     const GpuMesh& meshOf(int objectIndex) const { return meshes_[objects_[objectIndex].mesh]; }
@@ -84,10 +90,24 @@ public:
     // The objects' bounding spheres in a hierarchy over the LOD units, for frustum culling.
     const CullHierarchy& cullHierarchy() const { return cullHierarchy_; }
 
-    // Sets the per-object uniforms (model, normal matrix, material with its volume parameters
-    // tau and albedo, id, which faces enter a volume) on `program`, which must be bound, and
-    // draws the object's triangles, or with `standIn` the stand-in's quads in their place.
+    // Draws the object's triangles with `program`, which must be bound, or with `standIn` the
+    // stand-in's quads in their place. The object's values (model, normal matrix, material with
+    // its volume parameters tau and albedo, id, which faces enter a volume) are its records
+    // (render/object_records.hpp), which this binds.
     void draw(const SceneProgram& program, int objectIndex, const StandInDraw* standIn = nullptr) const;
+    // Draws `order` as draw() draws each, in that order, with one instanced draw for each run of
+    // consecutive objects that share a mesh and a material: a field of one model is a draw per
+    // part. `standIns` as FrameContext's (null:
+    // none). Returns the GL draws issued.
+    std::size_t drawObjects(const SceneProgram& program, const std::vector<int>& order,
+                            const StandIns* standIns = nullptr) const;
+    // Whether two objects can share an instanced draw (drawObjects' runs).
+    bool sameBatch(int a, int b) const;
+    // GL draw calls issued by draw() and drawObjects() since construction (the bench's and
+    // panel's draw count is the difference over a frame).
+    std::uint64_t drawCalls() const { return drawCalls_; }
+    // The object records' bytes on the GPU (the objects' own and the ring).
+    std::size_t recordBytes() const { return (records_.size() + streamRing_) * sizeof(gpu::ObjectRecord); }
 
     // Uniforms every scene program shares for a frame.
     void setFrameUniforms(const SceneProgram& program, const glm::mat4& viewProjection) const;
@@ -115,7 +135,10 @@ private:
     // The last pass's view-projection, for the STRATA_DEBUG_* experiments in gpu_scene.cpp.
     mutable glm::mat4 debugViewProjection_{1.0f};
     void uploadTextures();
-    void setObjectUniforms(const SceneProgram& program, int objectIndex) const;
+    // The object's material's uniforms (and the light loop's count) on the program that draws it.
+    void setMaterialUniforms(const SceneProgram& program, int objectIndex) const;
+    // glUseProgram of the variant for the object's features, its textures bound; returns it.
+    const SceneProgram& prepareVariant(const SceneProgram& program, int objectIndex) const;
     void drawStandIn(const SceneProgram& program, int objectIndex, const StandInDraw& standIn) const;
 
     Scene scene_;
@@ -124,6 +147,7 @@ private:
     std::vector<GpuMesh> meshes_;
     std::vector<int> opaque_;
     std::vector<int> transparent_;
+    std::vector<int> opaqueBatched_, transparentBatched_;
     std::vector<ObjectVolume> volumes_;
     std::vector<int> volumeEntry_;  // uVolumeEntry per object: 0 surface, +1/-1 entering faces
     std::vector<unsigned> features_;  // SceneFeature bits per object
@@ -139,6 +163,16 @@ private:
     std::size_t textureBytes_ = 0;
     gl::Buffer lights_;  // gpu::PunctualLight[kMaxLights], std140 (common/lighting.glsl)
     int lightCount_ = 0;
+    // Per object, what the scene programs take (render/object_records.hpp), and the vertex buffer
+    // the meshes' vertex arrays read them from as instanced attributes: records 0 .. objects-1
+    // are the objects' own (a single draw's base instance is its object), the rest a ring that
+    // drawObjects copies each run's records into.
+    std::vector<gpu::ObjectRecord> records_;
+    gl::Buffer recordBuffer_;
+    mutable std::vector<gpu::ObjectRecord> runScratch_;
+    std::size_t streamRing_ = 0;            // entries in the ring
+    mutable std::size_t streamHead_ = 0;    // next free ring entry
+    mutable std::uint64_t drawCalls_ = 0;
     Bounds bounds_;
     std::size_t triangles_ = 0;
     std::size_t meshTriangles_ = 0, meshBytes_ = 0;

@@ -14,16 +14,12 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.defines = std::move(defines);
     GLuint id = p.program.id();
     p.viewProj = glGetUniformLocation(id, "uViewProj");
-    p.model = glGetUniformLocation(id, "uModel");
-    p.normalMatrix = glGetUniformLocation(id, "uNormalMatrix");
     p.baseColor = glGetUniformLocation(id, "uBaseColor");
     p.alpha = glGetUniformLocation(id, "uAlpha");
-    p.objectId = glGetUniformLocation(id, "uObjectId");
     p.lightDir = glGetUniformLocation(id, "uLightDir");
     p.alphaCutoff = glGetUniformLocation(id, "uAlphaCutoff");
     p.tau = glGetUniformLocation(id, "uTau");
     p.albedo = glGetUniformLocation(id, "uAlbedo");
-    p.volumeEntry = glGetUniformLocation(id, "uVolumeEntry");
     p.impostorSlices = glGetUniformLocation(id, "uImpostorSlices");
     p.impostorOverlap = glGetUniformLocation(id, "uImpostorOverlap");
     p.impostorAlbedo = glGetUniformLocation(id, "uImpostorAlbedo");
@@ -36,7 +32,6 @@ SceneProgram buildFromStages(std::vector<std::string> stages, gl::Defines define
     p.occlusionStrength = glGetUniformLocation(id, "uOcclusionStrength");
     p.transmission = glGetUniformLocation(id, "uTransmission");
     p.ior = glGetUniformLocation(id, "uIor");
-    p.volumeFilter = glGetUniformLocation(id, "uVolumeFilter");
     p.alphaBlend = glGetUniformLocation(id, "uAlphaBlend");
     const char* slots[5] = {"BaseColor", "MetallicRoughness", "Normal", "Occlusion", "Emissive"};
     for (int i = 0; i < 5; ++i) {
@@ -118,11 +113,11 @@ const SceneProgram& SceneProgram::variant(unsigned features) const {
         if (features & kScenePunctualLights) defines["STRATA_PUNCTUAL_LIGHTS"] = "";
         if (features & kSceneTransmission) defines["STRATA_TRANSMISSION"] = "";
         v->program = buildFromStages(stages, defines);
-        // Every plain uniform of this program except the per-object ones GpuScene::draw sets on
-        // whichever program draws (samplers, images and blocks bind by layout, not by value).
+        // Every plain uniform of this program except the material's, which GpuScene sets on
+        // whichever program draws (samplers, images and blocks bind by layout, not by value; the
+        // object's own values are its record, not uniforms).
         const std::set<std::string> perObject = {
-            "uModel", "uNormalMatrix", "uBaseColor", "uAlpha", "uObjectId", "uAlphaCutoff", "uTau", "uAlbedo",
-            "uVolumeEntry", "uMetallic", "uRoughness", "uEmissive", "uNormalScale", "uOcclusionStrength",
+            "uBaseColor", "uAlpha", "uAlphaCutoff", "uTau", "uAlbedo", "uMetallic", "uRoughness", "uEmissive", "uNormalScale", "uOcclusionStrength",
             "uBaseColorTransform", "uBaseColorTexCoord", "uMetallicRoughnessTransform", "uMetallicRoughnessTexCoord",
             "uNormalTransform", "uNormalTexCoord", "uOcclusionTransform", "uOcclusionTexCoord",
             "uEmissiveTransform", "uEmissiveTexCoord"};

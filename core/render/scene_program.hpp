@@ -56,13 +56,13 @@ struct TextureUniforms {
 
 struct SceneProgram {
     gl::Program program;
-    GLint viewProj = -1, model = -1, normalMatrix = -1, baseColor = -1, alpha = -1, objectId = -1,
-          lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
-          volumeEntry = -1,  // shaders/oit/volume/volume_store.glsl
+    // The material's and the pass's uniforms. The object's own values (transform, id, volume
+    // entry and filter) are not uniforms: they come from its record (render/object_records.hpp).
+    GLint viewProj = -1, baseColor = -1, alpha = -1, lightDir = -1, alphaCutoff = -1, tau = -1, albedo = -1,
           impostorSlices = -1, impostorOverlap = -1, impostorAlbedo = -1,  // common/scene_main.glsl (the variant's)
           metallic = -1, roughness = -1, emissive = -1, eye = -1, lightCount = -1,
           normalScale = -1, occlusionStrength = -1,  // common/material.glsl (the variant's)
-          transmission = -1, ior = -1, volumeFilter = -1, alphaBlend = -1;
+          transmission = -1, ior = -1, alphaBlend = -1;
     // Base colour, metallic-roughness, normal, occlusion, emissive (GpuScene's MaterialSlot order).
     TextureUniforms textures[5];
 

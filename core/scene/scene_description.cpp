@@ -302,6 +302,9 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
     // A file that several objects place is read once: its meshes, materials and textures are
     // the scene's once, each object a node with its transform and overrides above them.
     std::map<std::filesystem::path, PlacedModel> models;
+    // Objects whose overrides are written alike share one material: the renderer draws objects
+    // of one mesh and one material together (GpuScene::drawObjects).
+    std::map<std::string, int> overrides;
 
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const json& o = objects[i];
@@ -372,7 +375,12 @@ Scene parse(const json& doc, const std::filesystem::path& jsonFile, std::vector<
             // A tiny model fitted to a huge size, or a model whose bounds overflow, cannot render.
             if (!finite(node.local)) fail(where + "fit: the transform with the model's bounds overflows a float");
         }
-        if (override) node.materialOverride = scene.addMaterial(std::move(*override));
+        if (override) {
+            const std::string text = o["material"].dump();
+            auto shared = overrides.find(text);
+            if (shared == overrides.end()) shared = overrides.emplace(text, scene.addMaterial(std::move(*override))).first;
+            node.materialOverride = shared->second;
+        }
         node.children = placed->second.roots;
         scene.addNode(std::move(node));
     }

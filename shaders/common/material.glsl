@@ -19,6 +19,7 @@
 #include "bindings.h"
 #include "shading_model.h"
 #include "material_features.glsl"
+#include "object_record.glsl"
 
 uniform vec3 uBaseColor;
 uniform float uAlpha;
@@ -29,7 +30,8 @@ uniform vec3 uEmissive;  // emissiveFactor x KHR_materials_emissive_strength
 #ifdef STRATA_TRANSMISSION
 uniform float uTransmission;
 uniform float uIor;
-uniform vec3 uVolumeFilter;  // exp(-tau x thickness) through the medium, per channel
+// uVolumeFilter, exp(-tau x thickness) through the medium per channel, is the object's
+// (common/object_record.glsl).
 uniform bool uAlphaBlend;    // BLEND: alpha is coverage; OPAQUE glass covers its whole surface
 #endif
 

@@ -31,9 +31,12 @@ out MaterialVarying {
 } vMaterial;
 #endif
 
+// The object being drawn (common/object_record.glsl): its record gives the transform and what
+// passObjectOn hands the later stages.
+#define STRATA_OBJECT_VERTEX_STAGE
+#include "object_record.glsl"
+
 uniform mat4 uViewProj;
-uniform mat4 uModel;
-uniform mat3 uNormalMatrix;
 
 out vec3 vWorldNormal;
 // World position: a geometry stage (oit/screendoor/object_mask.geom.glsl) measures triangles
@@ -49,8 +52,11 @@ out ImpostorVarying {
 #endif
 
 void main() {
-    vWorldNormal = uNormalMatrix * inNormal;
-    vec4 world = uModel * vec4(inPosition, 1.0);
+    mat4 model = inModel;
+    mat3 normalMatrix = objectNormalMatrix();
+    passObjectOn(normalMatrix);
+    vWorldNormal = normalMatrix * inNormal;
+    vec4 world = model * vec4(inPosition, 1.0);
     vWorldPosition = world.xyz;
 #ifdef STRATA_IMPOSTOR
     vImpostor.uv = inImpostor.xy;
@@ -62,7 +68,7 @@ void main() {
     vMaterial.color = inColor;
 #ifdef STRATA_NORMAL_TEXTURE
     // Tangents transform with the surface, as positions do (not by the normal matrix).
-    vMaterial.tangent = vec4(mat3(uModel) * inTangent.xyz, inTangent.w);
+    vMaterial.tangent = vec4(mat3(model) * inTangent.xyz, inTangent.w);
 #endif
 #endif
     gl_Position = uViewProj * world;

@@ -15,7 +15,7 @@
 
 uniform int uImpostorSlices;
 uniform float uImpostorOverlap;
-uniform mat3 uNormalMatrix;
+// uNormalMatrix: the object's (common/object_record.glsl).
 // RGBA8: rgb the object-space normal * 0.5 + 0.5, a the depth code (0 empty, 1..255 the depth
 // along the view's slice axis, t = (code - 0.5) / 255 over the slab the slices cover).
 layout(binding = BIND_IMPOSTOR_ATLAS) uniform sampler2DArray uImpostorAtlas;

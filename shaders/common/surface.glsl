@@ -3,7 +3,7 @@
 #include "shading.glsl"
 #include "shade_material.glsl"
 
-uniform uint uObjectId;
+// uObjectId is the object's (common/object_record.glsl, which common/material.glsl includes).
 // The volumetric model (Barta & Kovacs; Material::tau and albedo): attenuation per metre for
 // each channel and the single-scattering albedo, both zero for a thin surface.
 uniform vec3 uTau;

@@ -152,12 +152,19 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
 void ObjectSkipper::draw(const FrameContext& frame, const SceneProgram& program, TechniqueStats& stats) {
     glUseProgram(program.id());
     frame.scene.setFrameUniforms(program, frame.viewProjection);
+    if (!enabled_) {
+        frame.drawAll(program, frame.transparentOrder);
+        stats.objectDraws += frame.transparentOrder.size();
+        return;
+    }
+    // The objects that draw without a condition go out together (instanced where they share a
+    // mesh), in submission order up to each conditional draw.
+    unconditional_.clear();
+    auto flush = [&] {
+        frame.drawAll(program, unconditional_);
+        unconditional_.clear();
+    };
     for (int o : frame.transparentOrder) {
-        if (!enabled_) {
-            frame.draw(program, o);
-            ++stats.objectDraws;
-            continue;
-        }
         if (culled_[o]) {
             ++stats.objectDrawsSkipped;
             continue;
@@ -186,14 +193,16 @@ void ObjectSkipper::draw(const FrameContext& frame, const SceneProgram& program,
         }
         ++stats.objectDraws;
         if (unknown) {
+            flush();
             glBeginConditionalRender(unknown, GL_QUERY_WAIT);
             frame.draw(program, o);
             glEndConditionalRender();
             conditional_.push_back({unknown});
         } else {
-            frame.draw(program, o);
+            unconditional_.push_back(o);
         }
     }
+    flush();
 }
 
 void ObjectSkipper::endFrame(TechniqueStats& stats) {

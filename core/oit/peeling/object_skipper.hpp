@@ -77,6 +77,7 @@ private:
     std::vector<ScreenBox> boxes_;  // per object id, this frame
     std::vector<Pending> pending_;
     std::vector<Conditional> conditional_;
+    std::vector<int> unconditional_;  // draw()'s scratch: the objects it draws without a condition
     std::vector<gl::Query> pool_;
     std::size_t poolUsed_ = 0;
     std::uint64_t queryDraws_ = 0;

@@ -21,7 +21,25 @@ in vec3 vWorldPosition[];
 uniform vec3 uEyePosition;
 uniform vec3 uViewAxis;         // unit vector the camera looks along
 uniform float uSamplesPerUnit;  // supersampled pixels per scene unit at distance 1
-uniform uint uObjectId;
+
+// The object being drawn (common/object_record.glsl), passed on to the fragment stage.
+in ObjectVarying {
+    flat uint id;
+    flat int volumeEntry;
+    flat vec3 volumeFilter;
+#ifdef STRATA_IMPOSTOR
+    flat mat3 normalMatrix;
+#endif
+} objectIn[];
+out ObjectVarying {
+    flat uint id;
+    flat int volumeEntry;
+    flat vec3 volumeFilter;
+#ifdef STRATA_IMPOSTOR
+    flat mat3 normalMatrix;
+#endif
+} objectOut;
+#define uObjectId (objectIn[0].id)
 
 #ifdef STRATA_IMPOSTOR
 // Passed on to the scene fragment wrapper (common/scene_main.glsl) under the same block name.
@@ -72,6 +90,12 @@ void main() {
     vec2 coords[3] = vec2[3](vec2(0.0), vec2(lu, 0.0), vec2(k, sqrt(max(lv * lv - k * k, 0.0))));
     for (int i = 0; i < 3; ++i) {
         gl_Position = gl_in[i].gl_Position;
+        objectOut.id = objectIn[i].id;
+        objectOut.volumeEntry = objectIn[i].volumeEntry;
+        objectOut.volumeFilter = objectIn[i].volumeFilter;
+#ifdef STRATA_IMPOSTOR
+        objectOut.normalMatrix = objectIn[i].normalMatrix;
+#endif
         gWorldNormal = vWorldNormal[i];
         gWorldPosition = vWorldPosition[i];
 #ifdef STRATA_IMPOSTOR

@@ -4,9 +4,10 @@
 // VOLUME defined).
 #include "oit/volume/volume_bindings.h"
 
-// Set per object by GpuScene::draw: 0 a thin surface; +1 the ray enters through faces with
-// gl_FrontFacing, -1 through the others (inward-wound meshes and mirroring worlds).
-uniform int uVolumeEntry;
+// The object's uVolumeEntry (common/object_record.glsl): 0 a thin surface; +1 the ray enters
+// through faces with gl_FrontFacing, -1 through the others (inward-wound meshes and mirroring
+// worlds).
+#include "common/object_record.glsl"
 
 uint volumeFlags() {
     if (uVolumeEntry == 0) return 0u;

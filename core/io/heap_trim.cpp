@@ -1,0 +1,18 @@
+#include "io/heap_trim.hpp"
+
+#include <cstddef>  // defines __GLIBC__ where the C library is glibc
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace strata {
+
+void keepFreedHeap() {
+#if defined(__GLIBC__)
+    // 64 MB: more than any per-draw block seen (a draw's vertex data), little beside a frame's
+    // targets and fragment buffers.
+    mallopt(M_TRIM_THRESHOLD, 64 << 20);
+#endif
+}
+
+}  // namespace strata
