@@ -146,8 +146,10 @@ PassMs marginalDraw(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
 
 // One opaque object of `mesh` with a factor-only material, on the GPU: the marginal draws are
 // timed through GpuScene::draw, so a fixed cost is what one more object costs a frame (its
-// per-object uniforms, its vertex array; for a stand-in the switch to the pass's stand-in variant
-// and back, the variant's uniforms and the atlas), not one more bare draw call. Timed bare, a
+// material's uniforms, its vertex array; for a stand-in the switch to the pass's stand-in variant
+// and back, the variant's uniforms and the atlas), not one more bare draw call. An object drawn
+// in a batch (GpuScene::drawObjects) costs less than this: the model charges every object a
+// draw of its own, which overstates geometry where many objects share a mesh. Timed bare, a
 // stand-in measured 1e-5 ms on an NVIDIA H100 while the frame's stand-ins cost at least 0.4 us
 // each, and auto chose impostors that were slower than the geometry (docs/gpu-h100.md).
 GpuScene oneObjectScene(Mesh mesh) {

@@ -149,6 +149,8 @@ TEST_CASE("objects sharing a mesh and material draw as one instanced draw, each 
         CHECK(got.x == float(scene.objects()[std::size_t(o)].id));
         CHECK(got.y == 0.0f);  // a thin surface
         CHECK(got.z == (o < kRow ? 0.25f : 0.75f));
+        const std::size_t i = (std::size_t(at.y) * std::size_t(size.x) + std::size_t(at.x)) * 4;
+        CHECK(ids.rgba[i + 3] <= 1.0f);  // a quad's two triangles: 0 or 1 in every instance
     }
 }
 
@@ -183,7 +185,7 @@ TEST_CASE("the object stream's ring wraps without disturbing the draws already i
     camera.fovYDegrees = 60.0f;
     camera.lookAt({0.0f, 0.0f, 5.0f}, {0.0f, 0.0f, 0.0f});
     const glm::mat4 viewProjection = camera.projection(float(size.x) / float(size.y)) * camera.view();
-    const std::vector<int> row = {0, 1, 2, 3, 4, 5};
+    const std::vector<int> row = {5, 3, 1, 0, 2, 4};  // not consecutive: through the ring
     Target target(size);
     target.begin();
     glUseProgram(program.id());

@@ -23,7 +23,7 @@ namespace strata {
 struct FrameOptions {
     bool timePasses = true;
     bool countFragments = false;
-    bool reverseSubmission = false;   // draw transparent objects in reverse id order
+    bool reverseSubmission = false;   // draw transparent objects in the reverse of the technique's order
     // Run the coplanarity detector (oit/coplanarity_detector.hpp) after the technique: its
     // heatmap and counts are then in coplanarity(), its figures in FrameResult::coplanarity.
     bool detectCoplanarity = false;

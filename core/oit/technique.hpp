@@ -33,9 +33,12 @@ struct TechniqueInfo {
     // Composites a transmissive material's coloured filter per channel, exactly (oit/color_model.hpp);
     // the others composite its scalar form, which keeps its brightness and loses its tint.
     bool rgbTransmittance = false;
-    // Its image depends on the order the objects are submitted in (plain blending, and sorted
-    // blending's ties): it draws them in object order. The others draw them batched
-    // (GpuScene::transparentObjectsBatched), which changes nothing but the draw count.
+    // Its image depends on the order the objects are submitted in (plain blending, and the ties
+    // of the back-to-front sort of sorted blending and crow): it draws them in object order. The
+    // others draw them batched (GpuScene::transparentObjectsBatched). Their images change only
+    // where the order was never defined on a GPU anyway: which fragments a full fixed array
+    // (fab) keeps, which surface an exact depth tie leaves to a peeler that does not handle
+    // coplanarity, and the rounding of wboit's sums.
     bool keepsSubmissionOrder = false;
 };
 

@@ -481,15 +481,21 @@ std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>&
         }
         const GpuMesh& mesh = meshes_[objects_[std::size_t(first)].mesh];
         if (mesh.indexCount > 0) {
-            // The run's records into the ring; glNamedBufferSubData leaves draws already issued
-            // reading what they read, so a wrapped ring is still right (the driver may stall).
-            runScratch_.clear();
-            for (std::size_t k = i; k < end; ++k) runScratch_.push_back(records_[std::size_t(order[k])]);
-            if (streamHead_ + n > streamRing_) streamHead_ = 0;
-            const std::size_t at = objects_.size() + streamHead_;
-            glNamedBufferSubData(recordBuffer_.id(), GLintptr(at * sizeof(gpu::ObjectRecord)),
-                                 GLsizeiptr(n * sizeof(gpu::ObjectRecord)), runScratch_.data());
-            streamHead_ += n;
+            // Objects with consecutive indices read their own records in place; any other run's
+            // records go into the ring (glNamedBufferSubData leaves draws already issued reading
+            // what they read, so a wrapped ring is still right; the driver may stall).
+            bool consecutive = true;
+            for (std::size_t k = i + 1; k < end && consecutive; ++k) consecutive = order[k] == order[k - 1] + 1;
+            std::size_t at = std::size_t(first);
+            if (!consecutive) {
+                runScratch_.clear();
+                for (std::size_t k = i; k < end; ++k) runScratch_.push_back(records_[std::size_t(order[k])]);
+                if (streamHead_ + n > streamRing_) streamHead_ = 0;
+                at = objects_.size() + streamHead_;
+                glNamedBufferSubData(recordBuffer_.id(), GLintptr(at * sizeof(gpu::ObjectRecord)),
+                                     GLsizeiptr(n * sizeof(gpu::ObjectRecord)), runScratch_.data());
+                streamHead_ += n;
+            }
             const SceneProgram& drawing = prepareVariant(p, first);
             glBindVertexArray(mesh.vertexArray.id());
             glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr, GLsizei(n),

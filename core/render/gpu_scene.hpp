@@ -97,7 +97,8 @@ public:
     void draw(const SceneProgram& program, int objectIndex, const StandInDraw* standIn = nullptr) const;
     // Draws `order` as draw() draws each, in that order, with one instanced draw for each run of
     // consecutive objects that share a mesh and a material: a field of one model is a draw per
-    // part. `standIns` as FrameContext's (null:
+    // part. A run of consecutive object indices reads the objects' records in place; another
+    // run's records are copied into a ring first. `standIns` as FrameContext's (null:
     // none). Returns the GL draws issued.
     std::size_t drawObjects(const SceneProgram& program, const std::vector<int>& order,
                             const StandIns* standIns = nullptr) const;

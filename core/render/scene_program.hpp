@@ -1,6 +1,7 @@
 #pragma once
 // A program that draws scene meshes (shaders/common/scene.vert.glsl plus a fragment stage),
-// with the locations of the per-frame and per-object uniforms looked up once. A stage that
+// with the locations of the per-pass and material uniforms looked up once (an object's own
+// values are its record: render/object_records.hpp). A stage that
 // does not use a uniform has location -1, which GL ignores, so one draw path serves all.
 //
 // Its variants are the same stages built with more defines, one per combination of what an
@@ -49,7 +50,7 @@ inline constexpr unsigned kSceneBakedDetail = kSceneBaseColorTexture | kSceneVer
 // What a stand-in keeps of its object's draw: the factors and lights it shades with.
 inline constexpr unsigned kSceneStandInKeeps = kSceneUnlit | kScenePunctualLights | kSceneTransmission;
 
-// The per-object locations of one material texture's uniforms (common/material.glsl).
+// The locations of one material texture's uniforms (common/material.glsl).
 struct TextureUniforms {
     GLint transform = -1, texCoord = -1;
 };

@@ -72,6 +72,7 @@ TechniqueEntry crowEntry() {
     TechniqueInfo info{"crow", "baseline", false, false, "1", "none (blends into the output)",
                        "Crow's silhouette opacity: alpha from the normal against the view direction, "
                        "objects blended back to front"};
+    info.keepsSubmissionOrder = true;  // sorted back to front like blend-sorted: ties keep object order
     return techniqueEntry<Crow>(info);
 }
 
