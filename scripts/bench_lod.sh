@@ -22,9 +22,11 @@
 #   --quick: field:100 at 640x360, views 20, slices 16,64, resolutions 64,128, 2 frames,
 #            crossover sizes 64,128,256.
 #   --scale: instead of the above, the scene graph at scale (issue 23; scripts/lib/bench_scale.py):
-#            builtin:orchard:N for each of --scale-counts, and 64 copies of a 115-part CAD model
-#            (assimp-testmodels' 2CylinderEngine.glb); render wall time and RSS, frame ms and PSNR
-#            per LOD mode, impostor memory, the LOD step's CPU per object, beside the issue's aims.
+#            builtin:orchard:N for each of --scale-counts, 64 copies of a 115-part CAD model
+#            (assimp-testmodels' 2CylinderEngine.glb) and 10^4 copies of a 12-triangle box
+#            (scripts/lib/instanced_boxes.py); render wall time and RSS, frame ms and PSNR per LOD
+#            mode, impostor memory, the LOD step's CPU per object, GL draws per frame and the
+#            render thread's CPU, beside the issue's aims.
 #            Default size 640x400, 3 frames; output in docs/bench/scale.
 # The impostor settings reach strata as --impostor-views, --impostor-slices and
 # --impostor-resolution (change VIEWS_FLAG, SLICES_FLAG, RES_FLAG below if they are named otherwise).
