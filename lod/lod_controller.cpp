@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <ostream>
 #include <stdexcept>
 
@@ -37,6 +38,9 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
     keys_ = impostorKeys(scene_);
     const LodUnits& units = keys_.units;
     inputs_.resize(units.units.size());
+    // How many objects share each (mesh, material): the batches GpuScene draws instanced.
+    std::map<std::pair<int, int>, int> batch;
+    for (const Object& o : scene_.objects()) ++batch[{o.mesh, o.material}];
     for (std::size_t u = 0; u < units.units.size(); ++u) {
         const LodUnit& unit = units.units[u];
         LodObjectInput& in = inputs_[u];
@@ -44,6 +48,11 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
         in.radius = unit.worldBounds.radius();
         in.triangles = unit.triangles;
         in.objects = int(unit.objects.size());
+        in.geometryDraws = 0.0;
+        for (int object : unit.objects) {
+            const Object& o = scene_.objects()[std::size_t(object)];
+            in.geometryDraws += 1.0 / double(batch[{o.mesh, o.material}]);
+        }
         in.impostor.id = keys_.ofUnit[u];  // units of the same parts in the same places share it
         const Object& representative = scene_.objects()[std::size_t(unit.objects[0])];
         in.transparent = scene_.scene().materials[std::size_t(representative.material)].isTransparent();
@@ -302,7 +311,7 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
             // the impostor's layer pixels, the geometry's covered pixels.
             const double fixedMs = d.impostor ? model.impostorFixedMs
                                               : model.geometryMs(double(inputs[i].triangles), 0.0,
-                                                                 double(std::max(inputs[i].objects, 1)));
+                                                                 inputs[i].drawsForGeometry());
             level.pixelMs += std::max(0.0, (d.impostor ? d.impostorMs : d.geometryMs) - fixedMs);
         }
         level.lossPx = weightedError / std::max({covered, area, 1.0});

@@ -63,7 +63,7 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
     // Screen areas clipped to the image (an infinite size, eye inside, covers the image).
     const double squarePx = std::min(d.projectedPx * d.projectedPx, imageArea);
     const double discPx = std::min(0.25 * std::numbers::pi * d.projectedPx * d.projectedPx, imageArea);
-    d.geometryMs = model.geometryMs(double(object.triangles), discPx, double(std::max(object.objects, 1)));
+    d.geometryMs = model.geometryMs(double(object.triangles), discPx, object.drawsForGeometry());
 
     auto geometry = [&](LodReason why) {
         d.impostor = false;

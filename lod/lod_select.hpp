@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -60,6 +61,11 @@ struct LodObjectInput {
     float radius = 0.0f;
     std::uint64_t triangles = 0;
     int objects = 1;               // scene objects it stands for (LodSelection::impostorObjects)
+    // The draws its geometry costs, each paying the model's fixed cost: a part whose mesh and
+    // material k objects share goes out in one instanced draw with them (GpuScene::drawObjects)
+    // and pays 1/k of one. 0: one per object. A stand-in is a draw of its own, whatever this is.
+    double geometryDraws = 0.0;
+    double drawsForGeometry() const { return geometryDraws > 0.0 ? geometryDraws : double(std::max(objects, 1)); }
     bool hasImpostor = false;
     // Auto leaves transparent objects geometry; only --lod impostors draws them as impostors.
     // Their composite is what the techniques are compared on, and an impostor moves each
