@@ -85,6 +85,16 @@ glm::ivec2 centreOf(const GpuScene& scene, const glm::mat4& viewProjection, glm:
     return glm::ivec2((ndc * 0.5f + 0.5f) * glm::vec2(size));
 }
 
+// Objects 0 .. count-1 each where its own transform puts it, in its own material's colour.
+void checkOwnColours(const GpuScene& scene, const Image& image, const glm::mat4& viewProjection, int count) {
+    for (int o = 0; o < count; ++o) {
+        CAPTURE(o);
+        const glm::ivec2 at = centreOf(scene, viewProjection, {image.width, image.height}, o);
+        const Material& m = scene.scene().materials[std::size_t(scene.objects()[std::size_t(o)].material)];
+        for (int c = 0; c < 3; ++c) CHECK(pixel(image, at.x, at.y)[c] == doctest::Approx(m.baseColor[c]).epsilon(1e-5));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("objects sharing a mesh and material draw as one instanced draw, each with its own transform and id") {
@@ -119,15 +129,8 @@ TEST_CASE("objects sharing a mesh and material draw as one instanced draw, each 
     gl::checkGl("instanced draws");
 
     // Every object where its own transform puts it, in its own material's colour, in both images.
-    for (int o = 0; o < kRow + 2; ++o) {
-        CAPTURE(o);
-        const glm::ivec2 at = centreOf(scene, viewProjection, size, o);
-        const Material& m = scene.scene().materials[std::size_t(scene.objects()[std::size_t(o)].material)];
-        for (int c = 0; c < 3; ++c) {
-            CHECK(pixel(single, at.x, at.y)[c] == doctest::Approx(m.baseColor[c]).epsilon(1e-5));
-            CHECK(pixel(batched, at.x, at.y)[c] == doctest::Approx(m.baseColor[c]).epsilon(1e-5));
-        }
-    }
+    checkOwnColours(scene, single, viewProjection, kRow + 2);
+    checkOwnColours(scene, batched, viewProjection, kRow + 2);
     double largest = 0.0;
     for (std::size_t i = 0; i < single.rgba.size(); ++i)
         largest = std::max(largest, double(std::abs(single.rgba[i] - batched.rgba[i])));
@@ -195,10 +198,5 @@ TEST_CASE("the object stream's ring wraps without disturbing the draws already i
     }
     const Image image = target.read();
     gl::checkGl("ring");
-    for (int o = 0; o < kRow; ++o) {
-        CAPTURE(o);
-        const glm::ivec2 at = centreOf(scene, viewProjection, size, o);
-        const Material& m = scene.scene().materials[std::size_t(scene.objects()[std::size_t(o)].material)];
-        for (int c = 0; c < 3; ++c) CHECK(pixel(image, at.x, at.y)[c] == doctest::Approx(m.baseColor[c]).epsilon(1e-5));
-    }
+    checkOwnColours(scene, image, viewProjection, kRow);
 }

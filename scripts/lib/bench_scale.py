@@ -13,7 +13,7 @@ through a scene description written to the output folder; skipped where the mode
 Prints a markdown table with the issue's aims beside the measured values; the JSON of every run
 stays in the output folder.
 """
-import json, os, shutil, subprocess, sys, tempfile, time
+import atexit, json, os, shutil, subprocess, sys, tempfile, time
 
 strata, out, size, frames, counts = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5].split(',')
 CAD_MODEL = '/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb'
@@ -63,7 +63,9 @@ if os.path.isfile(CAD_MODEL):
 BOX_MODEL = '/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb'
 if os.path.isfile(BOX_MODEL):
     # 10^4 small objects: where the per-object submission cost, not triangles, decides.
-    boxes = os.path.join(tempfile.mkdtemp(prefix='strata-boxes-'), 'boxes-10k.json')  # 0.8 MB: not kept
+    boxes_dir = tempfile.mkdtemp(prefix='strata-boxes-')  # 0.8 MB of JSON: not kept
+    atexit.register(shutil.rmtree, boxes_dir, True)
+    boxes = os.path.join(boxes_dir, 'boxes-10k.json')
     subprocess.run([sys.executable, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'instanced_boxes.py'),
                     boxes, '100', BOX_MODEL], check=True)
     scenes.append((boxes, 'boxes-10k'))

@@ -11,28 +11,29 @@
 // passes that on too.
 //
 // The vertex stage defines STRATA_OBJECT_VERTEX_STAGE before including this; the fragment stages
-// include it as it is. A geometry stage (oit/screendoor/object_mask.geom.glsl) declares the block
-// in and out itself and copies it.
+// include it as it is. A geometry stage (oit/screendoor/object_mask.geom.glsl) defines
+// STRATA_OBJECT_GEOMETRY_STAGE, declares the block in and out with STRATA_OBJECT_VARYING_MEMBERS
+// and copies it.
 #ifndef STRATA_OBJECT_RECORD_GLSL
 #define STRATA_OBJECT_RECORD_GLSL
 #include "bindings.h"
 #include "common/object_records.h"
 
-#ifdef STRATA_OBJECT_VERTEX_STAGE
+// The members of ObjectVarying, the block every stage declares with them.
+#ifdef STRATA_IMPOSTOR
+#define STRATA_OBJECT_VARYING_MEMBERS flat uint id; flat int volumeEntry; flat vec3 volumeFilter; flat mat3 normalMatrix;
+#else
+#define STRATA_OBJECT_VARYING_MEMBERS flat uint id; flat int volumeEntry; flat vec3 volumeFilter;
+#endif
+
+#if defined(STRATA_OBJECT_VERTEX_STAGE)
 // Instanced attributes: one record per instance (GpuScene's object records), or for a vertex
 // array without them (a stand-in's, uploadMesh's alone) the current generic values.
 layout(location = ATTRIB_OBJECT) in uvec2 inObject;  // id, volume entry
 layout(location = ATTRIB_OBJECT_MODEL) in mat4 inModel;
 layout(location = ATTRIB_OBJECT_FILTER) in vec3 inVolumeFilter;
 
-out ObjectVarying {
-    flat uint id;
-    flat int volumeEntry;
-    flat vec3 volumeFilter;
-#ifdef STRATA_IMPOSTOR
-    flat mat3 normalMatrix;
-#endif
-} vObject;
+out ObjectVarying { STRATA_OBJECT_VARYING_MEMBERS } vObject;
 
 // The normal matrix, the inverse transpose of the model's linear part: computed per vertex, which
 // costs llvmpipe less than fetching three more attributes.
@@ -49,15 +50,8 @@ void passObjectOn(mat3 normalMatrix) {
 #endif
 }
 
-#else
-in ObjectVarying {
-    flat uint id;
-    flat int volumeEntry;
-    flat vec3 volumeFilter;
-#ifdef STRATA_IMPOSTOR
-    flat mat3 normalMatrix;
-#endif
-} vObject;
+#elif !defined(STRATA_OBJECT_GEOMETRY_STAGE)
+in ObjectVarying { STRATA_OBJECT_VARYING_MEMBERS } vObject;
 #define uObjectId (vObject.id)
 #define uVolumeEntry (vObject.volumeEntry)
 #define uVolumeFilter (vObject.volumeFilter)

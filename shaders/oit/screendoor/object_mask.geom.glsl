@@ -23,22 +23,10 @@ uniform vec3 uViewAxis;         // unit vector the camera looks along
 uniform float uSamplesPerUnit;  // supersampled pixels per scene unit at distance 1
 
 // The object being drawn (common/object_record.glsl), passed on to the fragment stage.
-in ObjectVarying {
-    flat uint id;
-    flat int volumeEntry;
-    flat vec3 volumeFilter;
-#ifdef STRATA_IMPOSTOR
-    flat mat3 normalMatrix;
-#endif
-} objectIn[];
-out ObjectVarying {
-    flat uint id;
-    flat int volumeEntry;
-    flat vec3 volumeFilter;
-#ifdef STRATA_IMPOSTOR
-    flat mat3 normalMatrix;
-#endif
-} objectOut;
+#define STRATA_OBJECT_GEOMETRY_STAGE
+#include "common/object_record.glsl"
+in ObjectVarying { STRATA_OBJECT_VARYING_MEMBERS } objectIn[];
+out ObjectVarying { STRATA_OBJECT_VARYING_MEMBERS } objectOut;
 #define uObjectId (objectIn[0].id)
 
 #ifdef STRATA_IMPOSTOR
