@@ -5,11 +5,11 @@
 //         blending straight under the accumulation.
 // Both end with one full-screen composite over the opaque colour.
 //
-// Stopping: the peel pass counts (atomic counter) every fragment still to be peeled, and the
-// layer pass counts (samples passed) the fragments it captured. When the two are equal nothing
-// lies behind this layer and no further pass is issued, so D layers cost exactly D peels; a
-// layer pass that captures nothing (only coincident leftovers were left, which a strict test
-// never peels) stops it too. max_passes bounds the loop; hitting it is reported as an overflow.
+// Stopping: a counting pass before the first peel counts (samples passed) every transparent
+// fragment in front of the opaque depth, and each layer pass counts the fragments it captured.
+// When what is left equals what a layer captured nothing lies behind it and no further pass is
+// issued, so D layers cost exactly D peels; a layer pass that captures nothing (only coincident
+// leftovers were left, which a strict test never peels) stops it too. max_passes bounds the loop; hitting it is reported as an overflow.
 //
 // In a scene with coloured filters (oit/color_model.hpp) both composite them per channel: the
 // accumulation (and f2b's layer target) gains a second target, what lets light through per
@@ -43,17 +43,14 @@ public:
         options.maxPasses = settings_.maxPasses;
         // What is left lies behind the layer just peeled.
         options.between = [&](int layer) { skipper_.query(frame, depth_[layer % 2].id(), {RemainingSide::NotNearerThanR}); };
+        // What lies strictly behind a layer is what lay behind the previous one less the
+        // fragments just captured (the loop's remaining count).
+        loop.setTotal(countFragments(frame));
         loop.run(options, [&](int layer) {
+            // Everything lies behind the opaque surfaces: nothing to peel.
+            if (loop.remaining() == 0) return PeelStep{};
             const int cur = layer % 2;
             peel(frame, layer, cur);
-            // The first peel counts every transparent fragment (its atomic counter). Later
-            // peels do not: an atomic per fragment per pass costs a third of a peel pass on
-            // llvmpipe. What lies strictly behind a layer is then what lay behind the previous
-            // one less the fragments just captured (the loop's remaining count).
-            if (layer == 0) loop.setTotal(readCounter());
-            // A peel that found nothing (only coincident leftovers, which a strict test never
-            // peels) is not waited for: its layer pass captures nothing, which ends the loop.
-            if (loop.remaining() == 0) return PeelStep{};
             const std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
             return PeelStep{captured, captured};
         });
@@ -64,8 +61,7 @@ public:
         // accumulation (RGBA16F, 8 B, or RGBA32F, 16 B, each).
         const std::uint64_t rgba = floatTexelBytes(settings_.precision, 4);
         // With coloured filters, the accumulated filter (and f2b's layer filter) besides.
-        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + (rgb() ? 2 : 1) * rgba : 2 * 4 + (rgb() ? 4 : 2) * rgba) +
-                       sizeof(GLuint);
+        stats_.bytes = pixels * (twoPass_ ? 2 * 8 + (rgb() ? 2 : 1) * rgba : 2 * 4 + (rgb() ? 4 : 2) * rgba);
     }
 
 private:
@@ -77,8 +73,7 @@ private:
             gl::Defines defines = withColorModel({}, model);
             if (twoPass_) defines["DEPTH_ONLY"] = "";
             p.peel = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
-            // The counting program of the first layer; the others write no memory, so their
-            // depth test runs before the shader (f2b_peel.frag.glsl).
+            // The first layer has no previous depth to test against (f2b_peel.frag.glsl).
             defines["FIRST_LAYER"] = "";
             p.peelFirst = buildSceneProgram("oit/peeling/f2b_peel.frag.glsl", defines);
             if (twoPass_)
@@ -87,9 +82,8 @@ private:
                 p.blend = buildFullscreenProgram("oit/peeling/f2b_layer_blend.frag.glsl", model);
             p.composite = buildFullscreenProgram("oit/peeling/peel_composite.frag.glsl", model);
         }
-        if (counter_) return;
-        counter_ = gl::Buffer::create();
-        glNamedBufferStorage(counter_.id(), sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+        if (samples_) return;
+        countProgram_ = buildSceneProgram("oit/peeling/f2b_count.frag.glsl");
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
@@ -130,14 +124,26 @@ private:
         }
     }
 
-    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur]. The first layer also
-    // counts every fragment in front of the opaque depth (readCounter).
+    // Every transparent fragment in front of the opaque depth (f2b_count.frag.glsl), drawn into
+    // the output framebuffer, which holds that depth, with colour writes off.
+    std::uint64_t countFragments(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 count" : "f2b count");
+        glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
+        setTransparentDepthState(frame);
+        glDisable(GL_BLEND);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        skipper_.draw(frame, countProgram_, stats_);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        ++stats_.passes;
+        const std::uint64_t total = gl::queryResult(samples_);
+        return total;
+    }
+
+    // The peel (f2b) or depth pre-pass (f2b2) of `layer` into depth_[cur].
     void peel(const FrameContext& frame, int layer, int cur) {
         gl::ScopedPass pass(frame.timer, twoPass_ ? "f2b2 depth" : "f2b peel");
-        if (layer == 0) {
-            GLuint zero = 0;
-            glNamedBufferSubData(counter_.id(), 0, sizeof(GLuint), &zero);
-        }
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur].id());
         // Framebuffer clears obey the write masks, which the previous pass left off.
         glDepthMask(GL_TRUE);
@@ -154,21 +160,13 @@ private:
         glDisable(GL_STENCIL_TEST);
         if (twoPass_) glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
-        if (layer == 0)
-            glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, gpu::BIND_COUNTERS, counter_.id());
-        else
-            glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[1 - cur].id());
+        if (layer > 0) glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[1 - cur].id());
         skipper_.draw(frame, layer == 0 ? programs_->peelFirst : programs_->peel, stats_);
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_FALSE);
         ++stats_.passes;
         // No memory barrier: the next passes sample what this one rendered, which GL orders by
         // itself (barriers are for image and buffer stores; on llvmpipe one is a full finish).
-    }
-
-    std::uint64_t readCounter() {
-        glMemoryBarrier(GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-        return gl::readUint(counter_);
     }
 
     // The "under" blend of f2b's layer pass and f2b2's shading pass. Per channel, the pass reads
@@ -236,14 +234,14 @@ private:
     }
 
     struct Programs {
-        SceneProgram peel, peelFirst, shade;  // peelFirst: the first layer's, which counts
+        SceneProgram peel, peelFirst, shade;  // peelFirst: the first layer's, with no previous depth
         gl::Program blend, composite;
     };
     bool twoPass_;
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
-    gl::Buffer counter_;
+    SceneProgram countProgram_;
     gl::Query samples_;
     glm::ivec2 size_{0, 0};
     gl::Texture accum_, layerColor_, depth_[2];
@@ -258,7 +256,7 @@ private:
 namespace strata {
 
 TechniqueEntry f2bEntry() {
-    TechniqueInfo info{"f2b", "peeling", true, false, "2D+1 (D peels + D layer blends + composite)",
+    TechniqueInfo info{"f2b", "peeling", true, false, "2D+2 (count + D peels + D layer blends + composite)",
                        "w*h*24 B at precision=16: 2 depth (4) + layer and accumulation RGBA16F (8 each); "
                        "w*h*40 B at 32 (RGBA32F, 16 each); + two more RGBA targets in a scene with coloured filters; "
                        "Table 1: 3 words",
@@ -268,7 +266,7 @@ TechniqueEntry f2bEntry() {
 }
 
 TechniqueEntry f2b2Entry() {
-    TechniqueInfo info{"f2b2", "peeling", true, false, "2D+1 (D depth pre-passes + D EQUAL shading passes + composite)",
+    TechniqueInfo info{"f2b2", "peeling", true, false, "2D+2 (count + D depth pre-passes + D EQUAL shading passes + composite)",
                        "w*h*24 B at precision=16: 2 depth-stencil (8) + accumulation RGBA16F (8); w*h*32 B at 32 "
                        "(RGBA32F accumulation, 16); + one more RGBA target in a scene with coloured filters",
                        "front-to-back peeling with a depth-only pre-pass and early-z GL_EQUAL shading per layer"};
