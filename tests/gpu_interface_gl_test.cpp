@@ -318,14 +318,15 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/approximate/accumulation_composite.frag.glsl"}, {{"ALPHA_CORRECTED", ""}},
          {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uAccum", tex(BIND_ACCUM)}, {"uTransmittance", tex(BIND_TRANSMITTANCE)}}},
         // peeling
-        // The first layer's program counts; the later layers' writes no memory (and reads the
-        // previous layer's depth).
+        // A counting pass with no bindings (a query counts), then the first layer's program, with
+        // no previous layer, and the later layers' (which reads the previous layer's depth).
+        {{scene, "oit/peeling/f2b_count.frag.glsl"}, {}, {}},
         {{scene, "oit/peeling/f2b_peel.frag.glsl"}, {{"FIRST_LAYER", ""}},
-         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uRemaining", kCounters}}},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}}},
         {{scene, "oit/peeling/f2b_peel.frag.glsl"}, {},
          {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uPreviousDepth", tex(BIND_PEEL_PREVIOUS)}}},
         {{scene, "oit/peeling/f2b_peel.frag.glsl"}, {{"DEPTH_ONLY", ""}, {"FIRST_LAYER", ""}},
-         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uRemaining", kCounters}}},
+         {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}}},
         {{scene, "oit/peeling/f2b_peel.frag.glsl"}, {{"DEPTH_ONLY", ""}},
          {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uPreviousDepth", tex(BIND_PEEL_PREVIOUS)}}},
         {{scene, "oit/peeling/f2b2_shade.frag.glsl"}, {}, {}},

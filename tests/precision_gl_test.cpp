@@ -134,10 +134,10 @@ TEST_CASE("memory follows the precision: RGBA16F 8 B, RGBA32F 16 B, R16F 2 B, R3
     CHECK(bytes("blend-unsorted", {"precision=32"}) == 0);       // blends into the output
     CHECK(bytes("blend-sorted", {"precision=16"}) == px * 8);
     CHECK(bytes("blend-sorted", {"precision=32"}) == 0);
-    CHECK(bytes("f2b", {"precision=16"}) == px * (2 * 4 + 2 * 8) + 4);
-    CHECK(bytes("f2b", {"precision=32"}) == px * (2 * 4 + 2 * 16) + 4);
-    CHECK(bytes("f2b2", {"precision=16"}) == px * (2 * 8 + 8) + 4);
-    CHECK(bytes("f2b2", {"precision=32"}) == px * (2 * 8 + 16) + 4);
+    CHECK(bytes("f2b", {"precision=16"}) == px * (2 * 4 + 2 * 8));
+    CHECK(bytes("f2b", {"precision=32"}) == px * (2 * 4 + 2 * 16));
+    CHECK(bytes("f2b2", {"precision=16"}) == px * (2 * 8 + 8));
+    CHECK(bytes("f2b2", {"precision=32"}) == px * (2 * 8 + 16));
     CHECK(bytes("dual", {"precision=16"}) == px * (2 * 8 + 4 * 8));
     CHECK(bytes("dual", {"precision=32"}) == px * (2 * 8 + 4 * 16));
     CHECK(bytes("bun", {"precision=16"}) == px * (8 + 4 * 16 + 8 * 2 * 8) + 8);

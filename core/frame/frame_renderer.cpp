@@ -1,5 +1,6 @@
 #include "frame/frame_renderer.hpp"
 
+#include "render/batch_order.hpp"
 #include "render/frustum.hpp"
 #include "render/texture_readback.hpp"
 #include "render/zoom.hpp"
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <limits>
 
 namespace strata {
 namespace {
@@ -65,6 +67,16 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
             order->erase(kept, order->end());
         }
     }
+    // Batches nearest first (render/batch_order.hpp), except where submission order is the image.
+    const glm::vec3 eye = camera.position, forward = camera.forward();
+    auto nearest = [&](int o) {
+        const Bounds& b = frame.boundsOf(o);
+        if (b.empty()) return std::numeric_limits<float>::max();
+        return glm::dot(b.center() - eye, forward) - glm::dot(glm::abs(forward), 0.5f * (b.max - b.min));
+    };
+    auto sameRun = [&](int a, int b) { return !frame.standInOf(a) && !frame.standInOf(b) && scene.sameBatch(a, b); };
+    orderRunsNearestFirst(opaqueOrder_, sameRun, nearest);
+    if (!ordered) orderRunsNearestFirst(frame.transparentOrder, sameRun, nearest);
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
