@@ -20,6 +20,9 @@
 #include "oit/draw_transparent.hpp"
 #include "oit/precision.hpp"
 
+#include <map>
+#include <string>
+
 namespace strata::approximate {
 namespace {
 
@@ -43,17 +46,19 @@ public:
     using TechniqueWithSettings::TechniqueWithSettings;
 
     void render(const FrameContext& frame) override {
-        if (!accumulateProgram_.program) {
-            accumulateProgram_ = buildSceneProgram("oit/approximate/wboit_accumulate.frag.glsl");
+        if (!compositeProgram_) {
             compositeProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/approximate/accumulation_composite.frag.glsl"},
                                                 {{"WEIGHTED_AVERAGE", ""}});
             samples_ = gl::createQuery(GL_SAMPLES_PASSED);
         }
+        SceneProgram& accumulate = accumulatePrograms_[settings_.weight];
+        if (!accumulate.program)
+            accumulate = buildSceneProgram("oit/approximate/wboit_accumulate.frag.glsl",
+                                           {{"WEIGHT_EQUATION", std::to_string(settings_.weight)}});
         stats_ = {};
-        GLuint program = accumulateProgram_.id();
+        GLuint program = accumulate.id();
         glProgramUniform1f(program, glGetUniformLocation(program, "uNear"), frame.camera.nearPlane);
         glProgramUniform1f(program, glGetUniformLocation(program, "uFar"), frame.camera.farPlane);
-        glProgramUniform1i(program, glGetUniformLocation(program, "uWeightEquation"), settings_.weight);
         const float weightScale = isHalf(settings_.precision) ? kHalfWeightScale : 1.0f;
         glProgramUniform1f(program, glGetUniformLocation(program, "uWeightScale"), weightScale);
         GLuint composite = compositeProgram_.id();
@@ -63,7 +68,7 @@ public:
             targets_.beginAccumulation(frame, settings_.precision);
             // Every fragment in front of the opaque depth is blended: an occlusion query counts them.
             glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-            stats_.objectDraws = drawTransparent(frame, accumulateProgram_, frame.transparentOrder);
+            stats_.objectDraws = drawTransparent(frame, accumulate, frame.transparentOrder);
             glEndQuery(GL_SAMPLES_PASSED);
             targets_.endAccumulation();
         }
@@ -80,7 +85,7 @@ public:
     }
 
 private:
-    SceneProgram accumulateProgram_;
+    std::map<int, SceneProgram> accumulatePrograms_;  // per weight equation
     gl::Program compositeProgram_;
     gl::Query samples_;
     AccumulationTargets targets_;

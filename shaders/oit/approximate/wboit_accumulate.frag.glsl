@@ -10,7 +10,11 @@ layout(location = 1) out vec4 outRevealage;
 
 uniform float uNear;
 uniform float uFar;
-uniform int uWeightEquation;  // 7, 8, 9 (view depth) or 10 (window depth) of the paper
+// WEIGHT_EQUATION: 7, 8, 9 (view depth) or 10 (window depth) of the paper; a program each, not
+// a uniform: llvmpipe ran the uniform's branches as masked code.
+#ifndef WEIGHT_EQUATION
+#define WEIGHT_EQUATION 7
+#endif
 uniform float uWeightScale = 1.0;  // 1/16 in half float: keeps sums of weights up to 3e3 finite
 
 // Eye distance from reversed-Z window depth: z_w = n (f - d) / (d (f - n))  =>  d = n f / (z_w (f - n) + n).
@@ -23,18 +27,20 @@ float sq(float x) { return x * x; }
 float cube(float x) { return x * x * x; }
 
 float depthWeight(float alpha) {
+#if WEIGHT_EQUATION == 10
+    // The paper's d(z) is conventional window depth (0 near, 1 far): 1 - d = reversed-Z depth.
+    return alpha * max(1e-2, 3e3 * cube(gl_FragCoord.z));
+#else
     float z = viewDepth(gl_FragCoord.z);
-    float w;
-    if (uWeightEquation == 8)
-        w = 10.0 / (1e-5 + cube(z / 10.0) + cube(sq(z / 200.0)));
-    else if (uWeightEquation == 9)
-        w = 0.03 / (1e-5 + sq(sq(z / 200.0)));
-    else if (uWeightEquation == 10)
-        // The paper's d(z) is conventional window depth (0 near, 1 far): 1 - d = reversed-Z depth.
-        return alpha * max(1e-2, 3e3 * cube(gl_FragCoord.z));
-    else
-        w = 10.0 / (1e-5 + sq(z / 5.0) + cube(sq(z / 200.0)));
+#if WEIGHT_EQUATION == 8
+    float w = 10.0 / (1e-5 + cube(z / 10.0) + cube(sq(z / 200.0)));
+#elif WEIGHT_EQUATION == 9
+    float w = 0.03 / (1e-5 + sq(sq(z / 200.0)));
+#else
+    float w = 10.0 / (1e-5 + sq(z / 5.0) + cube(sq(z / 200.0)));
+#endif
     return alpha * clamp(w, 1e-2, 3e3);
+#endif
 }
 
 void main() {
