@@ -235,7 +235,7 @@ std::vector<ProgramCase> programCases() {
     const std::map<std::string, Binding> listResolve = with(lists, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}});
     const std::map<std::string, Binding> volumeResolve =
         with(listResolve, {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
-                           {"VolumeObjects", ssbo(BIND_VOLUME_OBJECTS)},
+                           {"uVolumeMedia", tex(BIND_VOLUME_MEDIA)},
                            {"VolumeStats", ssbo(BIND_VOLUME_STATS)}});
     const std::map<std::string, Binding> arrayResolve = with(tail, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)},
                                                                     {"FragmentEntries", ssbo(BIND_ENTRIES)}});
@@ -503,25 +503,52 @@ void main() {
     points[0] = points[1];
 }
 )");
-    gl::Program volumes = buildCompute(R"(#version 450 core
-#include "oit/volume/volume_bindings.h"
-layout(std430, binding = BIND_VOLUME_OBJECTS) buffer VolumeObjects { VolumeObject volumeObjects[]; };
-layout(local_size_x = 1) in;
-void main() {
-    volumeObjects[0] = volumeObjects[1];
-}
-)");
-    using gpu::VolumeObject;
-    checkLayout<VolumeObject>(volumes.id(), "VolumeObjects",
-                              {FIELD(VolumeObject, tauR), FIELD(VolumeObject, tauG), FIELD(VolumeObject, tauB),
-                               FIELD(VolumeObject, scatterR), FIELD(VolumeObject, scatterG),
-                               FIELD(VolumeObject, scatterB)});
     using gpu::ScreenDoorPoint;
     checkLayout<ScreenDoorPoint>(points.id(), "Points",
                                  {FIELD(ScreenDoorPoint, x), FIELD(ScreenDoorPoint, y), FIELD(ScreenDoorPoint, z),
                                   FIELD(ScreenDoorPoint, normal), FIELD(ScreenDoorPoint, object),
                                   FIELD(ScreenDoorPoint, tintRG), FIELD(ScreenDoorPoint, tintB)});
     gl::takeErrors();
+}
+
+TEST_CASE("the medium table reads as two RGB32F texels an object: tau, then scatter") {
+    test::glContext();
+    // The host uploads gpu::VolumeObject as it is; the resolve reads it through an RGB32F
+    // buffer texture (oit/volume/volume_list.glsl). Distinct values catch a shifted field.
+    const std::vector<gpu::VolumeObject> table = {{0.5f, 1.5f, 2.5f, 0.25f, 0.75f, 1.25f},
+                                                  {3.0f, 4.0f, 5.0f, 6.0f, 7.0f, 8.0f}};
+    gl::Buffer media = gl::Buffer::create();
+    glNamedBufferStorage(media.id(), GLsizeiptr(table.size() * sizeof(gpu::VolumeObject)), table.data(), 0);
+    gl::Texture texture = gl::createTexture(GL_TEXTURE_BUFFER);
+    glTextureBuffer(texture.id(), GL_RGB32F, media.id());
+    gl::Buffer out = gl::Buffer::create();
+    glNamedBufferStorage(out.id(), 12 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    gl::Program read = buildCompute(R"(#version 450 core
+#include "oit/volume/volume_bindings.h"
+layout(binding = BIND_VOLUME_MEDIA) uniform samplerBuffer uVolumeMedia;
+layout(std430, binding = 0) buffer Out { float values[]; };
+layout(local_size_x = 1) in;
+void main() {
+    for (int object = 0; object < 2; ++object)
+        for (int c = 0; c < 3; ++c) {
+            values[6 * object + c] = texelFetch(uVolumeMedia, 2 * object)[c];
+            values[6 * object + 3 + c] = texelFetch(uVolumeMedia, 2 * object + 1)[c];
+        }
+}
+)");
+    glBindTextureUnit(gpu::BIND_VOLUME_MEDIA, texture.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, out.id());
+    glUseProgram(read.id());
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    float values[12] = {};
+    glGetNamedBufferSubData(out.id(), 0, sizeof(values), values);
+    for (std::size_t object = 0; object < 2; ++object) {
+        const gpu::VolumeObject& v = table[object];
+        const float expected[6] = {v.tauR, v.tauG, v.tauB, v.scatterR, v.scatterG, v.scatterB};
+        for (std::size_t k = 0; k < 6; ++k) CHECK(values[6 * object + k] == expected[k]);
+    }
+    CHECK(gl::takeErrors().empty());
 }
 
 TEST_CASE("every binding point the host binds is the one the linked program reports") {

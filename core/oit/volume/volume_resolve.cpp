@@ -21,7 +21,7 @@ bool VolumeResolve::needed(const GpuScene& scene) {
 }
 
 static_assert(int(gpu::VOLUME_MAX_NESTED) == kMaxNestedVolumes, "CPU and GPU walks nest alike");
-static_assert(sizeof(gpu::VolumeObject) == 24, "std430 layout of VolumeObject");
+static_assert(sizeof(gpu::VolumeObject) == 24, "two RGB32F texels per VolumeObject");
 
 void VolumeResolve::prepare(const FrameContext& frame) {
     const GpuScene& scene = frame.scene;
@@ -42,6 +42,8 @@ void VolumeResolve::prepare(const FrameContext& frame) {
     if (table.size() != objectCapacity_) {
         gl::allocateBuffer(objects_, table.size() * sizeof(gpu::VolumeObject), GL_DYNAMIC_DRAW, "volume medium table");
         objectCapacity_ = table.size();
+        media_ = gl::createTexture(GL_TEXTURE_BUFFER);
+        glTextureBuffer(media_.id(), GL_RGB32F, objects_.id());
     }
     glNamedBufferSubData(objects_.id(), 0, GLsizeiptr(table.size() * sizeof(gpu::VolumeObject)), table.data());
     if (!stats_) {
@@ -54,7 +56,7 @@ void VolumeResolve::prepare(const FrameContext& frame) {
 }
 
 void VolumeResolve::bind(const FrameContext& frame, GLuint program) const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_VOLUME_OBJECTS, objects_.id());
+    glBindTextureUnit(gpu::BIND_VOLUME_MEDIA, media_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_VOLUME_STATS, stats_.id());
     glBindTextureUnit(gpu::BIND_OPAQUE_DEPTH, frame.targets.depth());
     const double n = frame.camera.nearPlane, f = frame.camera.farPlane;

@@ -36,6 +36,7 @@ public:
 
 private:
     gl::Buffer objects_, stats_;
+    gl::Texture media_;  // objects_ as a buffer texture (BIND_VOLUME_MEDIA)
     std::size_t objectCapacity_ = 0;
     std::vector<int> eyeInside_;
     gl::Framebuffer colorFramebuffer_;

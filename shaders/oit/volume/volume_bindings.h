@@ -6,7 +6,10 @@
 
 GPU_NAMESPACE_BEGIN
 
-GPU_CONST uint BIND_VOLUME_OBJECTS = 6u;  // SSBO: one VolumeObject per object id
+// Texture unit: the medium table (one VolumeObject per object id) as an RGB32F buffer texture,
+// two texels an object (tau, then scatter). A texel fetch, not a storage-buffer read: llvmpipe
+// loads a storage buffer lane by lane, which cost a quarter of the volumetric resolve.
+GPU_CONST uint BIND_VOLUME_MEDIA = 4u;
 GPU_CONST uint BIND_VOLUME_STATS = 7u;    // SSBO: uint counters the resolve reports through
 
 // How many volumes may overlap at one point of a ray. Deeper nesting is counted (and the

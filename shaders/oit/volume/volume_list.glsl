@@ -10,9 +10,7 @@
 #include "oit/packed_color.glsl"
 #include "oit/volume/volume_bindings.h"
 
-layout(std430, binding = BIND_VOLUME_OBJECTS) readonly buffer VolumeObjects {
-    VolumeObject volumeObjects[];
-};
+layout(binding = BIND_VOLUME_MEDIA) uniform samplerBuffer uVolumeMedia;
 layout(std430, binding = BIND_VOLUME_STATS) buffer VolumeStats {
     uint volumeStats[];
 };
@@ -99,10 +97,12 @@ void advanceTo(float d) {
     gTransmittance *= transmittance;
 }
 
+vec3 mediumTau(uint object) { return texelFetch(uVolumeMedia, int(2u * object)).rgb; }
+vec3 mediumScatter(uint object) { return texelFetch(uVolumeMedia, int(2u * object + 1u)).rgb; }
+
 void addMedium(uint object) {
-    VolumeObject v = volumeObjects[object];
-    gTau += vec3(v.tauR, v.tauG, v.tauB);
-    gScatter += vec3(v.scatterR, v.scatterG, v.scatterB);
+    gTau += mediumTau(object);
+    gScatter += mediumScatter(object);
 }
 
 // Slots 0-3 in `lo` and 4-7 in `hi` as the bits 0-7 of one mask.
@@ -115,7 +115,6 @@ uint slotBits(bvec4 lo, bvec4 hi) {
 // takes the first free slot. Written without branches on the common path (vector selects): in
 // a SIMD resolve every branch that lanes take differently costs both sides.
 void crossVolume(uint object, int step) {
-    VolumeObject v = volumeObjects[object];
     ivec4 lo = ivec4(equal(gSlotObjectLo, uvec4(object))) * ivec4(notEqual(gSlotCountLo, ivec4(0)));
     ivec4 hi = ivec4(equal(gSlotObjectHi, uvec4(object))) * ivec4(notEqual(gSlotCountHi, ivec4(0)));
     ivec4 held = lo * gSlotCountLo + hi * gSlotCountHi;
@@ -134,8 +133,8 @@ void crossVolume(uint object, int step) {
     // +1: the ray is now inside this volume, -1: no longer, 0: no change (counts beyond 0 and 1).
     int change = int(before + step > 0) - int(before > 0);
     gMembers += change;
-    gTau += float(change) * vec3(v.tauR, v.tauG, v.tauB);
-    gScatter += float(change) * vec3(v.scatterR, v.scatterG, v.scatterB);
+    gTau += float(change) * mediumTau(object);
+    gScatter += float(change) * mediumScatter(object);
     // What was just subtracted is never kept: zero when no volume is left, else the remaining
     // members summed again (the rare case of leaving one of overlapping volumes).
     if (gMembers <= 0) {
