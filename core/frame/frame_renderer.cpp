@@ -74,9 +74,31 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         if (b.empty()) return std::numeric_limits<float>::max();
         return glm::dot(b.center() - eye, forward) - glm::dot(glm::abs(forward), 0.5f * (b.max - b.min));
     };
-    auto sameRun = [&](int a, int b) { return !frame.standInOf(a) && !frame.standInOf(b) && scene.sameBatch(a, b); };
+    auto sameRun = [&](int a, int b) {
+        const StandInDraw *sa = frame.standInOf(a), *sb = frame.standInOf(b);
+        if (!sa && !sb) return scene.sameBatch(a, b);
+        return sa && sb && scene.sameStandInBatch(a, *sa, b, *sb);
+    };
+    // Within a batch, the stand-ins that one instanced draw can take next to each other (the
+    // same impostor seen from the same view direction): geometry first, then stand-ins by draw.
+    auto groupStandIns = [&](std::vector<int>& order) {
+        if (!frame.standIns) return;
+        const auto& objects = scene.objects();
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            const Object &x = objects[std::size_t(a)], &y = objects[std::size_t(b)];
+            if (x.mesh != y.mesh) return x.mesh < y.mesh;
+            if (x.material != y.material) return x.material < y.material;
+            const StandInDraw *sa = frame.standInOf(a), *sb = frame.standInOf(b);
+            if (!sa || !sb) return !sa && sb;
+            return standInDrawBefore(*sa, *sb);
+        });
+    };
+    groupStandIns(opaqueOrder_);
     orderRunsNearestFirst(opaqueOrder_, sameRun, nearest);
-    if (!ordered) orderRunsNearestFirst(frame.transparentOrder, sameRun, nearest);
+    if (!ordered) {
+        groupStandIns(frame.transparentOrder);
+        orderRunsNearestFirst(frame.transparentOrder, sameRun, nearest);
+    }
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);

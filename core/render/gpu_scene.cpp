@@ -442,7 +442,7 @@ bool GpuScene::sameBatch(int a, int b) const {
 
 void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
     if (standIn) {
-        drawStandIn(p, objectIndex, *standIn);
+        drawStandIns(p, {objectIndex}, 0, 1, *standIn);
         return;
     }
     const GpuMesh& mesh = meshes_[objects_[std::size_t(objectIndex)].mesh];
@@ -457,21 +457,41 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
     if (&drawing != &p) glUseProgram(p.id());  // the pass goes on with its own program bound
 }
 
+std::size_t GpuScene::recordsOf(const std::vector<int>& order, std::size_t begin, std::size_t end) const {
+    bool consecutive = true;
+    for (std::size_t k = begin + 1; k < end && consecutive; ++k) consecutive = order[k] == order[k - 1] + 1;
+    if (consecutive) return std::size_t(order[begin]);
+    // glNamedBufferSubData leaves draws already issued reading what they read, so a wrapped ring
+    // is still right (the driver may stall).
+    const std::size_t n = end - begin;
+    runScratch_.clear();
+    for (std::size_t k = begin; k < end; ++k) runScratch_.push_back(records_[std::size_t(order[k])]);
+    if (streamHead_ + n > streamRing_) streamHead_ = 0;
+    const std::size_t at = objects_.size() + streamHead_;
+    glNamedBufferSubData(recordBuffer_.id(), GLintptr(at * sizeof(gpu::ObjectRecord)),
+                         GLsizeiptr(n * sizeof(gpu::ObjectRecord)), runScratch_.data());
+    streamHead_ += n;
+    return at;
+}
+
 std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>& order,
                                   const StandIns* standIns) const {
     const std::uint64_t before = drawCalls_;
     auto standInOf = [&](int o) { return standIns ? (*standIns)[std::size_t(o)] : nullptr; };
+    // STRATA_DEBUG_NO_BATCH=1: a draw per object, for telling a batching fault from another.
+    static const bool noBatch = gl::debugSwitch("STRATA_DEBUG_NO_BATCH");
     std::size_t i = 0;
     while (i < order.size()) {
         const int first = order[i];
+        std::size_t end = i + 1;
         if (const StandInDraw* s = standInOf(first)) {
-            draw(p, first, s);
-            ++i;
+            while (!noBatch && end < order.size() && standInOf(order[end]) &&
+                   sameStandInBatch(first, *s, order[end], *standInOf(order[end])))
+                ++end;
+            drawStandIns(p, order, i, end, *s);
+            i = end;
             continue;
         }
-        std::size_t end = i + 1;
-        // STRATA_DEBUG_NO_BATCH=1: a draw per object, for telling a batching fault from another.
-        static const bool noBatch = gl::debugSwitch("STRATA_DEBUG_NO_BATCH");
         while (!noBatch && end < order.size() && !standInOf(order[end]) && sameBatch(first, order[end])) ++end;
         const std::size_t n = end - i;
         if (n == 1) {
@@ -481,21 +501,7 @@ std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>&
         }
         const GpuMesh& mesh = meshes_[objects_[std::size_t(first)].mesh];
         if (mesh.indexCount > 0) {
-            // Objects with consecutive indices read their own records in place; any other run's
-            // records go into the ring (glNamedBufferSubData leaves draws already issued reading
-            // what they read, so a wrapped ring is still right; the driver may stall).
-            bool consecutive = true;
-            for (std::size_t k = i + 1; k < end && consecutive; ++k) consecutive = order[k] == order[k - 1] + 1;
-            std::size_t at = std::size_t(first);
-            if (!consecutive) {
-                runScratch_.clear();
-                for (std::size_t k = i; k < end; ++k) runScratch_.push_back(records_[std::size_t(order[k])]);
-                if (streamHead_ + n > streamRing_) streamHead_ = 0;
-                at = objects_.size() + streamHead_;
-                glNamedBufferSubData(recordBuffer_.id(), GLintptr(at * sizeof(gpu::ObjectRecord)),
-                                     GLsizeiptr(n * sizeof(gpu::ObjectRecord)), runScratch_.data());
-                streamHead_ += n;
-            }
+            const std::size_t at = recordsOf(order, i, end);
             const SceneProgram& drawing = prepareVariant(p, first);
             glBindVertexArray(mesh.vertexArray.id());
             glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr, GLsizei(n),
@@ -509,14 +515,45 @@ std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>&
     return std::size_t(drawCalls_ - before);
 }
 
-void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandInDraw& standIn) const {
-    if (standIn.first.empty()) return;
+bool GpuScene::sameStandInBatch(int a, const StandInDraw& sa, int b, const StandInDraw& sb) const {
+    const Object &x = objects_[std::size_t(a)], &y = objects_[std::size_t(b)];
+    return x.material == y.material && features_[std::size_t(a)] == features_[std::size_t(b)] &&
+           sameStandInDraw(sa, sb);
+}
+
+void GpuScene::drawStandIns(const SceneProgram& p, const std::vector<int>& order, std::size_t begin,
+                             std::size_t end, const StandInDraw& standIn) const {
+    if (standIn.first.empty()) return;  // a LOD unit's part whose representative draws the unit
+    const int objectIndex = order[begin];
+    const std::size_t n = end - begin;
     // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
     const SceneProgram& variant =
         p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & kSceneStandInKeeps));
     setMaterialUniforms(variant, objectIndex);
-    // The stand-in's vertex array has no record attributes: it draws with the generic values.
-    setCurrentObject(records_[std::size_t(objectIndex)]);
+    // The quads read the records as instanced attributes, like a mesh (attached once per vertex
+    // array: a new one, or one whose name was reused, reads no buffer yet).
+    if (!readsObjectRecords(standIn.vertexArray, recordBuffer_.id()))
+        attachObjectRecords(standIn.vertexArray, recordBuffer_.id());
+    const std::size_t at = recordsOf(order, begin, end);
+    // One command per slice range, each with the batch's instances.
+    const std::size_t ranges = standIn.first.size();
+    indirectScratch_.clear();
+    for (std::size_t r = 0; r < ranges; ++r)
+        indirectScratch_.insert(indirectScratch_.end(),
+                                {GLuint(standIn.count[r]), GLuint(n), GLuint(standIn.first[r]), GLuint(at)});
+    if (indirectHead_ + ranges > indirectCapacity_) {
+        if (ranges > indirectCapacity_ / 2) {
+            indirectCapacity_ = std::max<std::size_t>(1024, 4 * ranges);
+            indirect_ = gl::Buffer::create();
+            glNamedBufferStorage(indirect_.id(), GLsizeiptr(indirectCapacity_ * 4 * sizeof(GLuint)), nullptr,
+                                 GL_DYNAMIC_STORAGE_BIT);
+        }
+        indirectHead_ = 0;
+    }
+    const std::size_t offset = indirectHead_ * 4 * sizeof(GLuint);
+    glNamedBufferSubData(indirect_.id(), GLintptr(offset), GLsizeiptr(indirectScratch_.size() * sizeof(GLuint)),
+                         indirectScratch_.data());
+    indirectHead_ += ranges;
     glProgramUniform1i(variant.id(), variant.impostorSlices, standIn.slices);
     glProgramUniform1f(variant.id(), variant.impostorOverlap, standIn.overlap);
     glProgramUniform1i(variant.id(), variant.impostorAlbedo, standIn.albedo != 0);
@@ -524,8 +561,11 @@ void GpuScene::drawStandIn(const SceneProgram& p, int objectIndex, const StandIn
     if (standIn.albedo) glBindTextureUnit(gpu::BIND_IMPOSTOR_ALBEDO, standIn.albedo);
     glUseProgram(variant.id());
     glBindVertexArray(standIn.vertexArray);
-    glMultiDrawArrays(GL_TRIANGLES, standIn.first.data(), standIn.count.data(), GLsizei(standIn.first.size()));
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect_.id());
+    glMultiDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(offset), GLsizei(ranges), 0);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     ++drawCalls_;
+    finishIfDebugging();
     glUseProgram(p.id());  // the pass goes on with its own program bound
 }
 

@@ -97,13 +97,18 @@ public:
     void draw(const SceneProgram& program, int objectIndex, const StandInDraw* standIn = nullptr) const;
     // Draws `order` as draw() draws each, in that order, with one instanced draw for each run of
     // consecutive objects that share a mesh and a material: a field of one model is a draw per
-    // part. A run of consecutive object indices reads the objects' records in place; another
-    // run's records are copied into a ring first. `standIns` as FrameContext's (null:
-    // none). Returns the GL draws issued.
+    // part. Consecutive stand-ins that show the same slices of one impostor with one material
+    // (sameStandInBatch) are one instanced draw too: a forest of one tree's impostor is a draw
+    // per view direction in use. A run of consecutive object indices reads the objects' records
+    // in place; another run's records are copied into a ring first. `standIns` as
+    // FrameContext's (null: none). Returns the GL draws issued.
     std::size_t drawObjects(const SceneProgram& program, const std::vector<int>& order,
                             const StandIns* standIns = nullptr) const;
     // Whether two objects can share an instanced draw (drawObjects' runs).
     bool sameBatch(int a, int b) const;
+    // Whether stand-ins `sa` of object a and `sb` of object b can: the same quads, atlas and
+    // slice ranges (render/stand_in.hpp's sameStandInDraw), drawn with the same material.
+    bool sameStandInBatch(int a, const StandInDraw& sa, int b, const StandInDraw& sb) const;
     // GL draw calls issued by draw() and drawObjects() since construction (the bench's and
     // panel's draw count is the difference over a frame).
     std::uint64_t drawCalls() const { return drawCalls_; }
@@ -140,7 +145,13 @@ private:
     void setMaterialUniforms(const SceneProgram& program, int objectIndex) const;
     // glUseProgram of the variant for the object's features, its textures bound; returns it.
     const SceneProgram& prepareVariant(const SceneProgram& program, int objectIndex) const;
-    void drawStandIn(const SceneProgram& program, int objectIndex, const StandInDraw& standIn) const;
+    // Stand-ins of order[begin, end), all sameStandInBatch: one glMultiDrawArraysIndirect over
+    // their slice ranges with an instance each.
+    void drawStandIns(const SceneProgram& program, const std::vector<int>& order, std::size_t begin,
+                      std::size_t end, const StandInDraw& standIn) const;
+    // The base instance of order[begin, end)'s records: the first object's own when the indices
+    // are consecutive, else a ring slot they are copied into.
+    std::size_t recordsOf(const std::vector<int>& order, std::size_t begin, std::size_t end) const;
 
     Scene scene_;
     std::vector<Object> objects_;
@@ -174,6 +185,10 @@ private:
     std::size_t streamRing_ = 0;            // entries in the ring
     mutable std::size_t streamHead_ = 0;    // next free ring entry
     mutable std::uint64_t drawCalls_ = 0;
+    // Stand-in batches' indirect commands (DrawArraysIndirectCommand), a ring like the records'.
+    mutable gl::Buffer indirect_;
+    mutable std::size_t indirectHead_ = 0, indirectCapacity_ = 0;
+    mutable std::vector<GLuint> indirectScratch_;
     Bounds bounds_;
     std::size_t triangles_ = 0;
     std::size_t meshTriangles_ = 0, meshBytes_ = 0;

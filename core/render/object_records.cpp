@@ -44,6 +44,13 @@ void attachObjectRecords(GLuint vao, GLuint records) {
     glVertexArrayBindingDivisor(vao, kRecordBinding, 1);
 }
 
+bool readsObjectRecords(GLuint vao, GLuint records) {
+    GLint buffer = 0, enabled = 0;
+    glGetVertexArrayIndexediv(vao, kRecordBinding, GL_VERTEX_BINDING_BUFFER, &buffer);
+    glGetVertexArrayIndexediv(vao, gpu::ATTRIB_OBJECT_MODEL, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &enabled);
+    return enabled && GLuint(buffer) == records;
+}
+
 void setCurrentObject(const gpu::ObjectRecord& r) {
     GLuint entry = 0;
     std::memcpy(&entry, &r.volumeEntry, sizeof entry);

@@ -19,6 +19,10 @@ gpu::ObjectRecord makeObjectRecord(const glm::mat4& world, unsigned objectId, in
 // buffer of gpu::ObjectRecord): instance i of a draw with base instance b reads record b + i.
 void attachObjectRecords(GLuint vertexArray, GLuint records);
 
+// Whether `vertexArray` reads its records from `records` (attachObjectRecords was called on it
+// with that buffer); false for a new vertex array, or one whose name was reused.
+bool readsObjectRecords(GLuint vertexArray, GLuint records);
+
 // Sets the generic values of the record attributes: what a draw from a vertex array without them
 // takes for every vertex.
 void setCurrentObject(const gpu::ObjectRecord& record);

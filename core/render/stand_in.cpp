@@ -1,5 +1,7 @@
 #include "render/stand_in.hpp"
 
+#include <tuple>
+
 namespace strata {
 
 gl::VertexArray makeStandInVertexArray(GLuint buffer) {
@@ -14,5 +16,17 @@ gl::VertexArray makeStandInVertexArray(GLuint buffer) {
     glVertexArrayAttribBinding(vao, 2, 0);
     return array;
 }
+
+namespace {
+
+auto drawKey(const StandInDraw& d) {
+    return std::tie(d.vertexArray, d.atlas, d.albedo, d.slices, d.overlap, d.first, d.count);
+}
+
+}  // namespace
+
+bool sameStandInDraw(const StandInDraw& a, const StandInDraw& b) { return drawKey(a) == drawKey(b); }
+
+bool standInDrawBefore(const StandInDraw& a, const StandInDraw& b) { return drawKey(a) < drawKey(b); }
 
 }  // namespace strata

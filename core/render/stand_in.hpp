@@ -36,6 +36,14 @@ struct StandInDraw {
     Bounds worldBounds;
 };
 
+// Whether two stand-ins draw the same quads from the same atlas with the same slice settings and
+// ranges: objects whose stand-ins are the same then differ only in their records, and one
+// instanced draw takes them all (GpuScene::drawObjects). The world bounds do not matter.
+bool sameStandInDraw(const StandInDraw& a, const StandInDraw& b);
+// A strict weak order under which sameStandInDraw's stand-ins are equivalent: sorting by it puts
+// the stand-ins one instanced draw can take next to each other.
+bool standInDrawBefore(const StandInDraw& a, const StandInDraw& b);
+
 // Per object (indexed like GpuScene::objects()): what draws in its place, or null for its own
 // triangles. Held by the caller for the frame.
 using StandIns = std::vector<const StandInDraw*>;
