@@ -2,8 +2,9 @@
 // The per-object values every scene program takes (shaders/common/object_records.h): transform,
 // id and volume values, packed from a scene once. A scene's vertex arrays read them as instanced
 // attributes from a buffer of records, so one instanced draw draws many objects
-// (render/gpu_scene.hpp's drawObjects) with no uniform call per object; a vertex array without
-// them (a stand-in's, a mesh uploaded alone) takes the current generic values instead.
+// (render/gpu_scene.hpp's drawObjects) with no uniform call per object. A stand-in's quads get
+// them on their first draw (readsObjectRecords); a vertex array without them (a mesh uploaded
+// alone, the LOD calibration's) takes the current generic values instead.
 #include "common/object_records.h"
 
 #include <epoxy/gl.h>
