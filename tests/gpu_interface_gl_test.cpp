@@ -167,7 +167,8 @@ bool isSampler(GLint type) {
     switch (type) {
     case GL_SAMPLER_2D: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
     case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_2D_MULTISAMPLE: case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
-    case GL_SAMPLER_BUFFER: case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_BUFFER: case GL_INT_SAMPLER_BUFFER: case GL_UNSIGNED_INT_SAMPLER_BUFFER:
+    case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_2D_ARRAY:
     case GL_UNSIGNED_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
         return true;
     default: return false;
@@ -237,6 +238,13 @@ std::vector<ProgramCase> programCases() {
         with(listResolve, {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
                            {"uVolumeMedia", tex(BIND_VOLUME_MEDIA)},
                            {"VolumeStats", ssbo(BIND_VOLUME_STATS)}});
+    const std::map<std::string, Binding> texelResolve = {{"uHeads", image(BIND_HEADS)},
+                                                         {"uNodeTexels", tex(BIND_NODE_TEXELS)},
+                                                         {"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}};
+    const std::map<std::string, Binding> texelVolumeResolve =
+        with(texelResolve, {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)},
+                            {"uVolumeMedia", tex(BIND_VOLUME_MEDIA)},
+                            {"VolumeStats", ssbo(BIND_VOLUME_STATS)}});
     const std::map<std::string, Binding> arrayResolve = with(tail, {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)},
                                                                     {"FragmentEntries", ssbo(BIND_ENTRIES)}});
     const std::map<std::string, Binding> bucket = {{"uRange", tex(BIND_PEEL_PREVIOUS)},
@@ -308,6 +316,10 @@ std::vector<ProgramCase> programCases() {
         {{scene, "oit/abuffer_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {}, listResolve},
         {{"oit/abuffer_resolve.comp.glsl"}, {}, with(listResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
+        // abuffer's own resolves read the pool through its buffer texture (oit/node_fetch.glsl).
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"NODE_TEXELS", ""}}, texelResolve},
+        {{"oit/abuffer_resolve.comp.glsl"}, {{"NODE_TEXELS", ""}},
+         with(texelResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
         // approximate
         {{scene, "oit/approximate/floor.frag.glsl"}, {}, {}},
         {{scene, "oit/approximate/wboit_accumulate.frag.glsl"}, {}, {}},
@@ -413,6 +425,7 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"VOLUME", ""}}, volumeResolve},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"VOLUME", ""}}, with(volumeResolve, tail)},
         {{"oit/abuffer_resolve.comp.glsl"}, {{"VOLUME", ""}}, with(volumeResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"NODE_TEXELS", ""}, {"VOLUME", ""}}, texelVolumeResolve},
         {{"oit/buffers/prefix_add.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
         // coplanarity-aware peeling with layer storage (f2b-ll, f2b-fab, f2b-kb, dual-ll, dual-fab)
         // and bun-ll; the capture and resolve programs per storage form (layer_storage.glsl)

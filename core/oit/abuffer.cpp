@@ -54,9 +54,12 @@ public:
         if (!programs()->store.program) {
             const gl::Defines defines = withColorModel(walk_ ? gl::Defines{{"VOLUME", ""}} : gl::Defines{}, model);
             programs()->store = buildSceneProgram("oit/abuffer_store.frag.glsl", defines);
+            // The resolves read the nodes through the pool's buffer texture (oit/node_fetch.glsl).
+            gl::Defines resolveDefines = defines;
+            resolveDefines["NODE_TEXELS"] = "";
             programs()->resolve =
-                gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}, defines);
-            programs()->computeResolve = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, defines);
+                gl::buildProgram({"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"}, resolveDefines);
+            programs()->computeResolve = gl::buildProgram({"oit/abuffer_resolve.comp.glsl"}, resolveDefines);
         }
         stats_ = {};
         if (walk_) volume_->prepare(frame);

@@ -45,7 +45,11 @@ FragmentLists::Run FragmentLists::render(const FrameContext& frame, const SceneP
         headsSize_ = frame.size;
         allocatedHeadLayers_ = headLayers_;
     }
-    const std::uint64_t maxNodes = gl::storageBlockElements(kNodeBytes, maxBlockMiB);
+    // The pool also fits the buffer-texture view the resolves read it through (two texels a node).
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    const std::uint64_t maxNodes = std::max<std::uint64_t>(
+        std::min<std::uint64_t>(gl::storageBlockElements(kNodeBytes, maxBlockMiB), std::uint64_t(std::max(maxTexels, 2)) / 2), 1);
     // First frame: the setting, or two fragments per pixel; later frames keep what the previous
     // frame needed, so the pool follows the fragments present.
     if (capacity_ == 0) capacity_ = initialNodes > 0 ? initialNodes : std::uint64_t(frame.size.x) * frame.size.y * 2;
@@ -102,12 +106,16 @@ void FragmentLists::ensurePool() {
     if (poolCapacity_ == capacity_) return;
     gl::allocateBuffer(nodes_, capacity_ * kNodeBytes, GL_DYNAMIC_COPY, (label_ + " node pool").c_str());
     poolCapacity_ = capacity_;
+    // The pool as RGB32UI texels, two a node (oit/node_fetch.glsl): re-made with the pool.
+    nodeTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
+    glTextureBufferRange(nodeTexels_.id(), GL_RGB32UI, nodes_.id(), 0, GLsizeiptr(capacity_ * kNodeBytes));
 }
 
 void FragmentLists::bind() const {
     glBindImageTexture(gpu::BIND_HEADS, heads_.id(), 0, allocatedHeadLayers_ > 1 ? GL_TRUE : GL_FALSE, 0,
                        GL_READ_WRITE, GL_R32UI);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
+    glBindTextureUnit(gpu::BIND_NODE_TEXELS, nodeTexels_.id());
 }
 
 std::uint64_t FragmentLists::bytes() const {

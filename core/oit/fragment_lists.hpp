@@ -55,6 +55,7 @@ private:
 
     std::string label_;
     gl::Buffer counter_, nodes_;
+    gl::Texture nodeTexels_;  // nodes_ as a buffer texture (gpu::BIND_NODE_TEXELS)
     gl::Texture heads_;
     glm::ivec2 headsSize_{0, 0};
     int headLayers_ = 1, allocatedHeadLayers_ = 0;

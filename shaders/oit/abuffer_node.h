@@ -7,6 +7,11 @@
 
 GPU_NAMESPACE_BEGIN
 
+// Texture unit: the same pool as an RGB32UI buffer texture, two texels a node (next, depth,
+// objectId | primitiveId, colorRG, colorBA), for the resolves built with NODE_TEXELS
+// (oit/node_fetch.glsl).
+GPU_CONST uint BIND_NODE_TEXELS = 5u;
+
 struct FragmentNode {
     uint next;        // index + 1 of the next node; 0 ends the list
     float depth;      // window depth, reversed-Z: larger is nearer

@@ -7,6 +7,7 @@
 // keeps a transmittance per channel. With STRATA_RGB_TRANSMITTANCE (a scene with coloured
 // filters) a glass surface filters that transmittance per channel (oit/packed_color.glsl).
 #include "oit/abuffer_storage.glsl"
+#include "oit/node_fetch.glsl"
 #include "oit/packed_color.glsl"
 #include "oit/volume/volume_bindings.h"
 
@@ -28,13 +29,13 @@ uniform uint uEyeInsideObject[VOLUME_MAX_NESTED];
 
 uint gFirstNode;  // the pixel's list head as a node index, 0xFFFFFFFF for an empty list
 
-float fragmentDepth(uint i) { return nodes[i].depth; }
-uint fragmentObject(uint i) { return nodes[i].objectId; }
-uint fragmentPrimitive(uint i) { return nodes[i].primitiveId & VOLUME_PRIMITIVE_MASK; }
+float fragmentDepth(uint i) { return nodeDepth(i); }
+uint fragmentObject(uint i) { return nodeObject(i); }
+uint fragmentPrimitive(uint i) { return nodePrimitive(i) & VOLUME_PRIMITIVE_MASK; }
 void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance);  // the walk's step, below
 
 // Links hold index + 1 with 0 ending the list, so "link - 1" ends at 0xFFFFFFFF.
-#define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodes[i].next - 1u)
+#define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodeNext(i) - 1u)
 #include "oit/ordered_composite.glsl"
 
 // The walk: the volumes the ray is in, as VOLUME_MAX_NESTED = 8 slots held in two pairs of
@@ -151,17 +152,18 @@ void crossVolume(uint object, int step) {
 }
 
 void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
-    advanceTo(nodes[i].depth);
-    uint p = nodes[i].primitiveId;
+    advanceTo(nodeDepth(i));
+    uint p = nodePrimitive(i);
     if ((p & VOLUME_FLAG_MEDIUM) != 0u) {
-        crossVolume(nodes[i].objectId, (p & VOLUME_FLAG_ENTRY) != 0u ? 1 : -1);
+        crossVolume(nodeObject(i), (p & VOLUME_FLAG_ENTRY) != 0u ? 1 : -1);
         return;
     }
+    const uvec2 packedColor = nodeColor(i);
 #ifdef STRATA_RGB_TRANSMITTANCE
-    compositePacked(nodes[i].colorRG, nodes[i].colorBA, gRadiance, gTransmittance);
+    compositePacked(packedColor.x, packedColor.y, gRadiance, gTransmittance);
 #else
-    vec2 rg = unpackHalf2x16(nodes[i].colorRG);
-    vec2 ba = unpackHalf2x16(nodes[i].colorBA);
+    vec2 rg = unpackHalf2x16(packedColor.x);
+    vec2 ba = unpackHalf2x16(packedColor.y);
     gRadiance += gTransmittance * ba.y * vec3(rg, ba.x);
     gTransmittance *= 1.0 - ba.y;
 #endif
