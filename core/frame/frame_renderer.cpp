@@ -81,17 +81,25 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     };
     // Within a batch, the stand-ins that one instanced draw can take next to each other (the
     // same impostor seen from the same view direction): geometry first, then stand-ins by draw.
+    // The orders come grouped by mesh and material, so only the groups holding stand-ins sort.
     auto groupStandIns = [&](std::vector<int>& order) {
         if (!frame.standIns) return;
         const auto& objects = scene.objects();
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        auto sameGroup = [&](int a, int b) {
             const Object &x = objects[std::size_t(a)], &y = objects[std::size_t(b)];
-            if (x.mesh != y.mesh) return x.mesh < y.mesh;
-            if (x.material != y.material) return x.material < y.material;
+            return x.mesh == y.mesh && x.material == y.material;
+        };
+        auto byDraw = [&](int a, int b) {
             const StandInDraw *sa = frame.standInOf(a), *sb = frame.standInOf(b);
             if (!sa || !sb) return !sa && sb;
             return standInDrawBefore(*sa, *sb);
-        });
+        };
+        for (auto begin = order.begin(); begin != order.end();) {
+            auto end = std::find_if_not(begin + 1, order.end(), [&](int o) { return sameGroup(*begin, o); });
+            if (std::count_if(begin, end, [&](int o) { return frame.standInOf(o) != nullptr; }) > 1)
+                std::stable_sort(begin, end, byDraw);
+            begin = end;
+        }
     };
     groupStandIns(opaqueOrder_);
     orderRunsNearestFirst(opaqueOrder_, sameRun, nearest);
