@@ -442,7 +442,7 @@ bool GpuScene::sameBatch(int a, int b) const {
 
 void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* standIn) const {
     if (standIn) {
-        drawStandIns(p, {objectIndex}, 0, 1, *standIn);
+        drawStandIns(p, std::span<const int>(&objectIndex, 1), *standIn);
         return;
     }
     const GpuMesh& mesh = meshes_[objects_[std::size_t(objectIndex)].mesh];
@@ -457,15 +457,15 @@ void GpuScene::draw(const SceneProgram& p, int objectIndex, const StandInDraw* s
     if (&drawing != &p) glUseProgram(p.id());  // the pass goes on with its own program bound
 }
 
-std::size_t GpuScene::recordsOf(const std::vector<int>& order, std::size_t begin, std::size_t end) const {
+std::size_t GpuScene::recordsOf(std::span<const int> objects) const {
     bool consecutive = true;
-    for (std::size_t k = begin + 1; k < end && consecutive; ++k) consecutive = order[k] == order[k - 1] + 1;
-    if (consecutive) return std::size_t(order[begin]);
+    for (std::size_t k = 1; k < objects.size() && consecutive; ++k) consecutive = objects[k] == objects[k - 1] + 1;
+    if (consecutive) return std::size_t(objects[0]);
     // glNamedBufferSubData leaves draws already issued reading what they read, so a wrapped ring
     // is still right (the driver may stall).
-    const std::size_t n = end - begin;
+    const std::size_t n = objects.size();
     runScratch_.clear();
-    for (std::size_t k = begin; k < end; ++k) runScratch_.push_back(records_[std::size_t(order[k])]);
+    for (int o : objects) runScratch_.push_back(records_[std::size_t(o)]);
     if (streamHead_ + n > streamRing_) streamHead_ = 0;
     const std::size_t at = objects_.size() + streamHead_;
     glNamedBufferSubData(recordBuffer_.id(), GLintptr(at * sizeof(gpu::ObjectRecord)),
@@ -488,7 +488,7 @@ std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>&
             while (!noBatch && end < order.size() && standInOf(order[end]) &&
                    sameStandInBatch(first, *s, order[end], *standInOf(order[end])))
                 ++end;
-            drawStandIns(p, order, i, end, *s);
+            drawStandIns(p, std::span<const int>(order).subspan(i, end - i), *s);
             i = end;
             continue;
         }
@@ -501,7 +501,7 @@ std::size_t GpuScene::drawObjects(const SceneProgram& p, const std::vector<int>&
         }
         const GpuMesh& mesh = meshes_[objects_[std::size_t(first)].mesh];
         if (mesh.indexCount > 0) {
-            const std::size_t at = recordsOf(order, i, end);
+            const std::size_t at = recordsOf(std::span<const int>(order).subspan(i, n));
             const SceneProgram& drawing = prepareVariant(p, first);
             glBindVertexArray(mesh.vertexArray.id());
             glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr, GLsizei(n),
@@ -521,11 +521,10 @@ bool GpuScene::sameStandInBatch(int a, const StandInDraw& sa, int b, const Stand
            sameStandInDraw(sa, sb);
 }
 
-void GpuScene::drawStandIns(const SceneProgram& p, const std::vector<int>& order, std::size_t begin,
-                             std::size_t end, const StandInDraw& standIn) const {
+void GpuScene::drawStandIns(const SceneProgram& p, std::span<const int> objects, const StandInDraw& standIn) const {
     if (standIn.first.empty()) return;  // a LOD unit's part whose representative draws the unit
-    const int objectIndex = order[begin];
-    const std::size_t n = end - begin;
+    const int objectIndex = objects[0];
+    const std::size_t n = objects.size();
     // The pass's program, built with the impostor alpha test, its uniforms as the pass set them.
     const SceneProgram& variant =
         p.variant(kSceneStandIn | (features_[std::size_t(objectIndex)] & kSceneStandInKeeps));
@@ -534,7 +533,7 @@ void GpuScene::drawStandIns(const SceneProgram& p, const std::vector<int>& order
     // array: a new one, or one whose name was reused, reads no buffer yet).
     if (!readsObjectRecords(standIn.vertexArray, recordBuffer_.id()))
         attachObjectRecords(standIn.vertexArray, recordBuffer_.id());
-    const std::size_t at = recordsOf(order, begin, end);
+    const std::size_t at = recordsOf(objects);
     // One command per slice range, each with the batch's instances.
     const std::size_t ranges = standIn.first.size();
     indirectScratch_.clear();

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace strata {
@@ -145,13 +146,12 @@ private:
     void setMaterialUniforms(const SceneProgram& program, int objectIndex) const;
     // glUseProgram of the variant for the object's features, its textures bound; returns it.
     const SceneProgram& prepareVariant(const SceneProgram& program, int objectIndex) const;
-    // Stand-ins of order[begin, end), all sameStandInBatch: one glMultiDrawArraysIndirect over
+    // The stand-ins of `objects`, all sameStandInBatch: one glMultiDrawArraysIndirect over
     // their slice ranges with an instance each.
-    void drawStandIns(const SceneProgram& program, const std::vector<int>& order, std::size_t begin,
-                      std::size_t end, const StandInDraw& standIn) const;
-    // The base instance of order[begin, end)'s records: the first object's own when the indices
+    void drawStandIns(const SceneProgram& program, std::span<const int> objects, const StandInDraw& standIn) const;
+    // The base instance of the records of `objects`: the first object's own when the indices
     // are consecutive, else a ring slot they are copied into.
-    std::size_t recordsOf(const std::vector<int>& order, std::size_t begin, std::size_t end) const;
+    std::size_t recordsOf(std::span<const int> objects) const;
 
     Scene scene_;
     std::vector<Object> objects_;
