@@ -12,21 +12,33 @@
 namespace strata::lod {
 namespace {
 
-// Per view, the share of the full slice squares its rectangles cover, over all peels (so up to
-// `peels`): what the fill costs. Fixed once baked, so worked out once per mesh.
-std::vector<double> drawnFractions(const LayeredImpostor& impostor) {
+// Per view, what drawing it costs: the share of the full slice squares its rectangles cover,
+// over all peels (so up to `peels`), and the quads drawn (its non-empty slices, and with hole
+// filling the hole-closing slices of two neighbours, each neighbour's the mean over the view's
+// adjacent pairs). Fixed once baked, so worked out once per mesh.
+std::vector<ViewDrawn> viewsDrawn(const LayeredImpostor& impostor, bool fillsHoles) {
     const ImpostorSettings& s = impostor.settings();
-    std::vector<double> fractions(std::size_t(s.views), 0.0);
+    std::vector<ViewDrawn> views(std::size_t(s.views));
+    std::vector<double> holeQuads(std::size_t(s.views), 0.0), pairs(std::size_t(s.views), 0.0);
+    if (fillsHoles)
+        for (const auto& [v, w] : impostor.adjacency()) {
+            holeQuads[std::size_t(v)] += double(impostor.holeSlices(v, w).size());
+            pairs[std::size_t(v)] += 1.0;
+        }
     for (int view = 0; view < s.views; ++view) {
-        double texels = 0.0;
+        double texels = 0.0, quads = 0.0;
         for (int peel = 0; peel < s.peels; ++peel)
             for (int slice = 0; slice < s.slices; ++slice) {
                 const SliceRect r = impostor.rectangle(view, peel, slice);
                 if (!r.empty()) texels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
+                quads += double(impostor.sliceRange(view, peel, slice).second / 6);
             }
-        fractions[std::size_t(view)] = texels / (double(s.resolution) * s.resolution * s.slices);
+        ViewDrawn& d = views[std::size_t(view)];
+        d.fraction = texels / (double(s.resolution) * s.resolution * s.slices);
+        const std::size_t v = std::size_t(view);
+        d.quads = quads + (pairs[v] > 0.0 ? 2.0 * holeQuads[v] / pairs[v] : 0.0);
     }
-    return fractions;
+    return views;
 }
 
 }  // namespace
@@ -41,6 +53,7 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
     // How many objects share each (mesh, material): the batches GpuScene draws instanced.
     std::map<std::pair<int, int>, int> batch;
     for (const Object& o : scene_.objects()) ++batch[{o.mesh, o.material}];
+    std::map<int, int> unitsOfImpostor;
     for (std::size_t u = 0; u < units.units.size(); ++u) {
         const LodUnit& unit = units.units[u];
         LodObjectInput& in = inputs_[u];
@@ -54,11 +67,19 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
             in.geometryDraws += 1.0 / double(batch[{o.mesh, o.material}]);
         }
         in.impostor.id = keys_.ofUnit[u];  // units of the same parts in the same places share it
+        if (in.impostor.id >= 0) ++unitsOfImpostor[in.impostor.id];
         const Object& representative = scene_.objects()[std::size_t(unit.objects[0])];
         in.transparent = scene_.scene().materials[std::size_t(representative.material)].isTransparent();
         for (int object : unit.objects)
             in.materialNotBaked = in.materialNotBaked ||
                                   (scene_.materialFeatures(object) & kSceneSurfaceDetail & ~kSceneBakedDetail) != 0;
+    }
+    // The draws k units of one impostor take when they are all stand-ins: one per distinct
+    // (nearest view, hole-closing neighbours) among them, at most kDrawsPerView per view.
+    for (LodObjectInput& in : inputs_) {
+        if (in.impostor.id < 0) continue;
+        const double k = double(unitsOfImpostor[in.impostor.id]);
+        in.standInDraws = std::min(k, kDrawsPerView * double(options_.impostor.views)) / k;
     }
 }
 
@@ -171,7 +192,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         measuredBakeMs_ += impostors_->bakeMs() - bakedBefore - ((cache_ ? cache_->counts().loadMs : 0.0) - loadedBefore);
         predictedBakeMs_ += predictedMs;
     }
-    viewFractions_.resize(std::size_t(keys_.count()));
+    viewsDrawn_.resize(std::size_t(keys_.count()));
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
         const LayeredImpostor* impostor = impostors_->impostorOfId(keys_.ofUnit[i]);
         inputs_[i].hasImpostor = impostor != nullptr;
@@ -180,8 +201,8 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         inputs_[i].impostor.resolution = impostor->settings().resolution;
         inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
-        auto& fractions = viewFractions_[std::size_t(keys_.ofUnit[i])];
-        if (fractions.empty()) fractions = drawnFractions(*impostor);
+        auto& drawn = viewsDrawn_[std::size_t(keys_.ofUnit[i])];
+        if (drawn.empty()) drawn = viewsDrawn(*impostor, !impostors_->transparent(keys_.ofUnit[i]));
     }
 }
 
@@ -257,7 +278,9 @@ void LodController::updateViewAngles(const glm::vec3& eye) {
         const glm::vec3 local = impostors_->eyeInObject(keys_.units.units[i].objects[0], eye);
         const int nearest = impostor.nearestView(local);
         inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(local);
-        inputs_[i].impostor.drawnFraction = viewFractions_[std::size_t(keys_.ofUnit[i])][std::size_t(nearest)];
+        const ViewDrawn& drawn = viewsDrawn_[std::size_t(keys_.ofUnit[i])][std::size_t(nearest)];
+        inputs_[i].impostor.drawnFraction = drawn.fraction;
+        inputs_[i].impostor.quads = drawn.quads;
     }
 }
 
@@ -309,9 +332,11 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
             covered += discArea(d);
             // What of the prediction scales with the frame's pixels (a zoom divides it by z^2):
             // the impostor's layer pixels, the geometry's covered pixels.
-            const double fixedMs = d.impostor ? model.impostorFixedMs
-                                              : model.geometryMs(double(inputs[i].triangles), 0.0,
-                                                                 inputs[i].drawsForGeometry());
+            const ImpostorSummary& s = inputs[i].impostor;
+            const double fixedMs =
+                d.impostor ? model.impostorMs(0.0, s.quads > 0.0 ? s.quads : double(std::max(s.slices, 1)),
+                                              inputs[i].standInDraws)
+                           : model.geometryMs(double(inputs[i].triangles), 0.0, inputs[i].drawsForGeometry());
             level.pixelMs += std::max(0.0, (d.impostor ? d.impostorMs : d.geometryMs) - fixedMs);
         }
         level.lossPx = weightedError / std::max({covered, area, 1.0});

@@ -16,11 +16,13 @@
 #include "scene/mesh_builders.hpp"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,14 +57,14 @@ struct GpuSlices {
     GLsizei vertexCount = 0;
 };
 
-GpuSlices makeSlices(int slices) {
+GpuSlices makeSlices(int slices, float low = -1.0f, float high = 1.0f) {
     std::vector<float> data;
     const float corners[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
     for (int s = 0; s < slices; ++s) {
         // Reversed-Z window depth: nearer is larger; the stack spans (0.2, 0.8).
         const float depth = 0.8f - 0.6f * (float(s) + 0.5f) / float(slices);
         for (const auto& c : corners)
-            data.insert(data.end(), {c[0] * 2.0f - 1.0f, c[1] * 2.0f - 1.0f, depth, c[0], c[1], 0.0f, float(s)});
+            data.insert(data.end(), {low + c[0] * (high - low), low + c[1] * (high - low), depth, c[0], c[1], 0.0f, float(s)});
     }
     GpuSlices g;
     g.vertices = gl::Buffer::create();
@@ -102,9 +104,9 @@ struct PassMs {
     double gpu = 1e300, cpu = 1e300;
 };
 template <class Clear, class Draw>
-PassMs fastestPass(gl::GpuTimer& timer, const Clear& clear, const Draw& draw, int draws) {
+PassMs fastestPass(gl::GpuTimer& timer, const Clear& clear, const Draw& draw, int draws, int passes = kTimedPasses) {
     PassMs best;
-    for (int pass = 0; pass < kTimedPasses; ++pass) {
+    for (int pass = 0; pass < passes; ++pass) {
         clear();
         timer.begin("lod calibration");
         const auto started = std::chrono::steady_clock::now();
@@ -152,15 +154,34 @@ PassMs marginalDraw(gl::GpuTimer& timer, const Clear& clear, const Draw& draw) {
 // draw of its own, which overstates geometry where many objects share a mesh. Timed bare, a
 // stand-in measured 1e-5 ms on an NVIDIA H100 while the frame's stand-ins cost at least 0.4 us
 // each, and auto chose impostors that were slower than the geometry (docs/gpu-h100.md).
-GpuScene oneObjectScene(Mesh mesh) {
+GpuScene objectsScene(Mesh mesh, int objects = 1, const std::function<glm::mat4(int)>& place = {}) {
     Scene scene;
     scene.materials.push_back(Material{});
-    Node node;
-    node.meshes = {scene.addMesh(std::move(mesh))};
-    node.materialOverride = 0;
-    scene.addNode(std::move(node));
+    const int shared = scene.addMesh(std::move(mesh));
+    for (int i = 0; i < objects; ++i) {
+        Node node;
+        if (place) node.local = place(i);
+        node.meshes = {shared};
+        node.materialOverride = 0;
+        scene.addNode(std::move(node));
+    }
     return GpuScene(std::move(scene));
 }
+
+// Per stand-in, per slice quad and per pixel of a quad's side, in the instanced draws a frame
+// makes of stand-ins seen alike (GpuScene::drawObjects): kInstances stand-ins of one impostor
+// against one, and each a stack of kInstanceSlices quads against one quad. The objects go in
+// reverse order, so their records are copied into the ring as a frame's scattered stand-ins'
+// are. Each difference is the GPU's or the submitting CPU's, whichever is more, the fastest of
+// kInstancePasses. The batch is a frame's size (builtin:orchard:1000 draws about 8 stand-ins of
+// 53 quads a draw): on llvmpipe a draw of 8k quads or more costs more per quad (0.3-0.37 us at
+// 256 x 32 quads, 0.65-0.71 at 1024 x 32, against 0.18-0.22 at 32-128 x 32).
+constexpr int kInstances = 128;
+constexpr int kInstanceSlices = 32;
+constexpr int kInstancePasses = 5;
+constexpr int kTinyViewport = 8;    // sub-pixel quads
+constexpr int kSmallQuadPx = 8;     // a distant stand-in's slice: 8 x 8 pixels
+constexpr int kFieldViewport = 128; // 16 x 8 of them, each overlapping its neighbours by 2 pixels
 
 // Least squares for ms = c0 + c1 x1 + c2 x2 (x in millions) through the normal equations; a
 // term left out gets a unit diagonal so the system stays solvable and its slope is 0.
@@ -263,7 +284,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             p.ms = timeDraws(timer, [&] { clear(side); }, draw);
             // One more object of this mesh, drawn as the frame draws it.
             if (&g == &kGeometryCases[0]) {
-                const GpuScene one = oneObjectScene(mesh);
+                const GpuScene one = objectsScene(mesh);
                 coarseMarginal = marginalDraw(timer, [&] { clear(side); }, [&] { one.draw(scene, 0); });
                 glBindVertexArray(gpu.vertexArray.id());
                 setCurrentObject(record);  // the scene's draw may have set another object
@@ -299,7 +320,7 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         gl::checkGl("lod calibration: geometry");
     }
 
-    // ---- impostor: ms = fixed + per layer pixel ----
+    // ---- impostor: ms = fixed (a draw's share) + per stand-in + per quad + per layer pixel ----
     {
         // The frame's own path: the opaque scene program, its fragment wrapper's alpha test
         // (common/scene_main.glsl) and shading, with identity matrices so the stack's
@@ -337,12 +358,12 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
                 ms.push_back(p.ms);
             }
         }
-        const glm::dvec3 c = fitNonNegative(x, ms, false);
+        glm::dvec3 c = fitNonNegative(x, ms, false);
         calibration.model.impostorMsPerMegapixel = c.y;
-        // The fixed cost: one slice quad's marginal draw at the tiny viewport, less its pixels,
-        // drawn as the frame draws a stand-in (GpuScene::drawStandIn): from a pass's program, its
-        // stand-in variant with the pass's uniforms copied over, the object's and the impostor's
-        // uniforms, the atlas bound, a switch to the variant and back.
+        // The draw's, the stand-in's, the quad's and the quad side's costs, drawn as the frame
+        // draws stand-ins (GpuScene::draw and drawObjects): from a pass's program, its stand-in
+        // variant with the pass's uniforms copied over, the objects' records and the impostor's
+        // uniforms, the atlas bound.
         {
             const SceneProgram pass = buildSceneProgram("common/opaque.frag.glsl");
             glProgramUniformMatrix4fv(pass.id(), pass.viewProj, 1, GL_FALSE, &identity[0][0]);
@@ -355,15 +376,82 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
             standIn.overlap = 0.5f;
             standIn.first = {0};
             standIn.count = {stack.vertexCount};
-            const GpuScene one = oneObjectScene(makeBumpyBlob(kGeometryCases[0].segments));
+            const GpuScene one = objectsScene(makeBumpyBlob(kGeometryCases[0].segments));
             constexpr int side = 8;
             const PassMs marginal = marginalDraw(timer, [&] { clear(side); }, [&] { one.draw(pass, 0, &standIn); });
-            calibration.model.impostorFixedMs =
-                std::max({0.0, marginal.gpu - c.y * impostorLayerPixels(double(side), 1) * 1e-6, marginal.cpu});
+
+            // kInstances stand-ins in one instanced draw, stacks of 1 and of kInstanceSlices
+            // quads, each quad `quadPx` pixels a side at `viewport`: the time the wider stacks
+            // add, per quad added, and the time the stand-ins add over one.
+            struct Instanced {
+                double perStandInMs, perQuadMs;
+            };
+            auto instanced = [&](const GpuScene& many, float low, float high, int viewport) {
+                GpuSlices thinStack = makeSlices(1, low, high), wideStack = makeSlices(kInstanceSlices, low, high);
+                StandInDraw thin = standIn, wide = standIn;
+                thin.vertexArray = thinStack.vertexArray.id();
+                wide.vertexArray = wideStack.vertexArray.id();
+                wide.slices = kInstanceSlices;
+                wide.count = {wideStack.vertexCount};
+                std::vector<int> all(kInstances), first = {kInstances - 1};
+                for (int i = 0; i < kInstances; ++i) all[std::size_t(i)] = kInstances - 1 - i;
+                const StandIns thinAll(kInstances, &thin), wideAll(kInstances, &wide);
+                auto time = [&](const std::vector<int>& order, const StandIns& standIns) {
+                    auto draw = [&] { many.drawObjects(pass, order, &standIns); };
+                    clear(viewport);
+                    draw();  // warm-up
+                    return fastestPass(timer, [&] { clear(viewport); }, draw, 1, kInstancePasses);
+                };
+                const PassMs oneThin = time(first, thinAll), allThin = time(all, thinAll), allWide = time(all, wideAll);
+                auto larger = [](double gpu, double cpu) { return std::max({0.0, gpu, cpu}); };
+                return Instanced{larger(allThin.gpu - oneThin.gpu, allThin.cpu - oneThin.cpu) / double(kInstances - 1),
+                                 larger(allWide.gpu - allThin.gpu, allWide.cpu - allThin.cpu) /
+                                     (double(kInstances) * double(kInstanceSlices - 1))};
+            };
+            // Quads between pixel centres (0.6 to 0.9 of a pixel): what every quad costs whatever
+            // its size (its vertices, its triangles' setup), and no fragments.
+            if (progress) progress("lod calibration: stand-ins instanced");
+            const GpuScene stacked = objectsScene(makeBumpyBlob(kGeometryCases[0].segments), kInstances);
+            const Instanced tiny = instanced(stacked, 0.6f / float(kTinyViewport) * 2.0f - 1.0f,
+                                             0.9f / float(kTinyViewport) * 2.0f - 1.0f, kTinyViewport);
+            // Quads of kSmallQuadPx a side, the stand-ins on a grid that overlaps each its
+            // neighbours (a distant field's): the cost of a quad's side, from its partly covered
+            // pixel blocks, less its area's (the per-pixel term) and the tiny quad's.
+            const GpuScene field = objectsScene(makeBumpyBlob(kGeometryCases[0].segments), kInstances, [](int i) {
+                const int columns = 16;
+                const float step = 2.0f * float(kSmallQuadPx - 2) / float(kFieldViewport);
+                return glm::translate(glm::mat4(1.0f), glm::vec3(float(i % columns) * step, float(i / columns) * step, 0.0f));
+            });
+            const Instanced small = instanced(field, -1.0f, -1.0f + 2.0f * float(kSmallQuadPx) / float(kFieldViewport),
+                                              kFieldViewport);
+            LodCostModel& m = calibration.model;
+            m.impostorInstanceMs = tiny.perStandInMs;
+            m.impostorMsPerKiloquad = tiny.perQuadMs * 1e3;
+            const double smallArea = double(kSmallQuadPx) * double(kSmallQuadPx);
+            auto sideMs = [&] {
+                return std::max(0.0, (small.perQuadMs - tiny.perQuadMs - m.impostorMsPerMegapixel * smallArea * 1e-6) /
+                                         double(kSmallQuadPx));
+            };
+            m.impostorMsPerKilosidePx = sideMs() * 1e3;
+            // The large stacks' per-pixel cost again, their quads' and sides' costs taken off,
+            // then the side's cost again with it.
+            for (std::size_t i = 0; i < ms.size(); ++i) {
+                const LodCalibrationPoint& p = calibration.points[calibration.points.size() - ms.size() + i];
+                ms[i] = p.ms - m.impostorMsPerKiloquad * 1e-3 * double(p.slices) -
+                        m.impostorMsPerKilosidePx * 1e-3 * std::sqrt(p.pixels * double(p.slices));
+            }
+            c = fitNonNegative(x, ms, false);
+            m.impostorMsPerMegapixel = c.y;
+            m.impostorMsPerKilosidePx = sideMs() * 1e3;
+            // The draw's own part: the lone stand-in's marginal draw (one full 8 x 8 quad) less
+            // its instance, its quad and its pixels.
+            m.impostorFixedMs = std::max(0.0, std::max(marginal.gpu, marginal.cpu) -
+                                                  (m.impostorMs(impostorLayerPixels(double(side), 1), 1.0) - m.impostorFixedMs));
         }
         glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
         for (const auto& p : calibration.points)
-            if (p.kind == LodCalibrationPoint::Kind::Impostor) residuals.push_back(calibration.model.impostorMs(p.pixels) - p.ms);
+            if (p.kind == LodCalibrationPoint::Kind::Impostor)
+                residuals.push_back(calibration.model.impostorMs(p.pixels, double(p.slices)) - p.ms);
         calibration.impostorRmsResidualMs = rms(residuals);
         gl::checkGl("lod calibration: impostor");
     }

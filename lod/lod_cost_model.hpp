@@ -23,14 +23,26 @@ struct LodCostModel {
     double geometryFixedMs = 0.0;
     double geometryMsPerMegatriangle = 0.0;
     double geometryMsPerMegapixel = 0.0;
-    // Impostor: fixed + per layer pixel (each slice quad's screen area, summed over the slices
-    // drawn: every such pixel is a texture fetch and an alpha test, kept or discarded).
+    // Impostor: a draw's fixed cost, shared by the stand-ins one instanced draw takes (stand-ins
+    // of one impostor seen from the same view, GpuScene::drawObjects), + one more stand-in in
+    // such a draw + per slice quad (each quad's vertices and its triangles' setup: a stand-in of
+    // 64 slices draws about as many quads, which on llvmpipe cost more than its pixels once it is
+    // small) + per layer pixel (each slice quad's screen area, summed over the slices drawn:
+    // every such pixel is a texture fetch and an alpha test, kept or discarded).
+    // A quad's cost grows with its side too (its partly covered pixel blocks, rasterised in full:
+    // on llvmpipe a stand-in's 8 x 8 pixel quad costs about 3x its pixels at the large quads'
+    // rate), so the model charges each quad's side, in pixels: sqrt(layer pixels / quads) a
+    // quad, sqrt(layer pixels x quads) a stand-in.
     double impostorFixedMs = 0.0;
+    double impostorInstanceMs = 0.0;
+    double impostorMsPerKiloquad = 0.0;
+    double impostorMsPerKilosidePx = 0.0;
     double impostorMsPerMegapixel = 0.0;
 
     // `draws`: the draw calls it takes (a LOD unit of several parts draws each), each paying the fixed cost.
     double geometryMs(double triangles, double coveredPixels, double draws = 1.0) const;
-    double impostorMs(double layerPixels) const;
+    // `quads`: the slice quads drawn; `draws`: its share of a draw (1 / the stand-ins that share it).
+    double impostorMs(double layerPixels, double quads = 0.0, double draws = 1.0) const;
 };
 
 // The layer pixels of an impostor of `slices` slices whose every slice fills a square of
@@ -39,7 +51,8 @@ struct LodCostModel {
 double impostorLayerPixels(double sizePx, int slices, double drawnFraction = 1.0);
 
 // Fig. 8's crossover, for an object on screen as a square of `sizePx` x `sizePx` pixels drawn
-// as an impostor of `slices` full slices or as a model covering the same square:
+// as an impostor of `slices` full slices (one quad each, a draw of its own) or as a model
+// covering the same square:
 // the triangle count above which the impostor is cheaper. 0 when the impostor is cheaper
 // whatever the model (its cost is below the geometry's fixed part); +infinity when the model's
 // triangles cost nothing on this device (no count makes the impostor cheaper).
@@ -88,7 +101,9 @@ struct LodCalibration {
 // triangle counts (a 4x step), each at a tiny and a small viewport, covered pixels counted by a
 // samples-passed query; impostor: a stack of alpha-tested textured quads
 // (the frame's own opaque scene program with its impostor alpha test, common/scene_main.glsl) with two slice
-// counts at two viewport areas. Each point: one warm-up draw, the fastest of three timed
+// counts at two viewport areas for the per-pixel cost; a lone stand-in's marginal draw for the
+// draw's fixed cost; stand-ins in one instanced draw (GpuScene::drawObjects), 256 against one and
+// stacks of 32 quads against one quad, for the per-stand-in and per-quad costs. Each point: one warm-up draw, the fastest of three timed
 // (gl::GpuTimer), each timed pass several draws averaged. Least squares per curve, slopes
 // kept non-negative (a negative slope, from noise, is dropped and the rest refit).
 LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& progress = {});

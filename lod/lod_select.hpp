@@ -53,6 +53,9 @@ struct ImpostorSummary {
     std::uint64_t bytes = 0;       // its memory (Table 2's formula + rectangles)
     double drawnFraction = 1.0;    // of the full slice squares actually drawn (per-slice rectangles)
     int peels = 1;                 // images per view (2 for a transparent mesh): drawnFraction <= peels
+    // The slice quads drawn from the nearest view (its non-empty slices and the hole-closing
+    // slices of its neighbours, LayeredImpostor::drawFor); 0: one per slice.
+    double quads = 0.0;
 };
 
 // One object, or a LOD unit of several (lod/lod_units.hpp) decided as one.
@@ -66,6 +69,10 @@ struct LodObjectInput {
     // and pays 1/k of one. 0: one per object. A stand-in is a draw of its own, whatever this is.
     double geometryDraws = 0.0;
     double drawsForGeometry() const { return geometryDraws > 0.0 ? geometryDraws : double(std::max(objects, 1)); }
+    // Its stand-in's share of a draw: stand-ins of one impostor seen from the same view go out in
+    // one instanced draw (GpuScene::drawObjects), so k units of an impostor with D distinct
+    // draws among them pay D / k each. 1: a draw of its own.
+    double standInDraws = 1.0;
     bool hasImpostor = false;
     // Auto leaves transparent objects geometry; only --lod impostors draws them as impostors.
     // Their composite is what the techniques are compared on, and an impostor moves each

@@ -12,7 +12,8 @@
 # impostor stops being cheaper, next to the cost model's prediction (lod/lod_cost_model.hpp
 # crossoverSizePx for 46080 triangles) when the bench JSON carries the calibrated model as
 # "lod": {"model": {geometry_fixed_ms, geometry_ms_per_megatriangle, geometry_ms_per_megapixel,
-# impostor_fixed_ms, impostor_ms_per_megapixel}.
+# impostor_fixed_ms, impostor_instance_ms, impostor_ms_per_kiloquad, impostor_ms_per_kiloside_px,
+# impostor_ms_per_megapixel}} (a quad a slice, a draw of its own).
 # Each run's JSON and first frame stay in the output folder; the table goes to stdout (markdown).
 #
 # usage: scripts/bench_lod.sh [--out DIR] [--strata PATH] [--count N] [--size WxH] [--frames N]
@@ -219,11 +220,20 @@ for name in sorted(os.listdir(out)):
 def predicted(l):
     if not model:
         return 'n/a (no lod.model in the bench JSON: run with --lod auto)'
-    growth = (model['impostor_ms_per_megapixel'] * l - model['geometry_ms_per_megapixel']) * 1e-6
-    margin = model['geometry_fixed_ms'] + model['geometry_ms_per_megatriangle'] * TRIANGLES * 1e-6 - model['impostor_fixed_ms']
-    if growth <= 0:
-        return 'every size' if margin > 0 else 'never'
-    return f'{math.sqrt(margin / growth):.0f} px' if margin > 0 else 'never'
+    # lod_cost_model.cpp's crossoverSizePx: a s^2 + b s < margin.
+    a = (model['impostor_ms_per_megapixel'] * l - model['geometry_ms_per_megapixel']) * 1e-6
+    b = model.get('impostor_ms_per_kiloside_px', 0.0) * l * 1e-3
+    impostor_fixed = (model['impostor_fixed_ms'] + model.get('impostor_instance_ms', 0.0) +
+                      model.get('impostor_ms_per_kiloquad', 0.0) * l * 1e-3)
+    margin = model['geometry_fixed_ms'] + model['geometry_ms_per_megatriangle'] * TRIANGLES * 1e-6 - impostor_fixed
+    if margin <= 0:
+        return 'never'
+    if a == 0:
+        return f'{margin / b:.0f} px' if b > 0 else 'every size'
+    discriminant = b * b + 4 * a * margin
+    if discriminant < 0 or (a < 0 and b <= 0):
+        return 'every size'
+    return f'{(-b + math.sqrt(discriminant)) / (2 * a):.0f} px'
 print('\n| slices | measured crossover (object px) | predicted (cost model) |')
 print('|---:|---:|---:|')
 for l in slices:

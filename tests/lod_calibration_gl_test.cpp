@@ -33,13 +33,14 @@ TEST_CASE("lod calibration gl: finite positive coefficients, a 4x mesh costs mor
     MESSAGE("lod calibration on " << c.device << " in " << c.wallMs << " ms: geometry " << m.geometryFixedMs << " ms + "
                                   << m.geometryMsPerMegatriangle << " ms/Mtri + " << m.geometryMsPerMegapixel
                                   << " ms/Mpx (rms " << c.geometryRmsResidualMs << "), impostor " << m.impostorFixedMs
-                                  << " ms + " << m.impostorMsPerMegapixel << " ms/Mpx (rms " << c.impostorRmsResidualMs << ")");
+                                  << " ms a draw + " << m.impostorInstanceMs << " ms a stand-in + " << m.impostorMsPerKiloquad
+                                  << " ms/kquad + " << m.impostorMsPerKilosidePx << " ms per 1000 px of quad side + " << m.impostorMsPerMegapixel << " ms/Mpx (rms " << c.impostorRmsResidualMs << ")");
     for (const auto& p : c.points)
         MESSAGE((p.kind == LodCalibrationPoint::Kind::Geometry ? "geometry " : "impostor ")
                 << p.triangles << " tri " << p.slices << " slices " << p.viewport << " px: " << p.pixels << " px, " << p.ms << " ms");
     REQUIRE(c.points.size() == 8);
     for (double v : {m.geometryFixedMs, m.geometryMsPerMegatriangle, m.geometryMsPerMegapixel, m.impostorFixedMs,
-                     m.impostorMsPerMegapixel}) {
+                     m.impostorInstanceMs, m.impostorMsPerKiloquad, m.impostorMsPerKilosidePx, m.impostorMsPerMegapixel}) {
         CHECK(std::isfinite(v));
         CHECK(v >= 0.0);
     }

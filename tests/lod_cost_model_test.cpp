@@ -82,3 +82,24 @@ TEST_CASE("lod cost: crossover limits: always, never, free triangles") {
     m.impostorFixedMs = 0.1;
     CHECK(crossoverSizePx(m, 0.0, 16) == 0.0);
 }
+
+TEST_CASE("lod cost: a stand-in's share of a draw, its quads and their sides") {
+    LodCostModel m = synthetic();
+    m.impostorInstanceMs = 0.001;
+    m.impostorMsPerKiloquad = 0.2;      // 0.2 us a quad
+    m.impostorMsPerKilosidePx = 0.1;    // 0.1 us a pixel of a quad's side
+    // 16 quads over 160000 layer pixels (100 x 100 each): 1600 pixels of side.
+    // 0.02 x 0.25 + 0.001 + 0.0032 + 0.16 + 0.32.
+    CHECK(m.impostorMs(160000.0, 16.0, 0.25) == doctest::Approx(0.4892));
+    CHECK(m.impostorMs(0.0, 0.0, 0.0) == doctest::Approx(0.001));
+    // The crossover size solves the quadratic the side term makes: at it both cost the same,
+    // and the sides make it smaller than without them (100 px above).
+    const double s = crossoverSizePx(m, 28500.0, 16);
+    CHECK(m.impostorMs(impostorLayerPixels(s, 16), 16.0) == doctest::Approx(m.geometryMs(28500.0, s * s)));
+    CHECK(s == doctest::Approx(77.13).epsilon(1e-3));
+    CHECK(crossoverTriangles(m, s, 16) == doctest::Approx(28500.0));
+    // Impostor pixels no dearer than geometry's, the sides alone grow it: a linear crossover.
+    m.impostorMsPerMegapixel = 0.5 / 16.0;
+    const double margin = m.geometryMs(28500.0, 0.0) - m.impostorMs(0.0, 16.0);
+    CHECK(crossoverSizePx(m, 28500.0, 16) == doctest::Approx(margin / (0.1e-3 * 16.0)));
+}

@@ -235,3 +235,23 @@ TEST_CASE("lod select: a two-peel impostor's fill counts both peels' rectangles"
     o.impostor.drawnFraction = 3.0;  // more than the peels can cover: clamped to 2
     CHECK(selectLodFor(o, view(), synthetic()).impostorMs == doctest::Approx(0.1 + 2.0 * 16 * px * px * 2e-6));
 }
+
+TEST_CASE("lod select: a stand-in pays its share of a draw, its quads and their sides") {
+    // 0.1 ms a draw shared by 10 stand-ins, 0.001 ms a stand-in, 0.2 ms per 1000 quads, 0.1 ms
+    // per 1000 pixels of quad side: 12 quads over 16 x s^2 layer pixels (s = 10.0504) have
+    // sqrt(12 x 16 s^2) pixels of side.
+    LodCostModel m = synthetic();
+    m.impostorInstanceMs = 0.001;
+    m.impostorMsPerKiloquad = 0.2;
+    m.impostorMsPerKilosidePx = 0.1;
+    LodObjectInput o = object(10.0f);
+    o.impostor.quads = 12.0;
+    o.standInDraws = 0.1;
+    const double px = 100.0 / std::sqrt(99.0), layer = 16.0 * px * px;
+    const double expected = 0.01 + 0.001 + 0.2 * 12e-3 + 0.1 * std::sqrt(12.0 * layer) * 1e-3 + 2.0 * layer * 1e-6;
+    CHECK(selectLodFor(o, view(), m).impostorMs == doctest::Approx(expected));
+    // No quad count: one quad a slice.
+    o.impostor.quads = 0.0;
+    CHECK(selectLodFor(o, view(), m).impostorMs ==
+          doctest::Approx(0.01 + 0.001 + 0.2 * 16e-3 + 0.1 * 16.0 * px * 1e-3 + 2.0 * layer * 1e-6));
+}

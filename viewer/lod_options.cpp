@@ -67,6 +67,10 @@ nlohmann::json lodReport(const lod::LodController& controller) {
         {"slices", o.impostor.slices},
         {"overlap", o.impostor.overlap},
         {"impostor_cache", o.impostorCache.string()},
+        // The last frame's LOD units, predicted by the cost model (what LOD draws, not the frame:
+        // objects in no unit, the technique and the enlargement are not in it).
+        {"predicted_ms", controller.selection().predictedMs},
+        {"geometry_only_predicted_ms", controller.selection().geometryOnlyMs},
     };
     if (const lod::ImpostorSet* set = controller.impostors()) {
         const lod::ImpostorMemory m = set->bytes();
@@ -91,6 +95,9 @@ nlohmann::json lodReport(const lod::LodController& controller) {
                       {"geometry_ms_per_megatriangle", c->model.geometryMsPerMegatriangle},
                       {"geometry_ms_per_megapixel", c->model.geometryMsPerMegapixel},
                       {"impostor_fixed_ms", c->model.impostorFixedMs},
+                      {"impostor_instance_ms", c->model.impostorInstanceMs},
+                      {"impostor_ms_per_kiloquad", c->model.impostorMsPerKiloquad},
+                      {"impostor_ms_per_kiloside_px", c->model.impostorMsPerKilosidePx},
                       {"impostor_ms_per_megapixel", c->model.impostorMsPerMegapixel},
                       {"calibration_ms", c->wallMs}};
     }
