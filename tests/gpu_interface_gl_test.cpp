@@ -418,6 +418,8 @@ std::vector<ProgramCase> programCases() {
          with(arrayResolve, {{"PixelOffsets", ssbo(BIND_PIXEL_OFFSETS)}})},
         {{scene, "oit/buffers/ll_store.frag.glsl"}, {}, with(lists, {{"uNodeCount", kCounters}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}}, with(listResolve, tail)},
+        // ll's resolve where its pool fits a buffer texture (BoundedBufferFrame::Shaders::nodeTexels)
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"NODE_TEXELS", ""}}, with(texelResolve, tail)},
         {{"oit/buffers/prefix_scan.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
         // volumetric (abuffer-volume, ll-volume): the lists' stores and resolves with VOLUME
         {{scene, "oit/abuffer_store.frag.glsl"}, {{"VOLUME", ""}}, with(lists, {{"uNodeCount", kCounters}})},
@@ -426,6 +428,8 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"VOLUME", ""}}, with(volumeResolve, tail)},
         {{"oit/abuffer_resolve.comp.glsl"}, {{"VOLUME", ""}}, with(volumeResolve, {{"uOutput", image(BIND_RESOLVE_OUTPUT)}})},
         {{full, "oit/abuffer_resolve.frag.glsl"}, {{"NODE_TEXELS", ""}, {"VOLUME", ""}}, texelVolumeResolve},
+        {{full, "oit/abuffer_resolve.frag.glsl"}, {{"LIST_TAIL", ""}, {"NODE_TEXELS", ""}, {"VOLUME", ""}},
+         with(texelVolumeResolve, tail)},
         {{"oit/buffers/prefix_add.comp.glsl"}, {}, {{"Data", ssbo(BIND_SCAN_DATA)}, {"Sums", ssbo(BIND_SCAN_SUMS)}}},
         // coplanarity-aware peeling with layer storage (f2b-ll, f2b-fab, f2b-kb, dual-ll, dual-fab)
         // and bun-ll; the capture and resolve programs per storage form (layer_storage.glsl)

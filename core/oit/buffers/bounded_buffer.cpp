@@ -19,10 +19,11 @@ void PixelImage::bind(unsigned unit) const {
     glBindImageTexture(unit, texture_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
-void SizedBuffer::ensure(std::uint64_t count, std::uint64_t elementBytes, const char* label) {
-    if (count == count_) return;
+bool SizedBuffer::ensure(std::uint64_t count, std::uint64_t elementBytes, const char* label) {
+    if (count == count_) return false;
     gl::allocateBuffer(buffer_, count * elementBytes, GL_DYNAMIC_COPY, label);
     count_ = count;
+    return true;
 }
 
 std::string BoundedBufferFrame::storePassName(int /*pass*/) const { return id_ + " store"; }
@@ -58,9 +59,15 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
         storeBarrier();
         ++stats.passes;
     }
+    const bool texels = s.nodeTexels && nodeTexelsFit();
+    if (texels && !current_->resolveTexels) {
+        gl::Defines defines = withColorModel(s.resolveDefines, model);
+        defines["NODE_TEXELS"] = "";
+        current_->resolveTexels = gl::buildProgram(s.resolve, defines);
+    }
     {
         gl::ScopedPass pass(frame.timer, id + " resolve");
-        const GLuint program = resolveProgram.id();
+        const GLuint program = texels ? current_->resolveTexels.id() : resolveProgram.id();
         bindStorage();
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         tailTargets_.bindForResolve(frame, bounds.tail);

@@ -54,7 +54,8 @@ private:
 // A storage buffer of `count` elements of `elementBytes`, reallocated when the count changes.
 class SizedBuffer {
 public:
-    void ensure(std::uint64_t count, std::uint64_t elementBytes, const char* label);
+    // Returns whether it (re)allocated: views of the old buffer are stale.
+    bool ensure(std::uint64_t count, std::uint64_t elementBytes, const char* label);
     GLuint id() const { return buffer_.id(); }
 
 private:
@@ -79,6 +80,9 @@ protected:
         std::vector<std::string> resolve;          // full-screen program
         gl::Defines resolveDefines;
         gl::Defines storeDefines = {};
+        // The resolve has a second build with NODE_TEXELS (oit/node_fetch.glsl: the node pool
+        // read through a buffer texture), used on frames whose pool fits one (nodeTexelsFit).
+        bool nodeTexels = false;
     };
     struct Bounds {
         int capacity;
@@ -113,6 +117,9 @@ protected:
     virtual GLuint prepareResolve(const FrameContext& frame, GLuint /*program*/) {
         return frame.targets.outputFramebuffer();
     }
+    // After allocate: whether this frame's node pool has its buffer-texture view, bound by
+    // bindStorage at gpu::BIND_NODE_TEXELS (Shaders::nodeTexels).
+    virtual bool nodeTexelsFit() const { return false; }
     // Called after the resolve with the frame's statistics filled in from the counters.
     virtual void finishResolve(TechniqueStats& /*stats*/) {}
 
@@ -127,6 +134,7 @@ private:
     struct Programs {
         SceneProgram store;
         gl::Program resolve;
+        gl::Program resolveTexels;  // Shaders::nodeTexels: built on the first frame that uses it
     };
     // Built on first use, by [lighter][ColorModel]: the volumetric builds stay scalar (their
     // resolve reads the scalar layout), every other build composites coloured filters exactly

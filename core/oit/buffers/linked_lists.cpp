@@ -8,7 +8,9 @@
 #include "oit/volume/volume_resolve.hpp"
 
 #include "common/bindings.h"
+#include "oit/abuffer_node.h"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -29,10 +31,14 @@ public:
         : BoundedBuffer(std::move(info)), volume_(volume ? std::make_unique<VolumeResolve>() : nullptr) {}
 
 private:
+    // The resolves read the pool through its buffer texture where it fits one (as abuffer's:
+    // oit/node_fetch.glsl), the storage buffer otherwise.
     static Shaders surfaceShaders() {
         return {"oit/buffers/ll_store.frag.glsl",
                 {"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"},
-                {{"LIST_TAIL", ""}}};
+                {{"LIST_TAIL", ""}},
+                {},
+                true};
     }
 
     Shaders shaders() const override {
@@ -40,7 +46,8 @@ private:
         return {"oit/buffers/ll_store.frag.glsl",
                 {"common/fullscreen.vert.glsl", "oit/abuffer_resolve.frag.glsl"},
                 {{"LIST_TAIL", ""}, {"VOLUME", ""}},
-                {{"VOLUME", ""}}};
+                {{"VOLUME", ""}},
+                true};
     }
 
     // Without a volume object in the scene: draw as ll (VolumeResolve::needed).
@@ -70,14 +77,24 @@ private:
         if (pool > 0xFFFFFFFEull)
             throw std::runtime_error("ll: node pool of " + std::to_string(pool) + " nodes exceeds 32-bit indices");
         heads_.ensure(frame.size);
-        nodes_.ensure(pool, kNodeBytes, "ll node pool");
+        if (nodes_.ensure(pool, kNodeBytes, "ll node pool")) nodeTexels_ = {};
+        // Two RGB32UI texels a node; a pool past GL_MAX_TEXTURE_BUFFER_SIZE has no view.
+        GLint maxTexels = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+        if (!nodeTexels_ && 2 * pool <= std::uint64_t(std::max(maxTexels, 0))) {
+            nodeTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
+            glTextureBufferRange(nodeTexels_.id(), GL_RGB32UI, nodes_.id(), 0, GLsizeiptr(pool * kNodeBytes));
+        }
     }
+
+    bool nodeTexelsFit() const override { return bool(nodeTexels_); }
 
     void clear() override { heads_.clear(); }
 
     void bindStorage() override {
         heads_.bind(gpu::BIND_HEADS);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, gpu::BIND_NODES, nodes_.id());
+        glBindTextureUnit(gpu::BIND_NODE_TEXELS, nodeTexels_ ? nodeTexels_.id() : 0);
     }
 
     void setUniforms(GLuint program, const FrameContext& frame, int capacity) const override {
@@ -97,6 +114,7 @@ private:
 
     PixelImage heads_;
     SizedBuffer nodes_;
+    gl::Texture nodeTexels_;  // nodes_ as RGB32UI texels (gpu::BIND_NODE_TEXELS), empty where it does not fit
     std::unique_ptr<VolumeResolve> volume_;  // ll-volume only
     bool volumeFrame_ = false;               // the last frame walked volumes
 };
