@@ -38,19 +38,23 @@ void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittan
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodeNext(i) - 1u)
 #include "oit/ordered_composite.glsl"
 
-// The walk: the volumes the ray is in, as VOLUME_MAX_NESTED = 8 slots held in two pairs of
-// vectors (object ids, entries minus exits; a count of 0 is a free slot), so that finding a
-// volume's slot is a few vector compares with no loop and no array in memory. Then the medium
-// of the slots with a positive count, the radiance gathered and the transmittance so far, and
-// the farthest window depth reached (reversed-Z: smaller is farther; the walk starts at the eye).
+// The walk: the volumes the ray is in, as VOLUME_MAX_NESTED = 8 slots held in vectors (object
+// ids, entries minus exits, and each slot's medium per channel; a count of 0 is a free slot), so
+// that finding a volume's slot is a few vector compares with no loop and no array in memory.
+// Then the medium of the slots with a positive count, the radiance gathered and the
+// transmittance so far, and the farthest window depth reached (reversed-Z: smaller is farther;
+// the walk starts at the eye).
 //
 // The medium is not kept by adding on entry and subtracting on exit (a large tau leaving would
-// leave round-off behind in the others): entering adds the object's medium, leaving the last
-// volume resets it to exactly zero, and leaving one of several sums the remaining ones again
-// from the table. The sum is then always the members' sum, and overlaps are the only case that
-// reads the table more than once per volume.
+// leave round-off behind in the others): after every crossing it is the sum of the members'
+// media, selected from the slots, so it is exactly zero when no volume is left. Selecting from
+// registers costs the same whatever the nesting: re-reading the table only where one of several
+// overlapping volumes is left made a branch llvmpipe runs for every lane whether or not any
+// takes it, 50 of the 130 ms of ll-volume's resolve on builtin:slabs:16, where none overlap.
 uvec4 gSlotObjectLo, gSlotObjectHi;
 ivec4 gSlotCountLo, gSlotCountHi;
+vec4 gSlotTauLo[3], gSlotTauHi[3];          // per channel r, g, b
+vec4 gSlotScatterLo[3], gSlotScatterHi[3];
 int gMembers;   // slots with a positive count
 uint gIgnored;  // volume fragments with no slot left, reported after the walk
 vec3 gTau;
@@ -101,9 +105,17 @@ void advanceTo(float d) {
 vec3 mediumTau(uint object) { return texelFetch(uVolumeMedia, int(2u * object)).rgb; }
 vec3 mediumScatter(uint object) { return texelFetch(uVolumeMedia, int(2u * object + 1u)).rgb; }
 
-void addMedium(uint object) {
-    gTau += mediumTau(object);
-    gScatter += mediumScatter(object);
+// The members (slots with a positive count), and their media summed: selected, not
+// multiplied, so an infinite tau in a free slot leaves no NaN behind.
+void sumMembers() {
+    bvec4 lo = greaterThan(gSlotCountLo, ivec4(0)), hi = greaterThan(gSlotCountHi, ivec4(0));
+    ivec4 members = ivec4(lo) + ivec4(hi);
+    gMembers = members.x + members.y + members.z + members.w;
+    const vec4 ones = vec4(1.0), none = vec4(0.0);
+    for (int c = 0; c < 3; ++c) {
+        gTau[c] = dot(mix(none, gSlotTauLo[c], lo), ones) + dot(mix(none, gSlotTauHi[c], hi), ones);
+        gScatter[c] = dot(mix(none, gSlotScatterLo[c], lo), ones) + dot(mix(none, gSlotScatterHi[c], hi), ones);
+    }
 }
 
 // Slots 0-3 in `lo` and 4-7 in `hi` as the bits 0-7 of one mask.
@@ -118,8 +130,6 @@ uint slotBits(bvec4 lo, bvec4 hi) {
 void crossVolume(uint object, int step) {
     ivec4 lo = ivec4(equal(gSlotObjectLo, uvec4(object))) * ivec4(notEqual(gSlotCountLo, ivec4(0)));
     ivec4 hi = ivec4(equal(gSlotObjectHi, uvec4(object))) * ivec4(notEqual(gSlotCountHi, ivec4(0)));
-    ivec4 held = lo * gSlotCountLo + hi * gSlotCountHi;
-    int before = held.x + held.y + held.z + held.w;
     uint mine = slotBits(bvec4(lo), bvec4(hi));
     uint free = slotBits(equal(gSlotCountLo, ivec4(0)), equal(gSlotCountHi, ivec4(0)));
     // Its own slot, else the lowest free one (the lowest set bit of `free`).
@@ -131,24 +141,15 @@ void crossVolume(uint object, int step) {
     gSlotObjectHi = mix(gSlotObjectHi, uvec4(object), tHi);
     gSlotCountLo += ivec4(tLo) * step;
     gSlotCountHi += ivec4(tHi) * step;
-    // +1: the ray is now inside this volume, -1: no longer, 0: no change (counts beyond 0 and 1).
-    int change = int(before + step > 0) - int(before > 0);
-    gMembers += change;
-    gTau += float(change) * mediumTau(object);
-    gScatter += float(change) * mediumScatter(object);
-    // What was just subtracted is never kept: zero when no volume is left, else the remaining
-    // members summed again (the rare case of leaving one of overlapping volumes).
-    if (gMembers <= 0) {
-        gTau = vec3(0.0);
-        gScatter = vec3(0.0);
-    } else if (change < 0) {
-        gTau = vec3(0.0);
-        gScatter = vec3(0.0);
-        for (int k = 0; k < 4; ++k) {
-            if (gSlotCountLo[k] > 0) addMedium(gSlotObjectLo[k]);
-            if (gSlotCountHi[k] > 0) addMedium(gSlotObjectHi[k]);
-        }
+    // The slot holds this volume's medium (leaving, it is its own slot and medium already).
+    vec3 tau = mediumTau(object), scatter = mediumScatter(object);
+    for (int c = 0; c < 3; ++c) {
+        gSlotTauLo[c] = mix(gSlotTauLo[c], vec4(tau[c]), tLo);
+        gSlotTauHi[c] = mix(gSlotTauHi[c], vec4(tau[c]), tHi);
+        gSlotScatterLo[c] = mix(gSlotScatterLo[c], vec4(scatter[c]), tLo);
+        gSlotScatterHi[c] = mix(gSlotScatterHi[c], vec4(scatter[c]), tHi);
     }
+    sumMembers();
 }
 
 void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittance) {
@@ -186,17 +187,8 @@ void beginWalk(ivec2 pixel) {
     gIgnored = 0u;
     gSlotObjectLo = gSlotObjectHi = uvec4(0u);
     gSlotCountLo = gSlotCountHi = ivec4(0);
-    for (int k = 0; k < uEyeInsideCount && k < int(VOLUME_MAX_NESTED); ++k) {
-        if (k < 4) {
-            gSlotObjectLo[k] = uEyeInsideObject[k];
-            gSlotCountLo[k] = 1;
-        } else {
-            gSlotObjectHi[k - 4] = uEyeInsideObject[k];
-            gSlotCountHi[k - 4] = 1;
-        }
-        gMembers++;
-        addMedium(uEyeInsideObject[k]);
-    }
+    for (int c = 0; c < 3; ++c) gSlotTauLo[c] = gSlotTauHi[c] = gSlotScatterLo[c] = gSlotScatterHi[c] = vec4(0.0);
+    for (int k = 0; k < uEyeInsideCount && k < int(VOLUME_MAX_NESTED); ++k) crossVolume(uEyeInsideObject[k], 1);
 }
 
 // The pixel's surfaces and volumes in depth order over `opaque`.
