@@ -86,7 +86,7 @@ LodController::LodController(const GpuScene& scene, const LodOptions& options, s
 LodController::~LodController() = default;
 
 // Bakes the meshes this frame's selection could draw as impostors and has not tried yet: each
-// judged as if baked (view angle 0, a disc's share pi/4 of every slice square drawn), so a scene
+// judged as if baked (view angle 0, kUnbakedDrawnFraction of every slice square drawn), so a scene
 // whose objects all stay geometry bakes nothing.
 void LodController::bakeCandidates(const LodView& view, const LodCostModel& model) {
     if (!impostors_) {
@@ -110,7 +110,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         guess.impostor.slices = options_.impostor.slices;
         guess.impostor.resolution = options_.impostor.resolution;
         guess.impostor.viewAngleRadians = 0.0;
-        guess.impostor.drawnFraction = 0.785;
+        guess.impostor.drawnFraction = kUnbakedDrawnFraction;
         const LodDecision d = selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx});
         if (!d.impostor) continue;
         wanted[std::size_t(id)] = any = true;
@@ -309,7 +309,7 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
         in.impostor.slices = options_.impostor.slices;
         in.impostor.resolution = options_.impostor.resolution;
         in.impostor.viewAngleRadians = 0.0;
-        in.impostor.drawnFraction = 0.785;
+        in.impostor.drawnFraction = kUnbakedDrawnFraction;
     }
     const double area = double(size.x) * double(size.y);
     auto discArea = [&](const LodDecision& d) {
