@@ -15,6 +15,11 @@ constexpr double kTie = 1e-9;
 
 // Reactive: a frame this many times over the target ends the hold.
 constexpr double kJumpOverTarget = 2.0;
+// The LOD pixel scale's fit: each frame's weight decays by this per frame (about the last ten
+// frames count), x must spread by this share of its mean, and the scale stays in this range.
+constexpr double kPixelFitMemory = 0.9;
+constexpr double kPixelFitSpread = 0.05;
+constexpr double kPixelScaleMin = 0.5, kPixelScaleMax = 4.0;
 
 }  // namespace
 
@@ -70,7 +75,30 @@ double BudgetGovernor::lodMs(const GovernorLoad& load, int level, int zoom) cons
     if (load.lod.levels.empty()) return 0.0;
     const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
     const double z2 = double(zoom) * double(zoom);
-    return l.predictedMs - l.pixelMs + l.pixelMs / z2;
+    return l.predictedMs - l.pixelMs + lodPixelScale_ * l.pixelMs / z2;
+}
+
+void BudgetGovernor::learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost) {
+    if (load.lod.levels.empty()) return;
+    const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
+    if (l.pixelMs <= 0.0) return;
+    // y = what the frame took beyond the zoom model (its learnt offset left out) and LOD's
+    // fixed part; x = LOD's predicted pixel part at the zoom drawn. y = offset + scale x.
+    const double x = l.pixelMs / (double(cost.zoom) * double(cost.zoom));
+    const double y = cost.ms - (l.predictedMs - l.pixelMs) -
+                     (zoomPart_->predict(load.zoom, cost.zoom) - zoomPart_->sceneOffsetMs());
+    PixelFit& f = pixelFit_;
+    f.w = kPixelFitMemory * f.w + 1.0;
+    f.x = kPixelFitMemory * f.x + x;
+    f.y = kPixelFitMemory * f.y + y;
+    f.xx = kPixelFitMemory * f.xx + x * x;
+    f.xy = kPixelFitMemory * f.xy + x * y;
+    const double meanX = f.x / f.w, variance = f.xx / f.w - meanX * meanX;
+    // Only where the frames drawn spread x (two zooms, or a view that changed the pixel part):
+    // else the offset alone explains them.
+    if (f.w < 2.5 || variance <= kPixelFitSpread * kPixelFitSpread * meanX * meanX) return;
+    const double slope = (f.xy / f.w - meanX * f.y / f.w) / variance;
+    lodPixelScale_ = std::clamp(slope, kPixelScaleMin, kPixelScaleMax);
 }
 
 double BudgetGovernor::loss(const GovernorLoad& load, int zoom, int level) const {
@@ -156,6 +184,7 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     if (zoomPart_) {
         // The zoom model learns the frame less LOD's predicted part at the state drawn, so its
         // offset takes in what both models miss (a constant bias of LOD's included).
+        learnLodPixelScale(load, last_.lodLevel, cost);
         FrameCost zoomCost = cost;
         zoomCost.ms = cost.ms - lodMs(load, last_.lodLevel, cost.zoom);
         zoomPart_->observe(zoomCost);
