@@ -22,7 +22,9 @@ std::vector<ViewDrawn> viewsDrawn(const LayeredImpostor& impostor, bool fillsHol
     std::vector<double> holeQuads(std::size_t(s.views), 0.0), pairs(std::size_t(s.views), 0.0);
     if (fillsHoles)
         for (const auto& [v, w] : impostor.adjacency()) {
-            holeQuads[std::size_t(v)] += double(impostor.holeSlices(v, w).size());
+            for (int local : impostor.holeSlices(v, w))
+                holeQuads[std::size_t(v)] +=
+                    double(impostor.sliceRange(w, local / s.slices, local % s.slices).second / 6);
             pairs[std::size_t(v)] += 1.0;
         }
     for (int view = 0; view < s.views; ++view) {
@@ -332,12 +334,12 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
             covered += discArea(d);
             // What of the prediction scales with the frame's pixels (a zoom divides it by z^2):
             // the impostor's layer pixels, the geometry's covered pixels.
-            const ImpostorSummary& s = inputs[i].impostor;
-            const double fixedMs =
-                d.impostor ? model.impostorMs(0.0, s.quads > 0.0 ? s.quads : double(std::max(s.slices, 1)),
-                                              inputs[i].standInDraws)
-                           : model.geometryMs(double(inputs[i].triangles), 0.0, inputs[i].drawsForGeometry());
-            level.pixelMs += std::max(0.0, (d.impostor ? d.impostorMs : d.geometryMs) - fixedMs);
+            // An impostor's quad sides shrink as 1 / z (level.sideMs).
+            const double sideMs = d.impostor ? model.impostorSideMs(d.layerPixels, d.quads) : 0.0;
+            const double fixedMs = d.impostor ? model.impostorMs(0.0, d.quads, inputs[i].standInDraws)
+                                              : model.geometryMs(double(inputs[i].triangles), 0.0, inputs[i].drawsForGeometry());
+            level.sideMs += sideMs;
+            level.pixelMs += std::max(0.0, (d.impostor ? d.impostorMs : d.geometryMs) - fixedMs - sideMs);
         }
         level.lossPx = weightedError / std::max({covered, area, 1.0});
         if (first) preview.coverage = std::min(1.0, covered / std::max(area, 1.0));

@@ -451,7 +451,10 @@ LodCalibration calibrateLodCost(const std::function<void(const std::string&)>& p
         glBindTextureUnit(gpu::BIND_IMPOSTOR_ATLAS, 0);
         for (const auto& p : calibration.points)
             if (p.kind == LodCalibrationPoint::Kind::Impostor)
-                residuals.push_back(calibration.model.impostorMs(p.pixels, double(p.slices)) - p.ms);
+                // Against the stacks' own line: their bare draws pay the fit's intercept (the timed
+                // pass's own cost), not a stand-in's draw and instance.
+                residuals.push_back(c.x + calibration.model.impostorMs(p.pixels, double(p.slices), 0.0) -
+                                    calibration.model.impostorInstanceMs - p.ms);
         calibration.impostorRmsResidualMs = rms(residuals);
         gl::checkGl("lod calibration: impostor");
     }

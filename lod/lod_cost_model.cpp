@@ -10,10 +10,13 @@ double LodCostModel::geometryMs(double triangles, double coveredPixels, double d
     return geometryFixedMs * draws + geometryMsPerMegatriangle * triangles * 1e-6 + geometryMsPerMegapixel * coveredPixels * 1e-6;
 }
 
+double LodCostModel::impostorSideMs(double layerPixels, double quads) const {
+    return impostorMsPerKilosidePx * std::sqrt(std::max(0.0, layerPixels) * std::max(0.0, quads)) * 1e-3;
+}
+
 double LodCostModel::impostorMs(double layerPixels, double quads, double draws) const {
-    const double sidePx = std::sqrt(std::max(0.0, layerPixels) * std::max(0.0, quads));
     return impostorFixedMs * draws + impostorInstanceMs + impostorMsPerKiloquad * quads * 1e-3 +
-           impostorMsPerKilosidePx * sidePx * 1e-3 + impostorMsPerMegapixel * layerPixels * 1e-6;
+           impostorSideMs(layerPixels, quads) + impostorMsPerMegapixel * layerPixels * 1e-6;
 }
 
 double predictedBakeMs(const LodCostModel& model, double triangles, int meshDraws, int resolution) {
@@ -43,13 +46,14 @@ double crossoverSizePx(const LodCostModel& m, double triangles, int slices) {
     const double b = m.impostorMsPerKilosidePx * L * 1e-3;
     const double margin = m.geometryMs(triangles, 0.0) - m.impostorMs(0.0, L);
     if (margin <= 0.0) return 0.0;
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    if (a == 0.0) return b > 0.0 ? margin / b : inf;
-    // The smallest positive root of a s^2 + b s = margin; none (a < 0, the left side never
-    // reaching the margin): cheaper at every size.
+    // The smallest positive root of a s^2 + b s = margin, written 2 margin / (b + sqrt(D)) (the
+    // same root as (-b + sqrt(D)) / 2a without its cancellation when a is small, and margin / b
+    // at a = 0); none (D < 0, or a denominator <= 0 when a < 0 and b <= 0): the left side never
+    // reaches the margin, cheaper at every size.
     const double discriminant = b * b + 4.0 * a * margin;
-    if (discriminant < 0.0 || (a < 0.0 && b <= 0.0)) return inf;
-    return (-b + std::sqrt(discriminant)) / (2.0 * a);
+    if (discriminant < 0.0) return std::numeric_limits<double>::infinity();
+    const double denominator = b + std::sqrt(discriminant);
+    return denominator > 0.0 ? 2.0 * margin / denominator : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace strata::lod

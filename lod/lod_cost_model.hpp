@@ -43,6 +43,8 @@ struct LodCostModel {
     double geometryMs(double triangles, double coveredPixels, double draws = 1.0) const;
     // `quads`: the slice quads drawn; `draws`: its share of a draw (1 / the stand-ins that share it).
     double impostorMs(double layerPixels, double quads = 0.0, double draws = 1.0) const;
+    // Of that, the quad sides' part: sqrt(layer pixels x quads) pixels of side.
+    double impostorSideMs(double layerPixels, double quads) const;
 };
 
 // The layer pixels of an impostor of `slices` slices whose every slice fills a square of
@@ -58,9 +60,12 @@ double impostorLayerPixels(double sizePx, int slices, double drawnFraction = 1.0
 // triangles cost nothing on this device (no count makes the impostor cheaper).
 double crossoverTriangles(const LodCostModel& model, double sizePx, int slices);
 
-// The inverse: the largest on-screen size (pixels, side of the square) at which an impostor of
-// `slices` slices is cheaper than a model of `triangles` triangles. 0 when it is never cheaper;
-// +infinity when it is cheaper at every size (its per-pixel cost does not exceed the model's).
+// The inverse: the size (pixels, side of the square) up to which an impostor of `slices` slices
+// is cheaper than a model of `triangles` triangles, from size 0: the smallest positive root of
+// (impostor - geometry)(s) = 0, a quadratic in s (pixels and quad sides). 0 when it is never
+// cheaper; +infinity when it is cheaper at every size (its growth with the size never catches
+// up with the geometry's margin). Where the impostor's pixels cost less than the geometry's but
+// its sides cost more, it can be cheaper again above a second root, which this does not report.
 double crossoverSizePx(const LodCostModel& model, double triangles, int slices);
 
 // The predicted time to bake one layered impostor (lod/layered_impostor.hpp) of a
@@ -87,8 +92,10 @@ struct LodCalibrationPoint {
 struct LodCalibration {
     LodCostModel model;
     std::vector<LodCalibrationPoint> points;
-    // Of each model over its own points. The fixed terms are marginal draws, not the fits'
-    // intercepts, so the residuals also hold each timed pass's own cost (about 1 ms on llvmpipe).
+    // Of each model over its own points. Geometry's fixed term is a marginal draw, not the fit's
+    // intercept, so its residuals also hold each timed pass's own cost (about 1 ms on llvmpipe);
+    // the impostor stacks' are against their fitted line (its intercept in place of a stand-in's
+    // draw and instance).
     double geometryRmsResidualMs = 0.0;
     double impostorRmsResidualMs = 0.0;
     double wallMs = 0.0;                 // CPU wall time the calibration took

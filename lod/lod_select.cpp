@@ -76,9 +76,9 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
 
     if (object.hasImpostor) {
         const ImpostorSummary& s = object.impostor;
-        d.impostorMs = model.impostorMs(
-            double(std::max(s.slices, 1)) * squarePx * std::clamp(s.drawnFraction, 0.0, double(std::max(s.peels, 1))),
-            s.quads > 0.0 ? s.quads : double(std::max(s.slices, 1)), object.standInDraws);
+        d.layerPixels = double(std::max(s.slices, 1)) * squarePx * std::clamp(s.drawnFraction, 0.0, double(std::max(s.peels, 1)));
+        d.quads = s.quads > 0.0 ? s.quads : double(std::max(s.slices, 1));
+        d.impostorMs = model.impostorMs(d.layerPixels, d.quads, object.standInDraws);
         const ImpostorError e = impostorError(d.projectedPx, s.slices, s.resolution, s.viewAngleRadians);
         d.parallaxPx = e.parallaxPx;
         d.samplingPx = e.samplingPx;

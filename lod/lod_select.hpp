@@ -66,12 +66,14 @@ struct LodObjectInput {
     int objects = 1;               // scene objects it stands for (LodSelection::impostorObjects)
     // The draws its geometry costs, each paying the model's fixed cost: a part whose mesh and
     // material k objects share goes out in one instanced draw with them (GpuScene::drawObjects)
-    // and pays 1/k of one. 0: one per object. A stand-in is a draw of its own, whatever this is.
+    // and pays 1/k of one. 0: one per object. A stand-in's share is standInDraws.
     double geometryDraws = 0.0;
     double drawsForGeometry() const { return geometryDraws > 0.0 ? geometryDraws : double(std::max(objects, 1)); }
     // Its stand-in's share of a draw: stand-ins of one impostor seen from the same view go out in
     // one instanced draw (GpuScene::drawObjects), so k units of an impostor with D distinct
-    // draws among them pay D / k each. 1: a draw of its own.
+    // draws among them pay D / k each. 1: a draw of its own. LodController estimates it as if
+    // every unit of the impostor were a stand-in: where few are, each is charged less of a draw
+    // than it takes (a few microseconds of fixed cost, against a stand-in's quads and pixels).
     double standInDraws = 1.0;
     bool hasImpostor = false;
     // Auto leaves transparent objects geometry; only --lod impostors draws them as impostors.
@@ -123,6 +125,8 @@ struct LodDecision {
     double geometryMs = 0.0;     // predicted for every object
     double impostorMs = 0.0;     // predicted when it has an impostor and the eye is outside 2 r
     double errorPx = 0.0;        // the impostor's error bound (0 without an impostor)
+    double layerPixels = 0.0;    // the impostor's predicted layer pixels (0 without one)
+    double quads = 0.0;          // the impostor's predicted quads (0 without one)
     double parallaxPx = 0.0, samplingPx = 0.0;
 };
 

@@ -74,18 +74,22 @@ int BudgetGovernor::highestLevel(const GovernorLoad& load) const {
 double BudgetGovernor::lodMs(const GovernorLoad& load, int level, int zoom) const {
     if (load.lod.levels.empty()) return 0.0;
     const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
-    const double z2 = double(zoom) * double(zoom);
-    return l.predictedMs - l.pixelMs + lodPixelScale_ * l.pixelMs / z2;
+    return l.predictedMs - l.pixelMs - l.sideMs + lodPixelScale_ * lodSizePart(l, zoom);
+}
+
+double BudgetGovernor::lodSizePart(const LodLevelPreview& l, int zoom) {
+    const double z = double(zoom);
+    return l.pixelMs / (z * z) + l.sideMs / z;
 }
 
 void BudgetGovernor::learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost) {
     if (load.lod.levels.empty()) return;
     const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
-    if (l.pixelMs <= 0.0) return;
+    if (l.pixelMs + l.sideMs <= 0.0) return;
     // y = what the frame took beyond the zoom model (its learnt offset left out) and LOD's
-    // fixed part; x = LOD's predicted pixel part at the zoom drawn. y = offset + scale x.
-    const double x = l.pixelMs / (double(cost.zoom) * double(cost.zoom));
-    const double y = cost.ms - (l.predictedMs - l.pixelMs) -
+    // fixed part; x = LOD's predicted pixel and side parts at the zoom drawn. y = offset + scale x.
+    const double x = lodSizePart(l, cost.zoom);
+    const double y = cost.ms - (l.predictedMs - l.pixelMs - l.sideMs) -
                      (zoomPart_->predict(load.zoom, cost.zoom) - zoomPart_->sceneOffsetMs());
     PixelFit& f = pixelFit_;
     f.w = kPixelFitMemory * f.w + 1.0;

@@ -16,10 +16,10 @@
 // of error (1 and 1 leave the pixel units as they are).
 //  - predictive: the time of every state, before the frame, from the zoom cost model (pixels,
 //    fragments) plus the LOD selection's predicted time at each bound (its pixel part divided by
-//    z^2), and two corrections learnt from the frames drawn: an offset (what both models miss,
-//    a constant bias of LOD's included) and a factor on LOD's pixel part (least squares over
-//    the last frames, once they spread it: two zooms, or a view that changed it). A bias that
-//    grows with the bound is not learnt.
+//    z^2, the impostors' quad sides by z), and two corrections learnt from the frames drawn: an
+//    offset (what both models miss, a constant bias of LOD's included) and a factor on LOD's
+//    pixel and side parts (least squares over the last frames, once they spread it: two zooms,
+//    or a view that changed it). A bias that grows with the bound is not learnt.
 //  - reactive: from the measured median of the last `holdFrames` frames at the current state:
 //    over budget it moves to a lossier state (more zoom, a larger bound, or both), under it to a
 //    less lossy one, each estimated from the measured time (zoom: the learned pixel share; LOD:
@@ -62,6 +62,9 @@ struct LodLevelPreview {
     // summed area and the display's: a mean error in display pixels, at most the bound.
     double lossPx = 0.0;
     int impostorObjects = 0;
+    // The part that scales with the impostors' quad sides (1 / z at zoom z: as many quads, each
+    // side z times shorter; lod/lod_cost_model.hpp).
+    double sideMs = 0.0;
 };
 
 struct LodPreview {
@@ -107,9 +110,11 @@ public:
     const GovernorChoice& last() const { return last_; }
     // The state's loss for a load (the rule's; public for tests and the panel).
     double loss(const GovernorLoad& load, int zoom, int level) const;
-    // Predictive: the factor on LOD's predicted pixel part learnt from the frames drawn (1 until
-    // they spread it). The LOD cost model's rates come from calibration draws, not this scene's
-    // stand-ins; on builtin:orchard:1000 its pixel part came out about 30 % low.
+    // Predictive: the factor on LOD's predicted pixel and side parts learnt from the frames
+    // drawn (1 until they spread it). The LOD cost model's rates come from calibration draws,
+    // not this scene's stand-ins; on builtin:orchard:1000 its pixel part came out about 30 %
+    // low. The factor also takes in any per-pixel bias of the zoom model (it too shrinks with
+    // the zoom): totals across zooms stay right, but that part is then scaled per LOD level.
     double lodPixelScale() const { return lodPixelScale_; }
 
 private:
@@ -143,6 +148,8 @@ private:
     double pixelShare_ = 1.0;  // of the time at the current zoom, what scales with pixels
     // Predictive: LOD's pixel part as drawn over as previewed (lodMs), fitted to the frames.
     void learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost);
+    // LOD's size-dependent part at zoom z: its pixel part / z^2 and its side part / z.
+    static double lodSizePart(const LodLevelPreview& level, int zoom);
     double lodPixelScale_ = 1.0;
     struct PixelFit {
         double w = 0.0, x = 0.0, y = 0.0, xx = 0.0, xy = 0.0;  // decayed sums

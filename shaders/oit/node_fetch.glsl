@@ -2,7 +2,8 @@
 // they go through an RGB32UI buffer texture over the pool, two texels a node (next, depth,
 // objectId | primitiveId, colorRG, colorBA; oit/abuffer_node.h): llvmpipe loads a storage buffer
 // lane by lane, and abuffer's resolve at 16 layers took 34 ms that way against 26 this way.
-// Without it (ll's resolves), the storage buffer itself.
+// Without it (ll's resolves where the pool is larger than a buffer texture can view), the
+// storage buffer itself.
 #ifndef STRATA_NODE_FETCH_GLSL
 #define STRATA_NODE_FETCH_GLSL
 #include "oit/abuffer_storage.glsl"

@@ -79,9 +79,12 @@ private:
         heads_.ensure(frame.size);
         if (nodes_.ensure(pool, kNodeBytes, "ll node pool")) nodeTexels_ = {};
         // Two RGB32UI texels a node; a pool past GL_MAX_TEXTURE_BUFFER_SIZE has no view.
-        GLint maxTexels = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-        if (!nodeTexels_ && 2 * pool <= std::uint64_t(std::max(maxTexels, 0))) {
+        if (maxTexels_ < 0) {
+            GLint texels = 0;
+            glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
+            maxTexels_ = std::max<GLint>(texels, 0);
+        }
+        if (!nodeTexels_ && pool > 0 && 2 * pool <= std::uint64_t(maxTexels_)) {
             nodeTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
             glTextureBufferRange(nodeTexels_.id(), GL_RGB32UI, nodes_.id(), 0, GLsizeiptr(pool * kNodeBytes));
         }
@@ -115,6 +118,7 @@ private:
     PixelImage heads_;
     SizedBuffer nodes_;
     gl::Texture nodeTexels_;  // nodes_ as RGB32UI texels (gpu::BIND_NODE_TEXELS), empty where it does not fit
+    GLint maxTexels_ = -1;    // GL_MAX_TEXTURE_BUFFER_SIZE, read on the first frame
     std::unique_ptr<VolumeResolve> volume_;  // ll-volume only
     bool volumeFrame_ = false;               // the last frame walked volumes
 };
