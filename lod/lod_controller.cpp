@@ -1,5 +1,6 @@
 #include "lod/lod_controller.hpp"
 
+#include "lod/lod_cost_cache.hpp"
 #include "lod/view_directions.hpp"
 #include "render/frustum.hpp"
 
@@ -264,7 +265,20 @@ void LodController::ensureCalibrated() {
         calibration_->device = "given";
         return;
     }
+    // Kept from an earlier run on this device where there is an impostor cache to keep it in.
+    const std::filesystem::path kept = options_.impostorCache.empty() ? std::filesystem::path()
+                                                                       : options_.impostorCache / kCostModelFile;
+    const std::string deviceKey = kept.empty() ? std::string() : currentDeviceKey();
+    if (!kept.empty()) {
+        if (auto loaded = loadCostModel(kept, deviceKey)) {
+            calibration_ = std::move(*loaded);
+            calibration_->kept = true;
+            if (progress_) *progress_ << "lod: cost model on " << calibration_->device << " kept from an earlier run (" << kept.string() << ")\n";
+            return;
+        }
+    }
     calibration_ = calibrateLodCost();
+    if (!kept.empty()) storeCostModel(kept, deviceKey, *calibration_);
     if (progress_)
         *progress_ << "lod: cost model on " << calibration_->device << ": geometry "
                    << calibration_->model.geometryMsPerMegatriangle << " ms/Mtri, impostor "

@@ -99,6 +99,7 @@ struct LodCalibration {
     double geometryRmsResidualMs = 0.0;
     double impostorRmsResidualMs = 0.0;
     double wallMs = 0.0;                 // CPU wall time the calibration took
+    bool kept = false;                   // read from an earlier run's (lod/lod_cost_cache.hpp), not measured now
     std::string device;                  // GL_RENDERER
 };
 

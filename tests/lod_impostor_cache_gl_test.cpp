@@ -7,6 +7,7 @@
 #include "gl_test_support.hpp"
 
 #include "lod/impostor_cache.hpp"
+#include "lod/lod_cost_cache.hpp"
 #include "lod/impostor_set.hpp"
 #include "lod/lod_controller.hpp"
 #include "scene/builtin_scenes.hpp"
@@ -317,4 +318,57 @@ TEST_CASE("bake budget: one bake per frame under a tiny budget, geometry until a
     all.select(far, {64, 48});
     CHECK(all.impostors()->bakedImpostors() == 2);
     CHECK(all.impostors()->pendingBakes() == 0);
+}
+
+TEST_CASE("cost model cache: auto keeps its calibration for the next run on this device, and only that") {
+    test::Fixture fx(makeFieldScene(4, false));
+    TempFolder folder("cost-model-cache");
+    const fs::path file = folder.path / kCostModelFile;
+    LodOptions auto_ = cachedImpostors(LodMode::Auto, folder.path);
+    LodCostModel measured;
+    {
+        LodController first(*fx.gpu, auto_);
+        first.select(fx.camera, {64, 48});
+        REQUIRE(first.calibration());
+        CHECK_FALSE(first.calibration()->kept);
+        CHECK(first.calibration()->wallMs > 0.0);
+        measured = first.calibration()->model;
+        CHECK(fs::exists(file));
+    }
+    // A second run on the same device reads it: every coefficient as measured, nothing timed.
+    {
+        LodController second(*fx.gpu, auto_);
+        second.select(fx.camera, {64, 48});
+        REQUIRE(second.calibration());
+        CHECK(second.calibration()->kept);
+        CHECK(second.calibration()->wallMs == 0.0);
+        const LodCostModel& m = second.calibration()->model;
+        CHECK(m.geometryMsPerMegatriangle == measured.geometryMsPerMegatriangle);
+        CHECK(m.impostorMsPerKiloquad == measured.impostorMsPerKiloquad);
+        CHECK(m.impostorMsPerKilosidePx == measured.impostorMsPerKilosidePx);
+        CHECK(m.impostorFixedMs == measured.impostorFixedMs);
+    }
+    // Another device's, another version's, or a damaged file is not used, and the calibration
+    // made instead replaces it.
+    const std::string key = currentDeviceKey();
+    REQUIRE(loadCostModel(file, key));
+    CHECK_FALSE(loadCostModel(file, key + " (another)"));
+    for (const char* text : {"{\"version\": 1, \"device\": \"@\", \"model\": {}}", "not json", "{\"version\": 2}",
+                             "{\"version\": 2, \"device\": \"@\", \"model\": {\"geometry_fixed_ms\": -1}}"}) {
+        CAPTURE(text);
+        std::string content = text;
+        if (const auto at = content.find('@'); at != std::string::npos) content.replace(at, 1, key);
+        std::ofstream(file) << content;
+        CHECK_FALSE(loadCostModel(file, key));
+        LodController again(*fx.gpu, auto_);
+        again.select(fx.camera, {64, 48});
+        REQUIRE(again.calibration());
+        CHECK_FALSE(again.calibration()->kept);
+        CHECK(loadCostModel(file, key));  // replaced by the new calibration
+    }
+    // Without a cache folder nothing is kept or read.
+    LodController uncached(*fx.gpu, cachedImpostors(LodMode::Auto, {}));
+    uncached.select(fx.camera, {64, 48});
+    REQUIRE(uncached.calibration());
+    CHECK_FALSE(uncached.calibration()->kept);
 }

@@ -99,7 +99,8 @@ nlohmann::json lodReport(const lod::LodController& controller) {
                       {"impostor_ms_per_kiloquad", c->model.impostorMsPerKiloquad},
                       {"impostor_ms_per_kiloside_px", c->model.impostorMsPerKilosidePx},
                       {"impostor_ms_per_megapixel", c->model.impostorMsPerMegapixel},
-                      {"calibration_ms", c->wallMs}};
+                      {"calibration_ms", c->wallMs},
+                      {"kept", c->kept}};  // from an earlier run on this device (lod/lod_cost_cache.hpp)
     }
     return j;
 }
@@ -135,6 +136,8 @@ std::string lodSummary(const lod::LodController& controller) {
             d.declinedSavingMs, controller.options().plannedFrames);
     if (const auto& c = controller.calibration(); c && c->device == "given")
         line += "; cost model given";
+    else if (c && c->kept)
+        line += "; cost model kept from an earlier run";
     else if (c)
         add("; cost model calibrated in %.0f ms", c->wallMs);
     return line;
