@@ -71,8 +71,13 @@ TEST_CASE("lod calibration gl: finite positive coefficients, a 4x mesh costs mor
     CHECK(m.geometryFixedMs < 0.2);
     // The 4x larger mesh is predicted to cost more per draw (same covered pixels).
     CHECK(m.geometryMs(4.0 * 20480.0, 1000.0) > m.geometryMs(20480.0, 1000.0));
-    // Under a second on llvmpipe (the brief: "well under").
+    // Under a second on llvmpipe (the brief: "well under"; 0.32-0.36 s measured). AddressSanitizer
+    // slows the CPU side that the instanced stand-ins' timings wait on about 3x (1.02 s measured).
+#if defined(__SANITIZE_ADDRESS__)
+    CHECK(c.wallMs < 3000.0);
+#else
     CHECK(c.wallMs < 1000.0);
+#endif
     GLint viewport[4] = {};
     glGetIntegerv(GL_VIEWPORT, viewport);
     CHECK(viewport[2] == 17);
