@@ -50,8 +50,15 @@ TEST_CASE("lod calibration gl: finite positive coefficients, a 4x mesh costs mor
     CHECK(m.impostorMsPerMegapixel > 0.0);
     // On llvmpipe a quad and its sides cost measurable time (0.18-0.21 us a quad, 0.10-0.12 us a
     // pixel of side, against 4,000 quads a timed draw): a difference clamped to 0 is a broken
-    // measurement. A GPU may time them below its noise.
-    if (c.device.find("llvmpipe") != std::string::npos) {
+    // measurement. A GPU may time them below its noise. Under AddressSanitizer, which intercepts
+    // the driver's memory copies too, the quads' timings are distorted (1.0 us a quad, the
+    // side's share lost in it): not checked there.
+#if !defined(__SANITIZE_ADDRESS__)
+    const bool software = c.device.find("llvmpipe") != std::string::npos;
+#else
+    const bool software = false;
+#endif
+    if (software) {
         CHECK(m.impostorMsPerKiloquad > 0.02);
         CHECK(m.impostorMsPerKilosidePx > 0.01);
         CHECK(m.impostorInstanceMs > 0.0);
