@@ -4,6 +4,7 @@
 #include "gl/debug.hpp"
 #include "oit/abuffer_node.h"
 #include "oit/draw_transparent.hpp"
+#include "oit/node_texels.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -46,10 +47,8 @@ FragmentLists::Run FragmentLists::render(const FrameContext& frame, const SceneP
         allocatedHeadLayers_ = headLayers_;
     }
     // The pool also fits the buffer-texture view the resolves read it through (two texels a node).
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    const std::uint64_t maxNodes = std::max<std::uint64_t>(
-        std::min<std::uint64_t>(gl::storageBlockElements(kNodeBytes, maxBlockMiB), std::uint64_t(std::max(maxTexels, 2)) / 2), 1);
+    const std::uint64_t maxNodes =
+        std::max<std::uint64_t>(std::min(gl::storageBlockElements(kNodeBytes, maxBlockMiB), maxNodeTexelNodes()), 1);
     // First frame: the setting, or two fragments per pixel; later frames keep what the previous
     // frame needed, so the pool follows the fragments present.
     if (capacity_ == 0) capacity_ = initialNodes > 0 ? initialNodes : std::uint64_t(frame.size.x) * frame.size.y * 2;
@@ -106,9 +105,7 @@ void FragmentLists::ensurePool() {
     if (poolCapacity_ == capacity_) return;
     gl::allocateBuffer(nodes_, capacity_ * kNodeBytes, GL_DYNAMIC_COPY, (label_ + " node pool").c_str());
     poolCapacity_ = capacity_;
-    // The pool as RGB32UI texels, two a node (oit/node_fetch.glsl): re-made with the pool.
-    nodeTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
-    glTextureBufferRange(nodeTexels_.id(), GL_RGB32UI, nodes_.id(), 0, GLsizeiptr(capacity_ * kNodeBytes));
+    nodeTexels_ = makeNodeTexels(nodes_.id(), capacity_);  // re-made with the pool
 }
 
 void FragmentLists::bind() const {

@@ -8,9 +8,8 @@
 #include "oit/volume/volume_resolve.hpp"
 
 #include "common/bindings.h"
-#include "oit/abuffer_node.h"
+#include "oit/node_texels.hpp"
 
-#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -78,16 +77,8 @@ private:
             throw std::runtime_error("ll: node pool of " + std::to_string(pool) + " nodes exceeds 32-bit indices");
         heads_.ensure(frame.size);
         if (nodes_.ensure(pool, kNodeBytes, "ll node pool")) nodeTexels_ = {};
-        // Two RGB32UI texels a node; a pool past GL_MAX_TEXTURE_BUFFER_SIZE has no view.
-        if (maxTexels_ < 0) {
-            GLint texels = 0;
-            glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &texels);
-            maxTexels_ = std::max<GLint>(texels, 0);
-        }
-        if (!nodeTexels_ && pool > 0 && 2 * pool <= std::uint64_t(maxTexels_)) {
-            nodeTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
-            glTextureBufferRange(nodeTexels_.id(), GL_RGB32UI, nodes_.id(), 0, GLsizeiptr(pool * kNodeBytes));
-        }
+        // A pool larger than a buffer texture can view keeps the storage-buffer resolve.
+        if (!nodeTexels_ && pool > 0 && pool <= maxNodeTexelNodes()) nodeTexels_ = makeNodeTexels(nodes_.id(), pool);
     }
 
     bool nodeTexelsFit() const override { return bool(nodeTexels_); }
@@ -118,7 +109,6 @@ private:
     PixelImage heads_;
     SizedBuffer nodes_;
     gl::Texture nodeTexels_;  // nodes_ as RGB32UI texels (gpu::BIND_NODE_TEXELS), empty where it does not fit
-    GLint maxTexels_ = -1;    // GL_MAX_TEXTURE_BUFFER_SIZE, read on the first frame
     std::unique_ptr<VolumeResolve> volume_;  // ll-volume only
     bool volumeFrame_ = false;               // the last frame walked volumes
 };
