@@ -16,6 +16,11 @@
 #   --bundle DIR  made by scripts/gpu_pack.sh (default .gpu)
 #   --tar FILE    pack OUT into FILE (.tgz) at the end
 #   --quick       small sizes and short limits, to try the script here on llvmpipe
+#   --skip-group2 leave out step 2 (its suspects were all ruled out on the H200, docs/gpu-h200.md)
+#   --repeat      run the repeated-render diagnostic (tests/diagnostic_gl_test.cpp) beside the
+#                 shards of step 1, batched and with STRATA_DEBUG_NO_BATCH=1 (a draw per object)
+#   --layers LIST the layer counts of step 3 (default 16,32)
+#   --settings S  step 3's settings, ';'-separated (default: both precisions, skipping on and off)
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/scripts/gpu_common.sh"
@@ -23,12 +28,20 @@ bundle=$root/.gpu
 out=gpu-diag
 tarball=""
 quick=0
+skip_group2=0
+repeat=0
+peel_layers=16,32
+peel_settings="precision=32 skip_peeled=1;precision=32 skip_peeled=0;precision=16 skip_peeled=1;precision=16 skip_peeled=0"
 while [[ $# -gt 0 ]]; do
     case $1 in
         --bundle) bundle=$2; shift 2 ;;
         --tar) tarball=$2; shift 2 ;;
         --quick) quick=1; shift ;;
-        -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+        --skip-group2) skip_group2=1; shift ;;
+        --repeat) repeat=1; shift ;;
+        --layers) peel_layers=$2; shift 2 ;;
+        --settings) peel_settings=$2; shift 2 ;;
+        -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
@@ -81,7 +94,7 @@ shards=(
     '*exact_techniques*,*zoom_gl*,*frame_size*,*gpu_interface*,*shader_program*,*screendoor*'
     '*coplanar_buffers*,*coplanar_peeling*,*coplanarity_gl*,*volume_gl*,*deflection*,*error_map*'
     '*/material_gl*,*material_pbr*,*material_texture*,*transmission*,*gltf_sample*,*precision*,*approximate*'
-    '*lod_*,*/buffers_gl*,*abuffer_gl*,*/peeling_gl*,*bench_gl*,*frustum*,*diagnostic*'
+    '*lod_*,*/buffers_gl*,*abuffer_gl*,*/peeling_gl*,*bench_gl*,*frustum*,*diagnostic*,*instanced*'
 )
 missing=$(cd "$root/tests" && for f in *_gl_test.cpp; do
     hit=0
@@ -100,14 +113,30 @@ for i in "${!shards[@]}"; do
         >"$out/tests-shard$i.txt" 2>&1
      echo $? >"$out/tests-shard$i.rc") &
 done
+if ((repeat)); then
+    for r in batched no-batch; do
+        (env_args=()
+         [[ $r == no-batch ]] && env_args=(STRATA_DEBUG_NO_BATCH=1)
+         env "${env_args[@]}" XDG_CACHE_HOME=/tmp/gpu-diag-xdg-$r STRATA_TEST_DUMP=$out/images/repeat-$r \
+             timeout --kill-after=10 "$shard_limit" "$tests" --no-skip -tc='diagnostic*' >"$out/repeat-$r.txt" 2>&1
+         echo $? >"$out/repeat-$r.rc") &
+    done
+fi
 wait
 for i in "${!shards[@]}"; do
     summary+=("- shard $i (\`${shards[$i]}\`): $(tally "$out/tests-shard$i.txt" "$(cat "$out/tests-shard$i.rc")")")
     summary+=("  - failed checks per test case: $(failing "$out/tests-shard$i.txt")")
 done
+if ((repeat)); then
+    for r in batched no-batch; do
+        summary+=("- repeated-render diagnostic, $r: $(tally "$out/repeat-$r.txt" "$(cat "$out/repeat-$r.rc")");" \
+            "  $(grep -c 'differs in [1-9]\|opaque colour in [1-9]\|opaque depth in [1-9]' "$out/repeat-$r.txt") settings with a differing render")
+    done
+fi
 summary+=("- wall $((SECONDS - start)) s" "")
 readme
 
+if ((!skip_group2)); then
 # 2. Group 2 under each suspect removed, side by side.
 summary+=("## 2. One object missing in one render of many: the suspects removed one at a time" "")
 group2='reversing*,abuffer?s compute*,skipping*,*MASK*,*COLOR_0*,*emissive texture*,*TEXCOORD_1*,*transmission 0*'
@@ -131,36 +160,41 @@ for c in "${configs[@]}"; do
 done
 summary+=("- wall $((SECONDS - start)) s" "")
 readme
+fi
 
 # 3. The peeling techniques against the probe, one process at a time (timings).
 summary+=("## 3. Peeling at $size: object skipping and precision against the naive probe" "")
-summary+=("| layers | settings | floor | f2b | f2b2 | dual | probe F2B (wall) |" "|---:|---|---:|---:|---:|---:|---:|")
+summary+=("| layers | settings | floor | f2b | f2b2 | dual | blend-sorted | abuffer | probe F2B (wall) | probe lists (wall) |"
+          "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|")
 readme
 w=${size%x*}
 h=${size#*x}
-for layers in 16 32; do
+IFS=, read -r -a layer_list <<<"$peel_layers"
+IFS=';' read -r -a setting_list <<<"$peel_settings"
+for layers in "${layer_list[@]}"; do
     probe_ms=-
+    probe_ll=-
     if [[ -x $bundle/oitprobe ]]; then
         timeout 60 "$bundle/oitprobe" "$w" "$h" "$layers" 0 0 10 >"$out/probe-$layers.txt" 2>&1
         probe_ms=$(awk '/^F2B peel:/ {print $3}' "$out/probe-$layers.txt")
+        probe_ll=$(awk '/^PPLL:/ {print $2}' "$out/probe-$layers.txt")
     fi
-    for setting in "precision=32 skip_peeled=1" "precision=32 skip_peeled=0" \
-                   "precision=16 skip_peeled=1" "precision=16 skip_peeled=0"; do
+    for setting in "${setting_list[@]}"; do
         name="layers-$layers-${setting// /-}"
         set_args=()
         for s in $setting; do set_args+=(--set "$s"); done
         timeout --kill-after=10 90 "$strata" bench "builtin:layers:$layers" --lod geometry --size "$size" \
-            --modes floor,f2b,f2b2,dual "${set_args[@]}" --json "$out/$name.json" >"$out/$name.txt" 2>&1
+            --modes floor,f2b,f2b2,dual,blend-sorted,abuffer "${set_args[@]}" --json "$out/$name.json" >"$out/$name.txt" 2>&1
         row=$(python3 - "$out/$name.json" <<'EOF'
 import json, sys
 try:
     modes = {m["id"]: m for m in json.load(open(sys.argv[1]))["modes"]}
-    print(" | ".join("%.2f" % modes[k]["ms_median"] if k in modes else "-" for k in ("floor", "f2b", "f2b2", "dual")))
+    print(" | ".join("%.2f" % modes[k]["ms_median"] if k in modes else "-" for k in ("floor", "f2b", "f2b2", "dual", "blend-sorted", "abuffer")))
 except Exception as e:
     print("failed: %s" % e)
 EOF
 )
-        summary+=("| $layers | $setting | $row | $probe_ms |")
+        summary+=("| $layers | $setting | $row | $probe_ms | $probe_ll |")
         readme
     done
 done
@@ -168,12 +202,15 @@ summary+=("")
 
 # 4. LOD: does --lod auto choose right on this device.
 summary+=("## 4. $orchard at $size, blend-sorted" "")
-for lod in geometry auto; do
+# auto twice: the first run calibrates the cost model and bakes, the second finds both kept.
+export XDG_CACHE_HOME=/tmp/gpu-diag-xdg-orchard
+for run in geometry auto auto-again; do
+    lod=${run%-again}
     timeout --kill-after=10 120 "$strata" bench "$orchard" --lod "$lod" --size "$size" --modes blend-sorted \
-        --json "$out/orchard-$lod.json" >"$out/orchard-$lod.txt" 2>&1
-    summary+=("- $lod: $(python3 -c "
+        --json "$out/orchard-$run.json" >"$out/orchard-$run.txt" 2>&1
+    summary+=("- $run: $(python3 -c "
 import json, sys
-d = json.load(open('$out/orchard-$lod.json')); m = d['modes'][0]
+d = json.load(open('$out/orchard-$run.json')); m = d['modes'][0]
 print('frame %.2f ms GPU, CPU %.2f ms, %s objects as impostors, PSNR %s; model %s' % (m['frame_ms_median'],
       m['cpu_ms_median'], m['impostor_objects'], m['psnr'], d['lod'].get('model')))
 " 2>&1 | tail -1)")

@@ -73,11 +73,14 @@ else:
     print(f'bench_lod.sh --scale: {CAD_MODEL} is absent (Debian package assimp-testmodels): the CAD field is skipped',
           file=sys.stderr)
 
+# The impostor caches are scratch (tens of MB of baked layers): kept out of the output folder,
+# which is meant to be committed, and removed at exit.
+cache_root = tempfile.mkdtemp(prefix='strata-scale-cache-')
+atexit.register(shutil.rmtree, cache_root, ignore_errors=True)
 rows = []
 for scene, name in scenes:
     print(f'bench_lod.sh --scale: {name}', file=sys.stderr)
-    cache = os.path.join(out, f'{name}-cache')
-    shutil.rmtree(cache, ignore_errors=True)
+    cache = os.path.join(cache_root, f'{name}-cache')
     image = os.path.join(out, f'{name}.png')
     one_rss = None
     if name.startswith('cad'):
