@@ -1,6 +1,7 @@
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
+#include "gl/program_pool.hpp"
 #include "gl/shader_program.hpp"
 
 #include <cstdio>
@@ -21,8 +22,10 @@ struct ProgramStatsListener : doctest::IReporter {
     void test_case_end(const doctest::CurrentTestCaseStats&) override {
         if (!std::getenv("STRATA_GL_STATS")) return;
         const auto s = strata::gl::programBuildStats();
-        std::printf("[strata] GL programs so far: %d compiled in %.2f s, %d loaded from binaries, %d binaries refused\n",
-                    s.compiled, s.compileSeconds, s.loaded, s.rejected);
+        const auto pool = strata::gl::programPoolStats();
+        std::printf("[strata] GL programs so far: %d compiled in %.2f s, %d loaded from binaries, %d binaries refused, "
+                    "%zu recycled, %zu retired now\n",
+                    s.compiled, s.compileSeconds, s.loaded, s.rejected, pool.recycled, pool.retired);
         std::fflush(stdout);
     }
     void test_case_exception(const doctest::TestCaseException&) override {}

@@ -6,6 +6,7 @@
 #include "render/zoom.hpp"
 
 #include "common/bindings.h"
+#include "gl/debug.hpp"
 #include "oit/draw_transparent.hpp"
 
 #include <algorithm>
@@ -21,6 +22,13 @@ double threadCpuMs() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+// STRATA_DEBUG_UNBIND_AFTER_FRAME=1: no program or vertex array stays bound after a frame (so a
+// renderer or technique deleted after it never deletes a bound one): a GPU diagnostic.
+bool unbindAfterFrame() {
+    static const bool on = gl::debugSwitch("STRATA_DEBUG_UNBIND_AFTER_FRAME");
+    return on;
 }
 
 }  // namespace
@@ -158,6 +166,10 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     result.zoom = options.zoom;
     result.renderSize = size;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (unbindAfterFrame()) {
+        glUseProgram(0);
+        glBindVertexArray(0);
+    }
     if (timer) result.passTimes = timer_.resolve();
     glFinish();
     for (const auto& p : result.passTimes) {

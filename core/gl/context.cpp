@@ -1,4 +1,5 @@
 #include "gl/context.hpp"
+#include "gl/program_pool.hpp"
 
 #include "gl/debug.hpp"
 
@@ -76,6 +77,7 @@ HeadlessContext::HeadlessContext() {
 HeadlessContext::~HeadlessContext() {
     auto display = static_cast<EGLDisplay>(display_);
     if (!display) return;
+    releaseProgramPool();  // its programs die with the context; a next context starts afresh
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_) eglDestroyContext(display, static_cast<EGLContext>(context_));
     eglTerminate(display);

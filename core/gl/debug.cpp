@@ -1,5 +1,6 @@
 #include "gl/debug.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 
 #include <epoxy/gl.h>
@@ -21,8 +22,20 @@ void record(std::string message) {
     if (g_pending.size() < 64) g_pending.push_back(std::move(message));
 }
 
+// STRATA_DEBUG_PRINT_GL_MESSAGES=1: every message the driver sends (performance notes, shader
+// recompiles, texture state warnings) goes to stderr, the first 400, for a GPU diagnostic run.
+void printMessage(GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar* message) {
+    static const bool on = debugSwitch("STRATA_DEBUG_PRINT_GL_MESSAGES");
+    static int printed = 0;
+    if (!on || printed >= 400) return;
+    ++printed;
+    std::fprintf(stderr, "[strata debug] GL message type 0x%x id %u severity 0x%x: %.*s\n", type, id, severity,
+                 int(length > 0 ? length : 0), message);
+}
+
 void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                const GLchar* message, const void*) {
+    printMessage(type, id, severity, length, message);
     // Only errors and undefined behaviour count; performance notes from the driver do not.
     bool isError = type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR;
     if (!isError || severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;

@@ -44,9 +44,13 @@ struct FramebufferTraits {
     static GLuint create() { GLuint n = 0; glCreateFramebuffers(1, &n); return n; }
     static void destroy(GLuint n) { glDeleteFramebuffers(1, &n); }
 };
+// Lets go of a program: one gl::buildProgram built is kept for the next build of the same text
+// (gl/program_pool.hpp: why no program name is reused), any other is deleted; STRATA_PROGRAM_POOL=0
+// deletes every one (gl/shader_program.cpp).
+void deleteProgram(GLuint name);
 struct ProgramTraits {
     static GLuint create() { return glCreateProgram(); }
-    static void destroy(GLuint n) { glDeleteProgram(n); }
+    static void destroy(GLuint n) { deleteProgram(n); }
 };
 struct ShaderTraits {
     static void destroy(GLuint n) { glDeleteShader(n); }

@@ -1,6 +1,7 @@
 #include "gl/shader_program.hpp"
 
 #include "gl/debug.hpp"
+#include "gl/program_pool.hpp"
 
 #include <chrono>
 #include <cstdlib>
@@ -153,6 +154,16 @@ bool programCacheEnabled() {
     return enabled;
 }
 
+// STRATA_PROGRAM_POOL=0: programs are deleted when let go, their names free for reuse (the
+// behaviour gl/program_pool.hpp works around).
+bool programPoolEnabled() {
+    static const bool enabled = [] {
+        const char* env = std::getenv("STRATA_PROGRAM_POOL");
+        return !(env && std::string(env) == "0");
+    }();
+    return enabled;
+}
+
 // The program from a cached binary, or an empty handle where there is none or the driver
 // refuses it (a driver may reject its own binary, e.g. after an update: then compile).
 Program loadCachedProgram(const std::string& key) {
@@ -242,7 +253,14 @@ Program buildProgramUnsynchronized(const std::vector<std::string>& stageFiles, c
                                                  type == GL_FRAGMENT_SHADER ? fragmentWrap : StageWrap{})});
         key += std::to_string(type) + '\n' + stages.back().source.text + '\0';
     }
-    if (Program cached = loadCachedProgram(key)) return cached;
+    // A retired program of the same text first (gl/program_pool.hpp: why names are not reused).
+    if (programPoolEnabled()) {
+        if (GLuint recycled = takeRetiredProgram(key)) return Program(recycled);
+    }
+    if (Program cached = loadCachedProgram(key)) {
+        if (programPoolEnabled()) registerProgram(cached.id(), key);
+        return cached;
+    }
 
     Program program = Program::create();
     std::vector<Shader> shaders;
@@ -286,9 +304,15 @@ Program buildProgramUnsynchronized(const std::vector<std::string>& stageFiles, c
         cache.stats.compileSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     }
     storeProgramBinary(key, program.id());
+    if (programPoolEnabled()) registerProgram(program.id(), key);
     return program;
 }
 
 }  // namespace
+
+void deleteProgram(GLuint name) {
+    if (programPoolEnabled()) retireProgram(name);
+    else glDeleteProgram(name);
+}
 
 }  // namespace strata::gl

@@ -139,9 +139,10 @@ std::uint64_t FragmentLists::store(const FrameContext& frame, const Tile& tile, 
     run.objectDraws += drawTransparent(frame, program, frame.transparentOrder);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     // TEXTURE_UPDATE: the heads the store's image atomics wrote are cleared by glClearTexImage
-    // before a regrow's or the next tile's store.
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                    GL_ATOMIC_COUNTER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    // before a regrow's or the next tile's store. TEXTURE_FETCH: the resolves read the nodes the
+    // store wrote as a storage buffer through a buffer texture (oit/node_texels.hpp).
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_ATOMIC_COUNTER_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     ++run.passes;
     return gl::readUint(counter_);
 }

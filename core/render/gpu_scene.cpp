@@ -427,6 +427,11 @@ const SceneProgram& GpuScene::prepareVariant(const SceneProgram& p, int objectIn
         checkUniform(drawing.id(), drawing.alphaCutoff, &cutoff, 1, "uAlphaCutoff", objectIndex);
         checkUniform(drawing.id(), drawing.metallic, &m.metallic, 1, "uMetallic", objectIndex);
         checkUniform(drawing.id(), drawing.roughness, &m.roughness, 1, "uRoughness", objectIndex);
+        checkUniform(drawing.id(), drawing.emissive, glm::value_ptr(m.emissive), 3, "uEmissive", objectIndex);
+        checkUniform(drawing.id(), drawing.tau, glm::value_ptr(m.tau), 3, "uTau", objectIndex);
+        checkUniform(drawing.id(), drawing.albedo, glm::value_ptr(m.albedo), 3, "uAlbedo", objectIndex);
+        const glm::vec3 toLight = glm::normalize(scene_.lightDirection);
+        checkUniform(drawing.id(), drawing.lightDir, glm::value_ptr(toLight), 3, "uLightDir", objectIndex);
     }
     bindMaterialTextures(objectIndex);
     if (&drawing != &p) glUseProgram(drawing.id());

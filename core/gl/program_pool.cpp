@@ -1,0 +1,216 @@
+#include "gl/program_pool.hpp"
+
+#include <array>
+#include <cstring>
+#include <mutex>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace strata::gl {
+namespace {
+
+// One uniform location's value right after the link, to be set again on a recycled program.
+struct UniformValue {
+    GLint location = -1;
+    GLenum type = 0;
+    std::array<std::uint32_t, 32> bits{};  // up to a dmat4: 16 doubles
+};
+
+struct Registered {
+    const std::string* key = nullptr;  // interned: a key is a whole program's text, tens of kB
+    std::vector<UniformValue> initial;
+};
+
+struct Pool {
+    std::mutex mutex;
+    std::unordered_set<std::string> keys;                              // one copy of each text
+    std::unordered_map<GLuint, Registered> registered;                 // every live or retired program
+    std::unordered_multimap<const std::string*, GLuint> retired;       // a program nobody owns, by key
+    std::size_t recycled = 0;
+};
+
+// Never destroyed: programs held by static objects are let go after main() returns, when a
+// function-local static pool could already be gone.
+Pool& pool() {
+    static Pool* p = new Pool;
+    return *p;
+}
+
+enum class Kind { Float, Int, Uint, Double, None };
+
+// How a uniform of `type` is read and set: its scalar kind, and its columns and rows (1 for a
+// vector's columns).
+struct Shape {
+    Kind kind = Kind::None;
+    int columns = 1, rows = 1;
+};
+
+Shape shapeOf(GLenum type) {
+    switch (type) {
+        case GL_FLOAT: return {Kind::Float, 1, 1};
+        case GL_FLOAT_VEC2: return {Kind::Float, 1, 2};
+        case GL_FLOAT_VEC3: return {Kind::Float, 1, 3};
+        case GL_FLOAT_VEC4: return {Kind::Float, 1, 4};
+        case GL_FLOAT_MAT2: return {Kind::Float, 2, 2};
+        case GL_FLOAT_MAT3: return {Kind::Float, 3, 3};
+        case GL_FLOAT_MAT4: return {Kind::Float, 4, 4};
+        case GL_FLOAT_MAT2x3: return {Kind::Float, 2, 3};
+        case GL_FLOAT_MAT2x4: return {Kind::Float, 2, 4};
+        case GL_FLOAT_MAT3x2: return {Kind::Float, 3, 2};
+        case GL_FLOAT_MAT3x4: return {Kind::Float, 3, 4};
+        case GL_FLOAT_MAT4x2: return {Kind::Float, 4, 2};
+        case GL_FLOAT_MAT4x3: return {Kind::Float, 4, 3};
+        case GL_DOUBLE: return {Kind::Double, 1, 1};
+        case GL_DOUBLE_VEC2: return {Kind::Double, 1, 2};
+        case GL_DOUBLE_VEC3: return {Kind::Double, 1, 3};
+        case GL_DOUBLE_VEC4: return {Kind::Double, 1, 4};
+        case GL_INT: case GL_BOOL: return {Kind::Int, 1, 1};
+        case GL_INT_VEC2: case GL_BOOL_VEC2: return {Kind::Int, 1, 2};
+        case GL_INT_VEC3: case GL_BOOL_VEC3: return {Kind::Int, 1, 3};
+        case GL_INT_VEC4: case GL_BOOL_VEC4: return {Kind::Int, 1, 4};
+        case GL_UNSIGNED_INT: return {Kind::Uint, 1, 1};
+        case GL_UNSIGNED_INT_VEC2: return {Kind::Uint, 1, 2};
+        case GL_UNSIGNED_INT_VEC3: return {Kind::Uint, 1, 3};
+        case GL_UNSIGNED_INT_VEC4: return {Kind::Uint, 1, 4};
+        case GL_UNSIGNED_INT_ATOMIC_COUNTER: return {};  // not a settable value
+        default: return {Kind::Int, 1, 1};  // samplers and images: their unit
+    }
+}
+
+std::vector<UniformValue> readUniforms(GLuint program) {
+    std::vector<UniformValue> values;
+    GLint count = 0, maxName = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(program, GL_ACTIVE_UNIFORM_MAX_LENGTH, &maxName);
+    std::string name(std::size_t(std::max(maxName, 1)), '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLint size = 0;
+        GLenum type = 0;
+        GLsizei length = 0;
+        glGetActiveUniform(program, GLuint(i), GLsizei(name.size()), &length, &size, &type, name.data());
+        const Shape shape = shapeOf(type);
+        if (shape.kind == Kind::None) continue;
+        std::string base(name.data(), std::size_t(length));
+        if (base.size() > 3 && base.compare(base.size() - 3, 3, "[0]") == 0) base.resize(base.size() - 3);
+        for (GLint e = 0; e < size; ++e) {
+            const std::string element = size > 1 ? base + "[" + std::to_string(e) + "]" : base;
+            UniformValue v;
+            v.location = glGetUniformLocation(program, element.c_str());
+            if (v.location < 0) continue;  // a member of a uniform block
+            v.type = type;
+            switch (shape.kind) {
+                case Kind::Float: glGetUniformfv(program, v.location, reinterpret_cast<GLfloat*>(v.bits.data())); break;
+                case Kind::Int: glGetUniformiv(program, v.location, reinterpret_cast<GLint*>(v.bits.data())); break;
+                case Kind::Uint: glGetUniformuiv(program, v.location, v.bits.data()); break;
+                case Kind::Double: glGetUniformdv(program, v.location, reinterpret_cast<GLdouble*>(v.bits.data())); break;
+                case Kind::None: break;
+            }
+            values.push_back(v);
+        }
+    }
+    return values;
+}
+
+void restoreUniform(GLuint program, const UniformValue& v) {
+    const Shape s = shapeOf(v.type);
+    const auto* f = reinterpret_cast<const GLfloat*>(v.bits.data());
+    const auto* i = reinterpret_cast<const GLint*>(v.bits.data());
+    const auto* d = reinterpret_cast<const GLdouble*>(v.bits.data());
+    const GLuint* u = v.bits.data();
+    const GLint at = v.location;
+    if (s.kind == Kind::Float && s.columns > 1) {
+        switch (v.type) {
+            case GL_FLOAT_MAT2: glProgramUniformMatrix2fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT3: glProgramUniformMatrix3fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT4: glProgramUniformMatrix4fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT2x3: glProgramUniformMatrix2x3fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT2x4: glProgramUniformMatrix2x4fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT3x2: glProgramUniformMatrix3x2fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT3x4: glProgramUniformMatrix3x4fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT4x2: glProgramUniformMatrix4x2fv(program, at, 1, GL_FALSE, f); break;
+            case GL_FLOAT_MAT4x3: glProgramUniformMatrix4x3fv(program, at, 1, GL_FALSE, f); break;
+            default: break;
+        }
+        return;
+    }
+    switch (s.kind) {
+        case Kind::Float:
+            if (s.rows == 1) glProgramUniform1fv(program, at, 1, f);
+            else if (s.rows == 2) glProgramUniform2fv(program, at, 1, f);
+            else if (s.rows == 3) glProgramUniform3fv(program, at, 1, f);
+            else glProgramUniform4fv(program, at, 1, f);
+            break;
+        case Kind::Int:
+            if (s.rows == 1) glProgramUniform1iv(program, at, 1, i);
+            else if (s.rows == 2) glProgramUniform2iv(program, at, 1, i);
+            else if (s.rows == 3) glProgramUniform3iv(program, at, 1, i);
+            else glProgramUniform4iv(program, at, 1, i);
+            break;
+        case Kind::Uint:
+            if (s.rows == 1) glProgramUniform1uiv(program, at, 1, u);
+            else if (s.rows == 2) glProgramUniform2uiv(program, at, 1, u);
+            else if (s.rows == 3) glProgramUniform3uiv(program, at, 1, u);
+            else glProgramUniform4uiv(program, at, 1, u);
+            break;
+        case Kind::Double:
+            if (s.rows == 1) glProgramUniform1dv(program, at, 1, d);
+            else if (s.rows == 2) glProgramUniform2dv(program, at, 1, d);
+            else if (s.rows == 3) glProgramUniform3dv(program, at, 1, d);
+            else glProgramUniform4dv(program, at, 1, d);
+            break;
+        case Kind::None: break;
+    }
+}
+
+}  // namespace
+
+void registerProgram(GLuint program, const std::string& key) {
+    std::vector<UniformValue> initial = readUniforms(program);
+    Pool& p = pool();
+    std::lock_guard lock(p.mutex);
+    const std::string* interned = &*p.keys.insert(key).first;
+    p.registered[program] = Registered{interned, std::move(initial)};
+}
+
+GLuint takeRetiredProgram(const std::string& key) {
+    Pool& p = pool();
+    std::lock_guard lock(p.mutex);
+    auto interned = p.keys.find(key);
+    if (interned == p.keys.end()) return 0;
+    auto it = p.retired.find(&*interned);
+    if (it == p.retired.end()) return 0;
+    const GLuint program = it->second;
+    p.retired.erase(it);
+    for (const UniformValue& v : p.registered.at(program).initial) restoreUniform(program, v);
+    ++p.recycled;
+    return program;
+}
+
+void retireProgram(GLuint program) {
+    Pool& p = pool();
+    std::lock_guard lock(p.mutex);
+    auto it = p.registered.find(program);
+    if (it == p.registered.end()) {
+        glDeleteProgram(program);
+        return;
+    }
+    p.retired.emplace(it->second.key, program);
+}
+
+ProgramPoolStats programPoolStats() {
+    Pool& p = pool();
+    std::lock_guard lock(p.mutex);
+    return {p.retired.size(), p.recycled};
+}
+
+void releaseProgramPool() {
+    Pool& p = pool();
+    std::lock_guard lock(p.mutex);
+    for (const auto& [key, program] : p.retired) glDeleteProgram(program);
+    p.retired.clear();
+    p.registered.clear();
+    p.keys.clear();
+}
+
+}  // namespace strata::gl
