@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # A lent GPU machine's diagnostic run, sized for one call of a 15-minute lease (docs/gpu-h100.md):
 #  1. the whole GL suite in four shards run side by side (each its own process: NVIDIA compiles
-#     programs on the CPU, and one process did not finish the suite in 220 s on an H100);
-#  2. the tests that lost an object in one render of many (docs/gpu-h100.md, group 2), repeated
-#     under driver and build settings that each remove one suspect: NVIDIA's threaded dispatch
-#     (__GL_THREADED_OPTIMIZATIONS=0), an asynchronous link (STRATA_DEBUG_FINISH_BUILDS=1) and the
-#     program binary cache (STRATA_PROGRAM_CACHE=0);
-#  3. f2b, f2b2 and dual at 1280x720 with object skipping on and off and both precisions, the
-#     naive probe beside them (issue 25: why f2b is slower than the probe on a GPU);
-#  4. builtin:orchard:10000 with --lod geometry and auto (does the calibration choose right).
+#     programs on the CPU, and one process did not finish the suite in 220 s on an H100), and
+#     beside them the repeated-render diagnostic with the program pool and without, and the
+#     coplanarity tests at a wider default tie tolerance;
+#  2. (--group2) the tests that lost an object in one render of many (docs/gpu-h100.md, group 2),
+#     repeated under driver and build settings that each remove one suspect: NVIDIA's threaded
+#     dispatch (__GL_THREADED_OPTIMIZATIONS=0), an asynchronous link (STRATA_DEBUG_FINISH_BUILDS=1)
+#     and the program binary cache (STRATA_PROGRAM_CACHE=0);
+#  3. f2b, f2b2, dual, blend-sorted and abuffer at 1280x720 at both precisions, the naive probe
+#     beside them (issue 25);
+#  4. builtin:orchard:10000 with --lod geometry and auto, twice (does the calibration choose
+#     right; is the model kept).
 # Everything lands in OUT (default gpu-diag); the summary is OUT/README.md, rewritten after each
 # step so a run cut short keeps what it did.
 #
@@ -16,11 +19,15 @@
 #   --bundle DIR  made by scripts/gpu_pack.sh (default .gpu)
 #   --tar FILE    pack OUT into FILE (.tgz) at the end
 #   --quick       small sizes and short limits, to try the script here on llvmpipe
-#   --skip-group2 leave out step 2 (its suspects were all ruled out on the H200, docs/gpu-h200.md)
-#   --repeat      run the repeated-render diagnostic (tests/diagnostic_gl_test.cpp) beside the
-#                 shards of step 1, batched and with STRATA_DEBUG_NO_BATCH=1 (a draw per object)
-#   --layers LIST the layer counts of step 3 (default 16,32)
-#   --settings S  step 3's settings, ';'-separated (default: both precisions, skipping on and off)
+#   --group2      run step 2 too (its suspects were ruled out on the H200; the cause, reused
+#                 program names, was found in docs/gpu-h200-session3.md)
+#   --no-repeat   leave out the repeated-render diagnostic (tests/diagnostic_gl_test.cpp) that runs
+#                 beside the shards of step 1 with the program pool and without
+#                 (STRATA_PROGRAM_POOL=0): the A/B of the fix for group 2
+#   --ties ULPS   also run the coplanarity tests beside the shards with the default tie tolerance
+#                 at ULPS (STRATA_DEBUG_DEPTH_TIE_ULPS; group 1; default 1024, 0 leaves it out)
+#   --layers LIST the layer counts of step 3 (default 8,16,32)
+#   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, skipping on)
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/scripts/gpu_common.sh"
@@ -28,24 +35,29 @@ bundle=$root/.gpu
 out=gpu-diag
 tarball=""
 quick=0
-skip_group2=0
-repeat=0
-peel_layers=16,32
-peel_settings="precision=32 skip_peeled=1;precision=32 skip_peeled=0;precision=16 skip_peeled=1;precision=16 skip_peeled=0"
+skip_group2=1
+repeat=1
+ties=1024
+peel_layers=8,16,32
+peel_settings="precision=32 skip_peeled=1;precision=16 skip_peeled=1"
 while [[ $# -gt 0 ]]; do
     case $1 in
         --bundle) bundle=$2; shift 2 ;;
         --tar) tarball=$2; shift 2 ;;
         --quick) quick=1; shift ;;
+        --group2) skip_group2=0; shift ;;
         --skip-group2) skip_group2=1; shift ;;
+        --no-repeat) repeat=0; shift ;;
         --repeat) repeat=1; shift ;;
+        --ties) ties=$2; shift 2 ;;
         --layers) peel_layers=$2; shift 2 ;;
         --settings) peel_settings=$2; shift 2 ;;
-        -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
 done
+[[ $ties =~ ^[0-9]+$ ]] || { echo "gpu_diag.sh: --ties takes a whole number of ulps, not '$ties'" >&2; exit 2; }
 [[ -n $tarball && $tarball != /* ]] && tarball=$PWD/$tarball  # before the cd below
 [[ -x $bundle/strata && -x $bundle/strata_gl_tests ]] ||
     { echo "gpu_diag.sh: $bundle holds no strata or strata_gl_tests (make it with scripts/gpu_pack.sh)" >&2; exit 1; }
@@ -114,13 +126,18 @@ for i in "${!shards[@]}"; do
      echo $? >"$out/tests-shard$i.rc") &
 done
 if ((repeat)); then
-    for r in batched no-batch; do
+    for r in pool no-pool; do
         (env_args=()
-         [[ $r == no-batch ]] && env_args=(STRATA_DEBUG_NO_BATCH=1)
+         [[ $r == no-pool ]] && env_args=(STRATA_PROGRAM_POOL=0)
          env "${env_args[@]}" XDG_CACHE_HOME=/tmp/gpu-diag-xdg-$r STRATA_TEST_DUMP=$out/images/repeat-$r \
              timeout --kill-after=10 "$shard_limit" "$tests" --no-skip -tc='diagnostic*' >"$out/repeat-$r.txt" 2>&1
          echo $? >"$out/repeat-$r.rc") &
     done
+fi
+if ((ties > 0)); then
+    (STRATA_DEBUG_DEPTH_TIE_ULPS=$ties XDG_CACHE_HOME=/tmp/gpu-diag-xdg-ties STRATA_TEST_DUMP=$out/images/ties \
+         timeout --kill-after=10 "$shard_limit" "$tests" -sf='*coplanar*' --duration=true >"$out/ties-$ties.txt" 2>&1
+     echo $? >"$out/ties-$ties.rc") &
 fi
 wait
 for i in "${!shards[@]}"; do
@@ -128,10 +145,14 @@ for i in "${!shards[@]}"; do
     summary+=("  - failed checks per test case: $(failing "$out/tests-shard$i.txt")")
 done
 if ((repeat)); then
-    for r in batched no-batch; do
+    for r in pool no-pool; do
         summary+=("- repeated-render diagnostic, $r: $(tally "$out/repeat-$r.txt" "$(cat "$out/repeat-$r.rc")");" \
             "  $(grep -c 'differs in [1-9]\|opaque colour in [1-9]\|opaque depth in [1-9]' "$out/repeat-$r.txt") settings with a differing render")
     done
+fi
+if ((ties > 0)); then
+    summary+=("- the coplanarity tests at a default tie tolerance of $ties ulps: $(tally "$out/ties-$ties.txt" "$(cat "$out/ties-$ties.rc")")")
+    summary+=("  - failed checks per test case: $(failing "$out/ties-$ties.txt")")
 fi
 summary+=("- wall $((SECONDS - start)) s" "")
 readme

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include <epoxy/gl.h>
 
@@ -29,8 +30,9 @@ void printMessage(GLenum type, GLuint id, GLenum severity, GLsizei length, const
     static int printed = 0;
     if (!on || printed >= 400) return;
     ++printed;
+    const int shown = length > 0 ? int(length) : int(std::strlen(message));  // a length < 0: NUL-ended
     std::fprintf(stderr, "[strata debug] GL message type 0x%x id %u severity 0x%x: %.*s\n", type, id, severity,
-                 int(length > 0 ? length : 0), message);
+                 shown, message);
 }
 
 void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei length,

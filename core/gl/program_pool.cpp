@@ -1,6 +1,8 @@
 #include "gl/program_pool.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <mutex>
 #include <unordered_map>
@@ -20,6 +22,7 @@ struct UniformValue {
 struct Registered {
     const std::string* key = nullptr;  // interned: a key is a whole program's text, tens of kB
     std::vector<UniformValue> initial;
+    bool retired = false;
 };
 
 struct Pool {
@@ -27,6 +30,9 @@ struct Pool {
     std::unordered_set<std::string> keys;                              // one copy of each text
     std::unordered_map<GLuint, Registered> registered;                 // every live or retired program
     std::unordered_multimap<const std::string*, GLuint> retired;       // a program nobody owns, by key
+    // Programs never registered (a failed link, a refused binary, one made by glCreateShaderProgramv):
+    // not handed out again, but not deleted either, so their names are not reused.
+    std::vector<GLuint> graveyard;
     std::size_t recycled = 0;
 };
 
@@ -65,6 +71,15 @@ Shape shapeOf(GLenum type) {
         case GL_DOUBLE_VEC2: return {Kind::Double, 1, 2};
         case GL_DOUBLE_VEC3: return {Kind::Double, 1, 3};
         case GL_DOUBLE_VEC4: return {Kind::Double, 1, 4};
+        case GL_DOUBLE_MAT2: return {Kind::Double, 2, 2};
+        case GL_DOUBLE_MAT3: return {Kind::Double, 3, 3};
+        case GL_DOUBLE_MAT4: return {Kind::Double, 4, 4};
+        case GL_DOUBLE_MAT2x3: return {Kind::Double, 2, 3};
+        case GL_DOUBLE_MAT2x4: return {Kind::Double, 2, 4};
+        case GL_DOUBLE_MAT3x2: return {Kind::Double, 3, 2};
+        case GL_DOUBLE_MAT3x4: return {Kind::Double, 3, 4};
+        case GL_DOUBLE_MAT4x2: return {Kind::Double, 4, 2};
+        case GL_DOUBLE_MAT4x3: return {Kind::Double, 4, 3};
         case GL_INT: case GL_BOOL: return {Kind::Int, 1, 1};
         case GL_INT_VEC2: case GL_BOOL_VEC2: return {Kind::Int, 1, 2};
         case GL_INT_VEC3: case GL_BOOL_VEC3: return {Kind::Int, 1, 3};
@@ -74,7 +89,7 @@ Shape shapeOf(GLenum type) {
         case GL_UNSIGNED_INT_VEC3: return {Kind::Uint, 1, 3};
         case GL_UNSIGNED_INT_VEC4: return {Kind::Uint, 1, 4};
         case GL_UNSIGNED_INT_ATOMIC_COUNTER: return {};  // not a settable value
-        default: return {Kind::Int, 1, 1};  // samplers and images: their unit
+        default: return {Kind::Int, 1, 1};  // what core 4.5 has left: samplers and images, their unit
     }
 }
 
@@ -119,6 +134,21 @@ void restoreUniform(GLuint program, const UniformValue& v) {
     const auto* d = reinterpret_cast<const GLdouble*>(v.bits.data());
     const GLuint* u = v.bits.data();
     const GLint at = v.location;
+    if (s.kind == Kind::Double && s.columns > 1) {
+        switch (v.type) {
+            case GL_DOUBLE_MAT2: glProgramUniformMatrix2dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT3: glProgramUniformMatrix3dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT4: glProgramUniformMatrix4dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT2x3: glProgramUniformMatrix2x3dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT2x4: glProgramUniformMatrix2x4dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT3x2: glProgramUniformMatrix3x2dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT3x4: glProgramUniformMatrix3x4dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT4x2: glProgramUniformMatrix4x2dv(program, at, 1, GL_FALSE, d); break;
+            case GL_DOUBLE_MAT4x3: glProgramUniformMatrix4x3dv(program, at, 1, GL_FALSE, d); break;
+            default: break;
+        }
+        return;
+    }
     if (s.kind == Kind::Float && s.columns > 1) {
         switch (v.type) {
             case GL_FLOAT_MAT2: glProgramUniformMatrix2fv(program, at, 1, GL_FALSE, f); break;
@@ -182,7 +212,9 @@ GLuint takeRetiredProgram(const std::string& key) {
     if (it == p.retired.end()) return 0;
     const GLuint program = it->second;
     p.retired.erase(it);
-    for (const UniformValue& v : p.registered.at(program).initial) restoreUniform(program, v);
+    Registered& r = p.registered.at(program);
+    r.retired = false;
+    for (const UniformValue& v : r.initial) restoreUniform(program, v);
     ++p.recycled;
     return program;
 }
@@ -192,9 +224,11 @@ void retireProgram(GLuint program) {
     std::lock_guard lock(p.mutex);
     auto it = p.registered.find(program);
     if (it == p.registered.end()) {
-        glDeleteProgram(program);
+        p.graveyard.push_back(program);
         return;
     }
+    if (it->second.retired) return;  // let go twice: still one entry, so never two owners
+    it->second.retired = true;
     p.retired.emplace(it->second.key, program);
 }
 
@@ -208,7 +242,9 @@ void releaseProgramPool() {
     Pool& p = pool();
     std::lock_guard lock(p.mutex);
     for (const auto& [key, program] : p.retired) glDeleteProgram(program);
+    for (GLuint program : p.graveyard) glDeleteProgram(program);
     p.retired.clear();
+    p.graveyard.clear();
     p.registered.clear();
     p.keys.clear();
 }

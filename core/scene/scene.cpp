@@ -1,10 +1,23 @@
 #include "scene/scene.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include <stdexcept>
 
 namespace strata {
+
+double defaultDepthTieUlps() {
+    static const double ulps = [] {
+        const char* env = std::getenv("STRATA_DEBUG_DEPTH_TIE_ULPS");
+        if (!env || !*env) return 64.0;
+        char* end = nullptr;
+        const double v = std::strtod(env, &end);
+        return (end && *end == '\0' && std::isfinite(v) && v >= 0.0) ? v : 64.0;
+    }();
+    return ulps;
+}
 
 const char* to_string(AlphaMode mode) {
     switch (mode) {

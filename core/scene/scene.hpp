@@ -153,6 +153,11 @@ struct CameraPose {
     float fovYDegrees = 50.0f;
 };
 
+// 64 ulps; STRATA_DEBUG_DEPTH_TIE_ULPS=U makes it U for a GPU diagnostic run (NVIDIA separates
+// coplanar faces of different meshes by 256-1024 ulps at 48x36: docs/gpu-h100.md, group 1), so a
+// whole test suite can be run at another default.
+double defaultDepthTieUlps();
+
 struct Scene {
     std::string name;
     std::vector<Material> materials;  // index 0 always exists (the default material)
@@ -168,7 +173,7 @@ struct Scene {
     glm::vec3 background{0.08f, 0.08f, 0.1f};                               // linear RGB
     // Transparent surfaces whose eye depths differ by at most this many float ulps (relative)
     // are one layer, composited in object order: the tie rule of render/depth_order.hpp.
-    double depthTieUlps = 64.0;
+    double depthTieUlps = defaultDepthTieUlps();
 
     int addMaterial(Material m) { materials.push_back(std::move(m)); return int(materials.size()) - 1; }
     int addMesh(Mesh m) { meshes.push_back(std::move(m)); return int(meshes.size()) - 1; }
