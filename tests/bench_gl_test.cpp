@@ -106,6 +106,36 @@ TEST_CASE("bench reports coplanarity where surfaces coincide") {
     CHECK(first["blend-sorted"].second.rgba == first["abuffer"].first.rgba);
 }
 
+TEST_CASE("bench against a supersampled reference: the reference's own row shows what one sample a pixel loses") {
+    test::glContext();
+    auto run = [](const std::string& spec, int supersample) {
+        GpuScene scene(makeBuiltinScene(spec));
+        BenchOptions options;
+        options.sceneName = "builtin:" + spec;
+        options.modes = {"abuffer"};
+        options.size = {32, 24};
+        options.frames = 1;
+        options.warmupFrames = 0;
+        options.referenceSupersample = supersample;
+        const BenchReport report = runBench(scene, options);
+        REQUIRE(report.modes.size() == 1);
+        CHECK(report.referenceSupersample == supersample);
+        return report.modes[0];
+    };
+    // One sample a pixel: the reference against itself.
+    CHECK(run("cubes", 1).psnr == 100.0);
+    // Full-view quads have no edge inside the view: 2x2 samples of a pixel all see the same
+    // layers, so the averaged frame is the plain one.
+    const BenchMode flat = run("layers:4", 2);
+    CHECK(flat.psnr == 100.0);
+    CHECK(flat.maxAbsError < 1e-5);
+    // Cubes have edges in view: averaged, their pixels differ from one sample's.
+    const BenchMode edges = run("cubes", 2);
+    CHECK(edges.psnr < 60.0);
+    CHECK(edges.psnr > 15.0);
+    CHECK(edges.maxAbsError > 0.05);
+}
+
 TEST_CASE("bench rejects an unknown technique with the list of known ones") {
     test::glContext();
     GpuScene scene(makeLayersScene(1));

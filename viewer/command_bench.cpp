@@ -34,6 +34,7 @@ struct BenchArgs {
     ZoomArgs zoom;
     LodArgs lod;
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
+    int referenceSupersample = 1;
 };
 
 void run(const BenchArgs& a) {
@@ -54,6 +55,7 @@ void run(const BenchArgs& a) {
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
     options.zoom = a.zoom.fixedZoom();
     options.zoomFilter = a.zoom.filter();
+    options.referenceSupersample = a.referenceSupersample;
     options.budget = a.zoom.budget();
     if (options.budget) {
         options.zoomController = a.zoom.controllerKind();
@@ -69,6 +71,7 @@ void run(const BenchArgs& a) {
     if (a.depthTieUlps >= 0.0) scene.depthTieUlps = a.depthTieUlps;
     gl::HeadlessContext context;
     checkFrameSize(options.size);
+    if (options.referenceSupersample > 1) checkFrameSize(options.size * options.referenceSupersample);
     GpuScene gpu(std::move(scene));
     if (autoMode) {
         // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
@@ -169,6 +172,11 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
                     "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two
+    cmd->add_option("--reference-supersample", args->referenceSupersample,
+                    "draw the reference at N times the size each way and average it down: every row, the "
+                    "reference's own included, is then compared with an antialiased frame (1..4)")
+        ->check(CLI::Range(1, 4))
+        ->capture_default_str();
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

@@ -110,7 +110,12 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     // A zoomed technique is compared with the reference at zoom 1: the reference's own rows then
     // render like any other technique's, against a reference technique of their own.
     // So is a technique drawn with stand-ins (BenchOptions::lod): the reference draws geometry.
-    const bool zoomed = options.zoom > 1 || options.budget.has_value() || bool(options.lod);
+    // So is every technique against a supersampled reference.
+    if (options.referenceSupersample < 1 || options.referenceSupersample > 4)
+        throw std::invalid_argument("bench: the reference's supersampling must be 1 to 4");
+    const bool zoomed = options.zoom > 1 || options.budget.has_value() || bool(options.lod) ||
+                        options.referenceSupersample > 1;
+    report.referenceSupersample = options.referenceSupersample;
     report.lod = options.lodReport;
 
     std::vector<Camera> cameras = benchCameras(scene, options);
@@ -149,9 +154,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             if (!ref.technique) ref.technique = createConfiguredTechnique(referenceId, options.settings);
             FrameOptions untimed;
             untimed.timePasses = false;
-            referenceRenderer.render(scene, cameras[f], options.size, ref.technique.get(), untimed);
+            const int n = options.referenceSupersample;
+            referenceRenderer.render(scene, cameras[f], options.size * n, ref.technique.get(), untimed);
             gl::checkGl("bench reference frame");
-            ref.image = referenceRenderer.readOutput();
+            ref.image = n > 1 ? averageDown(referenceRenderer.readOutput(), n) : referenceRenderer.readOutput();
             ref.key = keyOf(f);
             if (options.referenceFrame && referenceId == "abuffer") options.referenceFrame(f, ref.image);
         }

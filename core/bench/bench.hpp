@@ -62,6 +62,12 @@ struct BenchOptions {
     // per-frame zoom and time.
     int zoom = 1;
     DeflectFilter zoomFilter = DeflectFilter::Nearest;
+    // The reference drawn at this many times the size each way and averaged down (1: one sample a
+    // pixel, as every technique draws). Above 1 every row, the reference technique's own included,
+    // is compared with that antialiased frame: the reference's row then shows what one sample a
+    // pixel loses on this scene, the floor under every other row's loss
+    // (scripts/aliasing_floor.sh, docs/results.md "the scene graph at scale").
+    int referenceSupersample = 1;
     std::optional<ZoomBudget> budget;
     ZoomControllerKind zoomController = ZoomControllerKind::Reactive;
     // Per-object level of detail (lod/, which sits above core): called before each technique
@@ -162,6 +168,7 @@ struct BenchReport {
     std::size_t meshes = 0, meshTriangles = 0, meshBytes = 0;
     int zoom = 1;
     std::string zoomFilter = "nearest";
+    int referenceSupersample = 1;
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
     std::string budgetLevers;          // "zoom", "lod" or "zoom,lod" under a budget

@@ -116,6 +116,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"mesh_bytes", r.meshBytes},
         {"zoom", r.zoom},
         {"zoom_filter", r.zoomFilter},
+        {"reference_supersample", r.referenceSupersample},
         {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
         {"zoom_controller", r.zoomController},
         {"budget_levers", r.budgetLevers},

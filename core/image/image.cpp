@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace strata {
 namespace fs = std::filesystem;
@@ -37,6 +38,22 @@ OIIO::ImageBuf toImageBuf(const Image& image) {
 }
 
 }  // namespace
+
+Image averageDown(const Image& image, int factor) {
+    if (factor < 1 || image.width % factor != 0 || image.height % factor != 0)
+        throw std::invalid_argument("averageDown: " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                    " does not divide by " + std::to_string(factor));
+    Image out(image.width / factor, image.height / factor);
+    const float weight = 1.0f / float(factor * factor);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            glm::vec4 sum(0.0f);
+            for (int j = 0; j < factor; ++j)
+                for (int i = 0; i < factor; ++i) sum += image.at(x * factor + i, y * factor + j);
+            out.set(x, y, sum * weight);
+        }
+    return out;
+}
 
 ImageDifference compareImages(const Image& a, const Image& b, float threshold) {
     if (a.width != b.width || a.height != b.height)

@@ -35,6 +35,10 @@ struct ImageDifference {
     std::size_t pixelsOver = 0; // pixels whose max channel difference exceeds the threshold
 };
 
+// The image shrunk `factor` times each way, each pixel the mean of its factor x factor block (a
+// supersampled frame's antialiased version). Throws unless both sides divide by the factor.
+Image averageDown(const Image& image, int factor);
+
 // Compares RGB (alpha ignored) through OpenImageIO. Throws if the sizes differ.
 ImageDifference compareImages(const Image& a, const Image& b, float threshold = 1.0f / 255.0f);
 
