@@ -4,6 +4,7 @@
 #include "gl_test_support.hpp"
 
 #include "reference/raycast.hpp"
+#include "render/depth_order.hpp"
 #include "scene/builtin_scenes.hpp"
 
 #include <doctest/doctest.h>
@@ -134,9 +135,11 @@ TEST_CASE("coincident surfaces and the same surfaces off by round-off render ali
 
 TEST_CASE("surfaces farther apart than the tie tolerance composite by depth, on the GPU as on the CPU") {
     test::glContext();
-    // Two full-view quads; object 0 is behind object 1 by a relative gap of 1e-4 (about 840
-    // ulps: two surfaces) or 2.4e-7 (2 ulps: one layer, object 0 first).
-    for (double gap : {1e-4, 2.4e-7}) {
+    // Two full-view quads; object 0 is behind object 1 by a relative gap of 8 tie tolerances
+    // (at the default 64 ulps 6.1e-5, about 510 ulps: two surfaces; also at a wider default,
+    // STRATA_DEBUG_DEPTH_TIE_ULPS) or 2.4e-7 (2 ulps: one layer, object 0 first).
+    const double tolerance = tieToleranceFromUlps(makeCoplanarScene(2, 0.5f).depthTieUlps);
+    for (double gap : {8.0 * tolerance, 2.4e-7}) {
         CAPTURE(gap);
         Scene s = makeCoplanarScene(2, 0.5f);
         s.nodes[std::size_t(s.roots[0])].local[3].z = float(-2.0 * (1.0 + gap));
@@ -148,7 +151,7 @@ TEST_CASE("surfaces farther apart than the tie tolerance composite by depth, on 
         glm::vec3 bg = scene.scene().background;
         glm::vec3 c0 = test::litFacing(scene.scene(), camera, {8, 8}, 4, 4, paletteColor(0));
         glm::vec3 c1 = test::litFacing(scene.scene(), camera, {8, 8}, 4, 4, paletteColor(1));
-        glm::vec3 front = gap > 1e-5 ? c1 : c0, back = gap > 1e-5 ? c0 : c1;
+        glm::vec3 front = gap > tolerance ? c1 : c0, back = gap > tolerance ? c0 : c1;
         glm::vec3 expected = 0.5f * front + 0.25f * back + 0.25f * bg;
         for (int ch = 0; ch < 3; ++ch) {
             CHECK(std::abs(gpu[ch] - expected[ch]) <= kTolerance);
