@@ -127,67 +127,58 @@ std::vector<UniformValue> readUniforms(GLuint program) {
     return values;
 }
 
+// glProgramUniform{1..4}{f,i,ui,d}v for a vector of `rows` components, and
+// glProgramUniformMatrix{C}x{R}{f,d}v for `columns` x `rows` (2..4 each): tables indexed by
+// the shape, so each type's setter follows from shapeOf alone.
+template <class Setter, class T>
+void setVector(const std::array<Setter, 4>& setters, int rows, GLuint program, GLint at, const T* values) {
+    setters[std::size_t(rows - 1)](program, at, 1, values);
+}
+template <class Setter, class T>
+void setMatrix(const std::array<std::array<Setter, 3>, 3>& setters, const Shape& s, GLuint program, GLint at,
+               const T* values) {
+    setters[std::size_t(s.columns - 2)][std::size_t(s.rows - 2)](program, at, 1, GL_FALSE, values);
+}
+
 void restoreUniform(GLuint program, const UniformValue& v) {
     const Shape s = shapeOf(v.type);
     const auto* f = reinterpret_cast<const GLfloat*>(v.bits.data());
-    const auto* i = reinterpret_cast<const GLint*>(v.bits.data());
     const auto* d = reinterpret_cast<const GLdouble*>(v.bits.data());
-    const GLuint* u = v.bits.data();
     const GLint at = v.location;
-    if (s.kind == Kind::Double && s.columns > 1) {
-        switch (v.type) {
-            case GL_DOUBLE_MAT2: glProgramUniformMatrix2dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT3: glProgramUniformMatrix3dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT4: glProgramUniformMatrix4dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT2x3: glProgramUniformMatrix2x3dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT2x4: glProgramUniformMatrix2x4dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT3x2: glProgramUniformMatrix3x2dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT3x4: glProgramUniformMatrix3x4dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT4x2: glProgramUniformMatrix4x2dv(program, at, 1, GL_FALSE, d); break;
-            case GL_DOUBLE_MAT4x3: glProgramUniformMatrix4x3dv(program, at, 1, GL_FALSE, d); break;
-            default: break;
-        }
-        return;
-    }
-    if (s.kind == Kind::Float && s.columns > 1) {
-        switch (v.type) {
-            case GL_FLOAT_MAT2: glProgramUniformMatrix2fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT3: glProgramUniformMatrix3fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT4: glProgramUniformMatrix4fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT2x3: glProgramUniformMatrix2x3fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT2x4: glProgramUniformMatrix2x4fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT3x2: glProgramUniformMatrix3x2fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT3x4: glProgramUniformMatrix3x4fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT4x2: glProgramUniformMatrix4x2fv(program, at, 1, GL_FALSE, f); break;
-            case GL_FLOAT_MAT4x3: glProgramUniformMatrix4x3fv(program, at, 1, GL_FALSE, f); break;
-            default: break;
-        }
-        return;
-    }
     switch (s.kind) {
         case Kind::Float:
-            if (s.rows == 1) glProgramUniform1fv(program, at, 1, f);
-            else if (s.rows == 2) glProgramUniform2fv(program, at, 1, f);
-            else if (s.rows == 3) glProgramUniform3fv(program, at, 1, f);
-            else glProgramUniform4fv(program, at, 1, f);
-            break;
-        case Kind::Int:
-            if (s.rows == 1) glProgramUniform1iv(program, at, 1, i);
-            else if (s.rows == 2) glProgramUniform2iv(program, at, 1, i);
-            else if (s.rows == 3) glProgramUniform3iv(program, at, 1, i);
-            else glProgramUniform4iv(program, at, 1, i);
-            break;
-        case Kind::Uint:
-            if (s.rows == 1) glProgramUniform1uiv(program, at, 1, u);
-            else if (s.rows == 2) glProgramUniform2uiv(program, at, 1, u);
-            else if (s.rows == 3) glProgramUniform3uiv(program, at, 1, u);
-            else glProgramUniform4uiv(program, at, 1, u);
+            if (s.columns > 1)
+                setMatrix<PFNGLPROGRAMUNIFORMMATRIX2FVPROC>(
+                    {{{glProgramUniformMatrix2fv, glProgramUniformMatrix2x3fv, glProgramUniformMatrix2x4fv},
+                      {glProgramUniformMatrix3x2fv, glProgramUniformMatrix3fv, glProgramUniformMatrix3x4fv},
+                      {glProgramUniformMatrix4x2fv, glProgramUniformMatrix4x3fv, glProgramUniformMatrix4fv}}},
+                    s, program, at, f);
+            else
+                setVector<PFNGLPROGRAMUNIFORM1FVPROC>(
+                    {glProgramUniform1fv, glProgramUniform2fv, glProgramUniform3fv, glProgramUniform4fv}, s.rows,
+                    program, at, f);
             break;
         case Kind::Double:
-            if (s.rows == 1) glProgramUniform1dv(program, at, 1, d);
-            else if (s.rows == 2) glProgramUniform2dv(program, at, 1, d);
-            else if (s.rows == 3) glProgramUniform3dv(program, at, 1, d);
-            else glProgramUniform4dv(program, at, 1, d);
+            if (s.columns > 1)
+                setMatrix<PFNGLPROGRAMUNIFORMMATRIX2DVPROC>(
+                    {{{glProgramUniformMatrix2dv, glProgramUniformMatrix2x3dv, glProgramUniformMatrix2x4dv},
+                      {glProgramUniformMatrix3x2dv, glProgramUniformMatrix3dv, glProgramUniformMatrix3x4dv},
+                      {glProgramUniformMatrix4x2dv, glProgramUniformMatrix4x3dv, glProgramUniformMatrix4dv}}},
+                    s, program, at, d);
+            else
+                setVector<PFNGLPROGRAMUNIFORM1DVPROC>(
+                    {glProgramUniform1dv, glProgramUniform2dv, glProgramUniform3dv, glProgramUniform4dv}, s.rows,
+                    program, at, d);
+            break;
+        case Kind::Int:
+            setVector<PFNGLPROGRAMUNIFORM1IVPROC>(
+                {glProgramUniform1iv, glProgramUniform2iv, glProgramUniform3iv, glProgramUniform4iv}, s.rows, program,
+                at, reinterpret_cast<const GLint*>(v.bits.data()));
+            break;
+        case Kind::Uint:
+            setVector<PFNGLPROGRAMUNIFORM1UIVPROC>(
+                {glProgramUniform1uiv, glProgramUniform2uiv, glProgramUniform3uiv, glProgramUniform4uiv}, s.rows,
+                program, at, v.bits.data());
             break;
         case Kind::None: break;
     }

@@ -146,21 +146,21 @@ ProgramCache& programCache() {
     return cache;
 }
 
+// Whether the environment variable `name` is not "0": the switches of what is on by default.
+bool notSwitchedOff(const char* name) {
+    const char* env = std::getenv(name);
+    return !(env && std::string(env) == "0");
+}
+
 bool programCacheEnabled() {
-    static const bool enabled = [] {
-        const char* env = std::getenv("STRATA_PROGRAM_CACHE");
-        return !(env && std::string(env) == "0");
-    }();
+    static const bool enabled = notSwitchedOff("STRATA_PROGRAM_CACHE");
     return enabled;
 }
 
 // STRATA_PROGRAM_POOL=0: programs are deleted when let go, their names free for reuse (the
 // behaviour gl/program_pool.hpp works around).
 bool programPoolEnabled() {
-    static const bool enabled = [] {
-        const char* env = std::getenv("STRATA_PROGRAM_POOL");
-        return !(env && std::string(env) == "0");
-    }();
+    static const bool enabled = notSwitchedOff("STRATA_PROGRAM_POOL");
     return enabled;
 }
 
