@@ -10,6 +10,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -42,7 +43,22 @@ Detected detect(const GpuScene& scene, const Camera& camera, glm::ivec2 size, Fr
 // The CPU side: each pixel's ray-cast fragments reduced by the same rule.
 struct CpuPixels {
     std::vector<int> largestLayer, fragments;
+    // Pixels where two consecutive ray-cast depths lie between a quarter of the tie tolerance
+    // and four times it. Where surfaces intersect, their gap passes through every value, so at
+    // any tolerance some pixel centres fall near the cut, and there a GPU's round-off (up to
+    // ~1024 ulps on NVIDIA) decides the side: those pixels cannot be held to the ray cast.
+    // Coincident surfaces (a gap of a few ulps) and distinct ones are never in this band.
+    std::vector<bool> nearTheCut;
 };
+
+bool gapNearTheCut(std::vector<float> depths, double tolerance) {
+    std::sort(depths.begin(), depths.end());
+    for (std::size_t i = 1; i < depths.size(); ++i) {
+        const double gap = (double(depths[i]) - double(depths[i - 1])) / double(depths[i]);
+        if (gap > 0.25 * tolerance && gap < 4.0 * tolerance) return true;
+    }
+    return false;
+}
 
 CpuPixels raycastLargestLayers(const GpuScene& scene, const Camera& camera, glm::ivec2 size) {
     RaycastReference reference(scene.scene(), scene.objects());
@@ -55,6 +71,7 @@ CpuPixels raycastLargestLayers(const GpuScene& scene, const Camera& camera, glm:
             for (const auto& f : p.fragments) depths.push_back(f.depth);
             out.largestLayer.push_back(largestDepthLayer(depths, tolerance));
             out.fragments.push_back(int(p.fragments.size()));
+            out.nearTheCut.push_back(gapNearTheCut(depths, tolerance));
         }
     return out;
 }
@@ -77,7 +94,7 @@ TEST_CASE("coplanarity detector equals the CPU ray cast on every builtin scene")
         const Detected gpu = detect(*f.gpu, f.camera, size);
         const CpuPixels cpu = raycastLargestLayers(*f.gpu, f.camera, size);
         REQUIRE(gpu.pixels.largestLayer.size() == std::size_t(pixels));
-        int coverage = 0, differ = 0, tied = 0;
+        int coverage = 0, differ = 0, tied = 0, nearCut = 0;
         CoplanarityStats fromPixels;
         for (int i = 0; i < pixels; ++i) {
             fromPixels.add(int(gpu.pixels.largestLayer[std::size_t(i)]), 0, int(gpu.pixels.fragments[std::size_t(i)]));
@@ -87,10 +104,15 @@ TEST_CASE("coplanarity detector equals the CPU ray cast on every builtin scene")
                 ++coverage;
                 continue;
             }
-            if (int(gpu.pixels.largestLayer[std::size_t(i)]) != cpu.largestLayer[std::size_t(i)]) ++differ;
             if (cpu.largestLayer[std::size_t(i)] >= 2) ++tied;
+            if (int(gpu.pixels.largestLayer[std::size_t(i)]) == cpu.largestLayer[std::size_t(i)]) continue;
+            if (cpu.nearTheCut[std::size_t(i)]) ++nearCut;
+            else ++differ;
         }
         CHECK(differ == 0);
+        // Disagreements where a gap is near the cut: intersection lines only, a few pixels.
+        CHECK(nearCut <= pixels / 100);
+        if (nearCut > 0) MESSAGE(spec << ": " << nearCut << " pixels near the cut disagree");
         if (differ > 0) {
             // How far apart the driver puts surfaces the ray cast finds coincident: the same
             // comparison at wider tie tolerances (a diagnostic for a GPU run; it prints only).
@@ -102,7 +124,8 @@ TEST_CASE("coplanarity detector equals the CPU ray cast on every builtin scene")
                 const CpuPixels cw = raycastLargestLayers(*g.gpu, g.camera, size);
                 int differWide = 0;
                 for (std::size_t i = 0; i < gw.pixels.largestLayer.size(); ++i)
-                    if (int(gw.pixels.fragments[i]) == cw.fragments[i] && int(gw.pixels.largestLayer[i]) != cw.largestLayer[i])
+                    if (int(gw.pixels.fragments[i]) == cw.fragments[i] && !cw.nearTheCut[i] &&
+                        int(gw.pixels.largestLayer[i]) != cw.largestLayer[i])
                         ++differWide;
                 MESSAGE(spec << ": at " << ulps << " ulps " << differWide << " pixels differ (" << differ << " at "
                              << f.gpu->scene().depthTieUlps << ")");

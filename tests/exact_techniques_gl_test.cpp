@@ -136,7 +136,7 @@ TEST_CASE("coincident surfaces and the same surfaces off by round-off render ali
 TEST_CASE("surfaces farther apart than the tie tolerance composite by depth, on the GPU as on the CPU") {
     test::glContext();
     // Two full-view quads; object 0 is behind object 1 by a relative gap of 8 tie tolerances
-    // (at the default 64 ulps 6.1e-5, about 510 ulps: two surfaces; also at a wider default,
+    // (at the default 1024 ulps 9.8e-4: two surfaces; also at another default,
     // STRATA_DEBUG_DEPTH_TIE_ULPS) or 2.4e-7 (2 ulps: one layer, object 0 first).
     const double tolerance = tieToleranceFromUlps(makeCoplanarScene(2, 0.5f).depthTieUlps);
     for (double gap : {8.0 * tolerance, 2.4e-7}) {

@@ -60,8 +60,13 @@ TEST_CASE("exact techniques match the reference at both precisions on layers sce
         std::vector<std::string> settings;
         std::vector<int> layers;
     };
-    // The bounded buffers keep n - 1 fragments and blend the farthest into the tail, which is
-    // exact for one fragment: the tail's precision is all that differs.
+    // kbuffer keeps the n - 1 nearest and blends the farthest into the tail, which is exact for
+    // one fragment: the tail's precision is all that differs. fab and ll keep what arrives
+    // first, so with n - 1 places the fragment in the tail is whichever came last, which on a
+    // GPU is not always the farthest (an H100 put a middle layer there: 0.046 off on 4 layers).
+    // They get n places: their stored colours are abuffer's half floats (measured equal), their
+    // precision setting is the tail's alone, the tail code kbuffer's case measures, and the
+    // tail's arrival-order behaviour is buffers_gl_test's.
     const std::vector<Case> cases = {
         {"blend-sorted", {}, {4, 16}},
         {"f2b", {}, {4, 16}},
@@ -69,8 +74,8 @@ TEST_CASE("exact techniques match the reference at both precisions on layers sce
         {"dual", {}, {4, 16}},
         {"bun", {}, {4, 8}},  // 8 buckets of two: exact while no bucket holds three
         {"kbuffer", {"tail=1"}, {4, 16}},
-        {"fab", {"tail=1"}, {4, 16}},
-        {"ll", {"tail=1"}, {4, 16}},
+        {"fab", {}, {4, 16}},
+        {"ll", {}, {4, 16}},
     };
     glm::ivec2 size(32, 32);
     for (int n : {4, 8, 16}) {
@@ -79,8 +84,8 @@ TEST_CASE("exact techniques match the reference at both precisions on layers sce
         for (const auto& c : cases) {
             if (std::find(c.layers.begin(), c.layers.end(), n) == c.layers.end()) continue;
             std::vector<std::string> settings = c.settings;
-            if (c.id == "kbuffer" || c.id == "fab" || c.id == "ll")
-                settings.push_back("capacity=" + std::to_string(n - 1));
+            if (c.id == "kbuffer") settings.push_back("capacity=" + std::to_string(n - 1));
+            if (c.id == "fab" || c.id == "ll") settings.push_back("capacity=" + std::to_string(n));
             float error[2] = {0, 0};
             for (int bits : {16, 32}) {
                 CAPTURE(c.id);

@@ -144,7 +144,7 @@ TEST_CASE("ll-volume and abuffer-volume equal the CPU volumetric reference") {
     cases.push_back({"intersecting, eye in the overlap", intersectingScene(), cameraAt({0.1f, -0.05f, 0.05f}, {0, 0, -3})});
     cases.push_back({"intersecting, eye in one", intersectingScene(), cameraAt({-0.9f, 0.6f, 0.2f}, {1, -0.3f, -1})});
     if (std::filesystem::is_directory(test::sharedScenesDir()))
-        cases.push_back({"models-volume", openScene((test::sourceDir() / "scenes/models-volume.json").string()),
+        cases.push_back({"models-volume", openScene(test::sceneWithSharedModels("models-volume.json").string()),
                          std::nullopt});
     else
         MESSAGE("models-volume skipped: " << test::sharedScenesDir().string() << " is absent");

@@ -79,15 +79,23 @@ TEST_CASE("zoom gl: the reduced frame samples the display's pixel centres") {
         FrameRenderer renderer;
         renderReduced(renderer, f, display, zoom);
         const Image reduced = readRgbaTexture(renderer.targets().outputColor(), renderer.targets().size());
-        int compared = 0, mismatches = 0;
+        // abuffer stores fragment colours as half floats: the same point shaded through another
+        // viewport's interpolation can round to the neighbouring half (2^-11 to 2^-10 here), which
+        // an H100 did at 3 % of the pixels. An edge moved by a fraction of a pixel changes a
+        // pixel by a whole surface, far more than two halves' steps.
+        constexpr float kTolerance = 2.0f / 1024.0f;
+        int compared = 0, mismatches = 0, beyondShadingRoundOff = 0;
         for (int j = 0; j < reduced.height; ++j)
             for (int i = 0; i < reduced.width; ++i) {
                 const int x = zoom * i + (zoom - 1) / 2, y = zoom * j + (zoom - 1) / 2;
                 if (x >= display.x || y >= display.y) continue;
                 ++compared;
-                mismatches += !sameColor(reduced.at(i, j), full.image.at(x, y), 1e-4f);
+                mismatches += !sameColor(reduced.at(i, j), full.image.at(x, y), kTolerance);
+                beyondShadingRoundOff += !sameColor(reduced.at(i, j), full.image.at(x, y), 1e-4f);
             }
         CAPTURE(compared);
+        MESSAGE("zoom " << zoom << ": " << mismatches << " of " << compared << " differ by more than " << kTolerance
+                        << ", " << beyondShadingRoundOff << " by more than 1e-4");
         // Measured 0 to 2 of 266-768; without the widening of zoomProjection, 65 and 108.
         CHECK(mismatches <= compared / 50);
     }

@@ -170,7 +170,7 @@ void registerBenchCommand(CLI::App& app) {
     addZoomOptions(cmd, args->zoom, true, "size");
     addLodOptions(cmd, args->lod);
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
-                    "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
+                    "depths within this many float ulps (relative) are one layer (default: the scene's, 1024)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two
     cmd->add_option("--reference-supersample", args->referenceSupersample,
                     "draw the reference at N times the size each way and average it down: every row, the "

@@ -141,7 +141,7 @@ void registerRenderCommand(CLI::App& app) {
     addZoomOptions(cmd, args->zoom, false, "size (the heatmap is of the frame drawn)");
     addLodOptions(cmd, args->lod);
     cmd->add_option("--depth-tie-ulps", args->depthTieUlps,
-                    "depths within this many float ulps (relative) are one layer (default: the scene's, 64)")
+                    "depths within this many float ulps (relative) are one layer (default: the scene's, 1024)")
         ->check(CLI::Range(0.0, 8388608.0));  // 2^23 ulps: depths within a factor of two
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });

@@ -11,10 +11,10 @@ namespace strata {
 double defaultDepthTieUlps() {
     static const double ulps = [] {
         const char* env = std::getenv("STRATA_DEBUG_DEPTH_TIE_ULPS");
-        if (!env || !*env) return 64.0;
+        if (!env || !*env) return 1024.0;
         char* end = nullptr;
         const double v = std::strtod(env, &end);
-        return (end && *end == '\0' && std::isfinite(v) && v >= 0.0) ? v : 64.0;
+        return (end && *end == '\0' && std::isfinite(v) && v >= 0.0) ? v : 1024.0;
     }();
     return ulps;
 }

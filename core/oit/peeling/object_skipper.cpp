@@ -30,7 +30,7 @@ void ObjectSkipper::ensurePrograms() {
     reduceProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bound_reduce.frag.glsl"});
     rectProgram_ = gl::buildProgram({"oit/peeling/bounds_rect.vert.glsl", "oit/peeling/bounds_query.frag.glsl"});
     rectLocation_ = glGetUniformLocation(rectProgram_.id(), "uRect");
-    sideLocation_ = glGetUniformLocation(rectProgram_.id(), "uSide");
+    sidesLocation_ = glGetUniformLocation(rectProgram_.id(), "uSides");
     boxFarLocation_ = glGetUniformLocation(rectProgram_.id(), "uBoxFar");
     boxNearLocation_ = glGetUniformLocation(rectProgram_.id(), "uBoxNear");
     glProgramUniform1i(reduceProgram_.id(), glGetUniformLocation(reduceProgram_.id(), "uBlock"), kBlock);
@@ -116,7 +116,7 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     glDrawArrays(GL_TRIANGLES, 0, 3);
     // No memory barrier: the rectangles sample what was just rendered, which GL orders itself.
 
-    // One rectangle per live object and side, under an occlusion query.
+    // One rectangle per live object, under an occlusion query.
     glBindFramebuffer(GL_FRAMEBUFFER, queryFbo_.id());
     glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, reduced_.id());
     const GLuint program = rectProgram_.id();
@@ -127,24 +127,22 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
         for (int o : frame.transparentOrder)
             if (!frame.boundsOf(o).empty()) boxes_[o] = screenBox(frame, frame.boundsOf(o));
     }
+    int sideBits = 0;
+    for (RemainingSide side : sides) sideBits |= side == RemainingSide::NotNearerThanR ? 1 : 2;
+    glProgramUniform1i(program, sidesLocation_, sideBits);
     for (int o : frame.transparentOrder) {
         if (culled_[o] || frame.boundsOf(o).empty()) continue;
         const ScreenBox& box = boxes_[o];
         glProgramUniform4fv(program, rectLocation_, 1, glm::value_ptr(box.rect));
         glProgramUniform1f(program, boxFarLocation_, box.farDepth);
         glProgramUniform1f(program, boxNearLocation_, box.nearDepth);
-        auto& pending = pending_[o].queries;
-        pending.clear();
-        for (RemainingSide side : sides) {
-            GLuint q = nextQuery();
-            glProgramUniform1i(program, sideLocation_, side == RemainingSide::NotNearerThanR ? 0 : 1);
-            // An empty rectangle (the object off screen) draws nothing: the query reads 0.
-            glBeginQuery(GL_ANY_SAMPLES_PASSED, q);
-            if (!box.empty) glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-            glEndQuery(GL_ANY_SAMPLES_PASSED);
-            pending.push_back(q);
-            ++queryDraws_;
-        }
+        const GLuint q = nextQuery();
+        // An empty rectangle (the object off screen) draws nothing: the query reads 0.
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, q);
+        if (!box.empty) glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+        pending_[o].query = q;
+        ++queryDraws_;
     }
     glViewport(0, 0, frame.size.x, frame.size.y);
 }
@@ -169,27 +167,25 @@ void ObjectSkipper::draw(const FrameContext& frame, const SceneProgram& program,
             ++stats.objectDrawsSkipped;
             continue;
         }
-        auto& pending = pending_[o].queries;
-        // Results already on the CPU decide without waiting; the first unknown one is left to
-        // the GPU through conditional rendering.
+        // A result already on the CPU decides without waiting; an unknown one is left to the GPU
+        // through conditional rendering.
+        GLuint& pending = pending_[o].query;
         GLuint unknown = 0;
-        bool behind = false;
-        for (GLuint q : pending) {
+        if (pending) {
             GLuint available = 0;
-            glGetQueryObjectuiv(q, GL_QUERY_RESULT_AVAILABLE, &available);
-            if (!available) {
-                if (!unknown) unknown = q;
-                continue;
+            glGetQueryObjectuiv(pending, GL_QUERY_RESULT_AVAILABLE, &available);
+            if (available) {
+                GLuint passed = 0;
+                glGetQueryObjectuiv(pending, GL_QUERY_RESULT, &passed);
+                if (!passed) {
+                    culled_[o] = true;
+                    pending = 0;
+                    ++stats.objectDrawsSkipped;
+                    continue;
+                }
+            } else {
+                unknown = pending;
             }
-            GLuint passed = 0;
-            glGetQueryObjectuiv(q, GL_QUERY_RESULT, &passed);
-            if (!passed) behind = true;
-        }
-        if (behind) {
-            culled_[o] = true;
-            pending.clear();
-            ++stats.objectDrawsSkipped;
-            continue;
         }
         ++stats.objectDraws;
         if (unknown) {

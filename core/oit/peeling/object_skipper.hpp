@@ -35,8 +35,10 @@ public:
     void beginFrame(const FrameContext& frame, bool enabled);
 
     // Reduces `remaining` to block maxima and tests each live object's screen rectangle and
-    // depth range against them; one query per object and side. Several sides: an object is
-    // live only while every side's query passes.
+    // depth range against them; one query per object. Several sides: an object is live only
+    // where, in one block, the box meets every side's bound (one query, so that a conditional
+    // draw on it skips exactly: on a GPU whose results come late, a query per side left the
+    // draw conditional on the first side alone, and dual drew objects the second side culled).
     void query(const FrameContext& frame, GLuint remaining, const std::vector<RemainingSide>& sides);
 
     // Binds `program` and draws the live objects in submission order; adds to objectDraws and
@@ -47,12 +49,12 @@ public:
     // objectDrawsSkipped. Call once the frame's passes are issued.
     void endFrame(TechniqueStats& stats);
 
-    // Query rectangles issued this frame, one per live object and side (not object draws).
+    // Query rectangles issued this frame, one per live object and query() (not object draws).
     std::uint64_t queryDraws() const { return queryDraws_; }
 
 private:
     struct Pending {
-        std::vector<GLuint> queries;  // the latest query per side
+        GLuint query = 0;  // the latest query, 0 while none is waiting
     };
     struct Conditional {
         GLuint query;
@@ -82,7 +84,7 @@ private:
     std::size_t poolUsed_ = 0;
     std::uint64_t queryDraws_ = 0;
     gl::Program reduceProgram_, rectProgram_;
-    GLint rectLocation_ = -1, sideLocation_ = -1, boxFarLocation_ = -1, boxNearLocation_ = -1;
+    GLint rectLocation_ = -1, sidesLocation_ = -1, boxFarLocation_ = -1, boxNearLocation_ = -1;
     gl::VertexArray emptyVao_;
     glm::ivec2 reducedSize_{0, 0};
     gl::Texture reduced_;
