@@ -28,6 +28,8 @@
 #                 at ULPS (STRATA_DEBUG_DEPTH_TIE_ULPS; group 1; default 1024, 0 leaves it out)
 #   --layers LIST the layer counts of step 3 (default 8,16,32)
 #   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, skipping on)
+#   --tests-only  step 1 (and 2 with --group2) alone: no timings
+#   --bench-only  steps 3 and 4 alone: no tests
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/scripts/gpu_common.sh"
@@ -40,6 +42,8 @@ repeat=1
 ties=1024
 peel_layers=8,16,32
 peel_settings="precision=32 skip_peeled=1;precision=16 skip_peeled=1"
+run_tests=1
+run_bench=1
 while [[ $# -gt 0 ]]; do
     case $1 in
         --bundle) bundle=$2; shift 2 ;;
@@ -52,7 +56,9 @@ while [[ $# -gt 0 ]]; do
         --ties) ties=$2; shift 2 ;;
         --layers) peel_layers=$2; shift 2 ;;
         --settings) peel_settings=$2; shift 2 ;;
-        -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
+        --tests-only) run_bench=0; shift ;;
+        --bench-only) run_tests=0; skip_group2=1; shift ;;
+        -h|--help) sed -n '2,32p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
@@ -117,6 +123,7 @@ missing=$(cd "$root/tests" && for f in *_gl_test.cpp; do
     ((hit)) || echo "$f"
 done)
 [[ -n $missing ]] && summary+=("- WARNING: test files in no shard: $missing")
+if ((run_tests)); then
 summary+=("## 1. The GL suite, four shards side by side" "")
 start=$SECONDS
 for i in "${!shards[@]}"; do
@@ -156,6 +163,7 @@ if ((ties > 0)); then
 fi
 summary+=("- wall $((SECONDS - start)) s" "")
 readme
+fi
 
 if ((!skip_group2)); then
 # 2. Group 2 under each suspect removed, side by side.
@@ -182,6 +190,14 @@ done
 summary+=("- wall $((SECONDS - start)) s" "")
 readme
 fi
+
+finish() {
+    echo "gpu_diag.sh: done; summary in $out/README.md"
+    cat "$out/README.md"
+    if [[ -n $tarball ]]; then tar -czf "$tarball" -C "$(dirname "$out")" "$(basename "$out")"; fi
+    exit 0
+}
+((run_bench)) || finish
 
 # 3. The peeling techniques against the probe, one process at a time (timings).
 summary+=("## 3. Peeling at $size: object skipping and precision against the naive probe" "")
@@ -237,6 +253,4 @@ print('frame %.2f ms GPU, CPU %.2f ms, %s objects as impostors, PSNR %s; model %
 " 2>&1 | tail -1)")
     readme
 done
-echo "gpu_diag.sh: done; summary in $out/README.md"
-cat "$out/README.md"
-if [[ -n $tarball ]]; then tar -czf "$tarball" -C "$(dirname "$out")" "$(basename "$out")"; fi
+finish
