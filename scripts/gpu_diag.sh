@@ -30,6 +30,7 @@
 #   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, skipping on)
 #   --tests-only  step 1 (and 2 with --group2) alone: no timings
 #   --bench-only  steps 3 and 4 alone: no tests
+#   --no-orchard  leave out step 4
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/scripts/gpu_common.sh"
@@ -44,6 +45,7 @@ peel_layers=8,16,32
 peel_settings="precision=32 skip_peeled=1;precision=16 skip_peeled=1"
 run_tests=1
 run_bench=1
+run_orchard=1
 while [[ $# -gt 0 ]]; do
     case $1 in
         --bundle) bundle=$2; shift 2 ;;
@@ -58,7 +60,8 @@ while [[ $# -gt 0 ]]; do
         --settings) peel_settings=$2; shift 2 ;;
         --tests-only) run_bench=0; shift ;;
         --bench-only) run_tests=0; skip_group2=1; shift ;;
-        -h|--help) sed -n '2,32p' "$0"; exit 0 ;;
+        --no-orchard) run_orchard=0; shift ;;
+        -h|--help) sed -n '2,33p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
@@ -236,6 +239,7 @@ EOF
     done
 done
 summary+=("")
+((run_orchard)) || finish
 
 # 4. LOD: does --lod auto choose right on this device.
 summary+=("## 4. $orchard at $size, blend-sorted" "")

@@ -105,11 +105,49 @@ TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {
             CHECK(std::abs(p.g - expected.g) <= kTolerance);
             CHECK(std::abs(p.b - expected.b) <= kTolerance);
         }
-        // f2b: the count; one peel and blend; one peel that finds only the coincident leftovers,
-        // which is not waited for, and its blend, which captures nothing and ends the loop; the
-        // composite.
-        CHECK(test::renderWith(*f.gpu, f.camera, size, "f2b").result.stats.passes == 6);
+        // f2b without read-ahead: the count; one peel and blend; one peel that finds only the
+        // coincident leftovers and its blend, which captures nothing and ends the loop; the
+        // composite. With it (the default) the second layer goes out before the first layer's
+        // count is read (K fragments a pixel remain, a layer takes at most one), and from three
+        // copies on the third too, before the second's count (0) is known: one more peel and
+        // blend, which capture nothing.
+        const auto passes = [&](bool ahead) {
+            return test::renderWith(*f.gpu, f.camera, size,
+                                    *test::makeTechnique("f2b", {ahead ? "read_ahead=1" : "read_ahead=0"}))
+                .result.stats.passes;
+        };
+        CHECK(passes(false) == 6);
+        CHECK(passes(true) == (k == 2 ? 6 : 8));
     }
+}
+
+TEST_CASE("read-ahead changes when counts are read, nothing else: image, counts and passes equal") {
+    // N layers a pixel: a layer takes one, so after the first i layers are issued N - i remain
+    // for certain and every layer goes out before the last count is read; the loop still stops
+    // after layer N (f2b: 2N + 2 passes), as when each count is read before the next layer.
+    glm::ivec2 size(12, 10);
+    for (int n : {1, 4, 7}) {
+        CAPTURE(n);
+        Fixture f(makeLayersScene(n, 0.35f));
+        for (const std::string id : {"f2b", "f2b2", "dual"}) {
+            CAPTURE(id);
+            auto ahead = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"read_ahead=1"}));
+            auto waiting = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"read_ahead=0"}));
+            CHECK(compareImages(ahead.image, waiting.image).maxAbsError == 0.0);
+            CHECK(ahead.result.stats.passes == waiting.result.stats.passes);
+            CHECK(ahead.result.stats.fragmentsCaptured == std::uint64_t(n) * 120u);
+            CHECK(ahead.result.stats.fragmentsDropped == 0);
+            CHECK(ahead.result.stats.objectDraws == waiting.result.stats.objectDraws);
+            CHECK(ahead.result.stats.objectDrawsSkipped == waiting.result.stats.objectDrawsSkipped);
+            if (id == "f2b") CHECK(ahead.result.stats.passes == std::uint64_t(2 * n + 2));
+        }
+    }
+    // The pass bound holds with read-ahead: 7 layers, 3 passes, an overflow.
+    Fixture f(makeLayersScene(7, 0.3f));
+    auto bounded = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("f2b", {"max_passes=3", "read_ahead=1"}));
+    CHECK(bounded.result.stats.overflowed);
+    CHECK(bounded.result.stats.passes == 1 + 2 * 3 + 1);
+    CHECK(bounded.result.stats.fragmentsCaptured == 3u * 120u);
 }
 
 TEST_CASE("max_passes bounds peeling and reports the overflow") {

@@ -42,12 +42,17 @@ public:
                 skipper_.query(frame, minMax_[(pass + 1) % 2].id(),
                                {RemainingSide::NotNearerThanR, RemainingSide::NotFartherThanG});
             };
+            // A pass takes at most two fragments a pixel (read_ahead: PeelLoop::runAhead).
+            if (settings_.readAhead) options.takenAtMost = 2 * std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
             // Pass p peels from minMax_[p % 2] into minMax_[(p + 1) % 2] (the init wrote minMax_[0]).
-            loop.run(options, [&](int pass) {
-                const int cur = (pass + 1) % 2;
-                peel(frame, cur);
-                return blend(frame, cur);
-            });
+            loop.runAhead(
+                options,
+                [&](int pass) {
+                    const int cur = (pass + 1) % 2;
+                    peel(frame, cur);
+                    blend(frame, cur, passQueries(pass));
+                },
+                [&](int pass) { return collect(passQueries(pass)); });
             composite(frame);
         }
         loop.finish();
@@ -73,9 +78,6 @@ private:
         if (initProgram_.program) return;
         initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
-        frontLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
-        backLayers_ = gl::createQuery(GL_SAMPLES_PASSED);
-        interiorLeft_ = gl::createQuery(GL_ANY_SAMPLES_PASSED);
     }
 
     void ensureTargets(glm::ivec2 size, ColorModel model) {
@@ -168,11 +170,23 @@ private:
         ++stats_.passes;
     }
 
-    // Blends the layers just peeled; returns their fragments and whether any pixel has fragments
-    // left strictly inside the next range (minMax_[cur]). Three full-screen draws under occlusion
+    // A pass's three queries: the front and back layers' fragments, and whether any pixel has
+    // fragments left strictly inside the next range. One set per pass: several may be in flight.
+    struct PassQueries {
+        gl::Query frontLayers, backLayers, interiorLeft;
+    };
+    const PassQueries& passQueries(int pass) {
+        while (passQueries_.size() <= std::size_t(pass))
+            passQueries_.push_back({gl::createQuery(GL_SAMPLES_PASSED), gl::createQuery(GL_SAMPLES_PASSED),
+                                    gl::createQuery(GL_ANY_SAMPLES_PASSED)});
+        return passQueries_[std::size_t(pass)];
+    }
+
+    // Blends the layers just peeled, counting their fragments and what is left strictly inside
+    // the next range (minMax_[cur]) into `queries`. Three full-screen draws under occlusion
     // queries (dual_blend.frag.glsl): counting with atomics instead cost half of this pass on
     // llvmpipe.
-    PeelStep blend(const FrameContext& frame, int cur) {
+    void blend(const FrameContext& frame, int cur, const PassQueries& queries) {
         gl::ScopedPass pass(frame.timer, "dual blend");
         // No memory barrier: the peel rendered what this pass samples, which GL orders itself
         // (barriers are for image and buffer stores; on llvmpipe one is a full finish).
@@ -212,17 +226,21 @@ private:
             drawFullscreen(frame, program);
             glEndQuery(target);
         };
-        drawStep(0, true, false, GL_SAMPLES_PASSED, frontLayers_.id());
-        drawStep(1, false, true, GL_SAMPLES_PASSED, backLayers_.id());
-        drawStep(2, false, false, GL_ANY_SAMPLES_PASSED, interiorLeft_.id());
+        drawStep(0, true, false, GL_SAMPLES_PASSED, queries.frontLayers.id());
+        drawStep(1, false, true, GL_SAMPLES_PASSED, queries.backLayers.id());
+        drawStep(2, false, false, GL_ANY_SAMPLES_PASSED, queries.interiorLeft.id());
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDisable(GL_BLEND);
         ++stats_.passes;
+    }
+
+    // What a pass's blend counted (waits for it).
+    static PeelStep collect(const PassQueries& queries) {
         GLuint64 front = 0, back = 0;
         GLuint left = 0;
-        glGetQueryObjectui64v(frontLayers_.id(), GL_QUERY_RESULT, &front);
-        glGetQueryObjectui64v(backLayers_.id(), GL_QUERY_RESULT, &back);
-        glGetQueryObjectuiv(interiorLeft_.id(), GL_QUERY_RESULT, &left);
+        glGetQueryObjectui64v(queries.frontLayers.id(), GL_QUERY_RESULT, &front);
+        glGetQueryObjectui64v(queries.backLayers.id(), GL_QUERY_RESULT, &back);
+        glGetQueryObjectuiv(queries.interiorLeft.id(), GL_QUERY_RESULT, &left);
         // A pass that captured nothing had an empty range everywhere, so nothing is left
         // whatever the interior query says (PeelLoop's guard against a driver that skips the
         // masked draw).
@@ -253,7 +271,8 @@ private:
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     SceneProgram initProgram_;
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
-    gl::Query samples_, frontLayers_, backLayers_, interiorLeft_;
+    gl::Query samples_;                   // the init pass's count
+    std::vector<PassQueries> passQueries_;  // each pass's, by pass
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
     // The RGB build's: what the layers and the accumulations let through, per channel.

@@ -7,6 +7,8 @@
 //
 // Stopping: a counting pass before the first peel counts (samples passed) every transparent
 // fragment in front of the opaque depth, and each layer pass counts the fragments it captured.
+// The counts are read behind the passes (PeelLoop::runAhead): the next layer is issued before
+// the last one's count is read while what is known to remain exceeds a pixel each.
 // When what is left equals what a layer captured nothing lies behind it and no further pass is
 // issued, so D layers cost exactly D peels; a layer pass that captures nothing (only coincident
 // leftovers were left, which a strict test never peels) stops it too. max_passes bounds the loop; hitting it is reported as an overflow.
@@ -46,14 +48,23 @@ public:
         // What lies strictly behind a layer is what lay behind the previous one less the
         // fragments just captured (the loop's remaining count).
         loop.setTotal(countFragments(frame));
-        loop.run(options, [&](int layer) {
-            // Everything lies behind the opaque surfaces: nothing to peel.
-            if (loop.remaining() == 0) return PeelStep{};
-            const int cur = layer % 2;
-            peel(frame, layer, cur);
-            const std::uint64_t captured = twoPass_ ? shade(frame, cur) : blendLayer(frame, cur);
-            return PeelStep{captured, captured};
-        });
+        // A layer takes at most one fragment a pixel: while the counts read so far prove that
+        // more remains, the next layers go out before this one's count is read (read_ahead).
+        if (settings_.readAhead) options.takenAtMost = std::uint64_t(frame.size.x) * std::uint64_t(frame.size.y);
+        // Everything lies behind the opaque surfaces: nothing to peel.
+        if (loop.remaining() > 0)
+            loop.runAhead(
+                options,
+                [&](int layer) {
+                    const int cur = layer % 2;
+                    peel(frame, layer, cur);
+                    if (twoPass_) shade(frame, cur, layerSamples(layer));
+                    else blendLayer(frame, cur, layerSamples(layer));
+                },
+                [&](int layer) {
+                    const std::uint64_t captured = gl::queryResult(layerSamples(layer));
+                    return PeelStep{captured, captured};
+                });
         if (stats_.fragmentsCaptured > 0) composite(frame);
         loop.finish();
         std::uint64_t pixels = std::uint64_t(frame.size.x) * frame.size.y;
@@ -185,24 +196,30 @@ private:
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
     }
 
-    std::uint64_t blendLayer(const FrameContext& frame, int cur) {
+    // The samples query of `layer`'s capture: one per layer, since several may be in flight.
+    const gl::Query& layerSamples(int layer) {
+        while (layerSamples_.size() <= std::size_t(layer)) layerSamples_.push_back(gl::createQuery(GL_SAMPLES_PASSED));
+        return layerSamples_[std::size_t(layer)];
+    }
+
+    // Blends the layer just peeled under the accumulation, counting it into `samples`.
+    void blendLayer(const FrameContext& frame, int cur, const gl::Query& samples) {
         gl::ScopedPass pass(frame.timer, "f2b blend");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, depth_[cur].id());
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, layerColor_.id());
         if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_LAYER_FILTER, layerFilter_.id());
         underBlending();
-        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        glBeginQuery(GL_SAMPLES_PASSED, samples.id());
         drawFullscreen(frame, programs_->blend.id());
         glEndQuery(GL_SAMPLES_PASSED);
         if (rgb()) glTextureBarrier();
         glDisable(GL_BLEND);
         ++stats_.passes;
-        const std::uint64_t captured = gl::queryResult(samples_);
-        return captured;
     }
 
-    std::uint64_t shade(const FrameContext& frame, int cur) {
+    // f2b2: shades the layer just found and blends it under the accumulation, counting it.
+    void shade(const FrameContext& frame, int cur, const gl::Query& samples) {
         gl::ScopedPass pass(frame.timer, "f2b2 shade");
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_[cur].id());
         setTransparentDepthState(frame);
@@ -211,15 +228,13 @@ private:
         glStencilFunc(GL_EQUAL, 0, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
         underBlending();
-        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        glBeginQuery(GL_SAMPLES_PASSED, samples.id());
         skipper_.draw(frame, programs_->shade, stats_);
         glEndQuery(GL_SAMPLES_PASSED);
         if (rgb()) glTextureBarrier();
         glDisable(GL_BLEND);
         glDisable(GL_STENCIL_TEST);
         ++stats_.passes;
-        const std::uint64_t captured = gl::queryResult(samples_);
-        return captured;
     }
 
     void composite(const FrameContext& frame) {
@@ -242,7 +257,8 @@ private:
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     SceneProgram countProgram_;
-    gl::Query samples_;
+    gl::Query samples_;                   // the count pass's
+    std::vector<gl::Query> layerSamples_;  // each layer's capture, by layer
     glm::ivec2 size_{0, 0};
     gl::Texture accum_, layerColor_, depth_[2];
     gl::Texture layerFilter_, accumFilter_;  // the RGB build's (what passes, per channel)

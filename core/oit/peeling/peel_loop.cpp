@@ -34,6 +34,44 @@ int PeelLoop::run(const PeelLoopOptions& options, const std::function<PeelStep(i
     return iteration;
 }
 
+int PeelLoop::runAhead(const PeelLoopOptions& options, const std::function<void(int)>& issue,
+                       const std::function<PeelStep(int)>& collect) {
+    // Iterations [collected, issued) are in flight; `certain` is what remains for certain once
+    // they are done.
+    int issued = 0, collected = 0;
+    auto certainAfterInFlight = [&] {
+        const std::uint64_t inFlight = options.takenAtMost * std::uint64_t(issued - collected);
+        return remaining_ > inFlight ? remaining_ - inFlight : 0;
+    };
+    for (;;) {
+        if (collected == issued) {
+            if (issued >= options.maxPasses) {
+                stats_.overflowed = true;
+                break;
+            }
+            if (issued > 0 && options.between) options.between(issued - 1);
+            issue(issued++);
+        }
+        while (options.takenAtMost > 0 && issued - collected < kInFlightAtMost && issued < options.maxPasses &&
+               certainAfterInFlight() > 0) {
+            if (options.between) options.between(issued - 1);
+            issue(issued++);
+        }
+        const PeelStep s = collect(collected++);
+        stats_.fragmentsCaptured += s.kept;
+        overflow_ += s.overflow;
+        if (s.layer == 0 || !s.more || s.layer >= remaining_) break;
+        remaining_ -= s.layer;
+    }
+    // Issued behind the end (the one case above): collected, so that nothing is left in flight.
+    while (collected < issued) {
+        const PeelStep s = collect(collected++);
+        stats_.fragmentsCaptured += s.kept;
+        overflow_ += s.overflow;
+    }
+    return issued;
+}
+
 void PeelLoop::finish() {
     skipper_.endFrame(stats_);
     // Dropped: coincident fragments a strict test never peels (not an overflow), what did not fit
