@@ -11,6 +11,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <map>
@@ -61,6 +62,13 @@ TEST_CASE("bench JSON has every contract field, finite, and counts every fragmen
                               "robustness_ratio", "rmse", "psnr", "max_abs_error"})
             requireNumber(m, k);
         CHECK(m["fragments_total"] == 4 * 24 * 16 * 3);
+        // The span from the first GPU stamp to the last holds every pass of the frame: at least
+        // the longest one (the passes are the median frame's only approximately, so no more).
+        requireNumber(m, "frame_span_ms_median");
+        double longestPass = 0.0;
+        for (const auto& [name, ms] : m["pass_ms_median"].items()) longestPass = std::max(longestPass, ms.get<double>());
+        CHECK(m["frame_span_ms_median"].get<double>() > 0.0);
+        CHECK(m["frame_span_ms_median"].get<double>() >= 0.9 * longestPass);
         // abuffer's own error is against itself, zero by definition: the test below checks the
         // reference against the CPU ray cast instead.
         if (m["id"] == "abuffer") CHECK(m["robustness_ratio"] == 1.0);

@@ -214,7 +214,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             controller = std::make_unique<BudgetGovernor>(*options.budget, levers, options.zoomController, model);
         }
         mode.zoom = options.budget ? 0 : options.zoom;
-        std::vector<double> gpu, cpu, threadCpu, drawCalls, opaque, frame, enlarge, lodMs;
+        std::vector<double> gpu, cpu, threadCpu, drawCalls, opaque, frame, frameSpan, enlarge, lodMs;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
@@ -263,6 +263,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 mode.frameImpostorObjects.push_back(frameImpostors);
             }
             frame.push_back(r.gpuMs);
+            frameSpan.push_back(r.gpuSpanMs);
             enlarge.push_back(r.enlargeMs);
             double techniqueMs = 0.0, opaqueMs = 0.0;
             std::map<std::string, double> frameByPass;
@@ -324,6 +325,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         mode.lodMsMedian = lodMs.empty() ? 0.0 : percentile(lodMs, 0.5);
         mode.opaqueMsMedian = percentile(opaque, 0.5);
         mode.frameMsMedian = percentile(frame, 0.5);
+        mode.frameSpanMsMedian = percentile(frameSpan, 0.5);
         mode.enlargeMsMedian = percentile(enlarge, 0.5);
         if (options.budget) {
             mode.budgetHits = budgetHits(mode.frameMs, options.budget->targetMs, options.budget->band);

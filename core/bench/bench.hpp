@@ -127,6 +127,9 @@ struct BenchMode {
     SettingValues settings;
     // The whole frame's GPU time (opaque pass, technique, enlargement): what a zoom speeds up.
     double frameMsMedian = 0.0;
+    // The frame from its first GPU stamp to its last (FrameResult::gpuSpanMs): idle gaps between
+    // passes in, passes overlapping (issued ahead) counted once.
+    double frameSpanMsMedian = 0.0;
     double enlargeMsMedian = 0.0;
     int zoom = 1;                                             // fixed zoom (0 under a controller)
     // Under a frame budget (BenchOptions::budget): per frame, the zoom, the frame time and the

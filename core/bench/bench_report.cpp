@@ -68,6 +68,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
         }
         modes.back()["settings"] = settings;
         modes.back()["frame_ms_median"] = finite(m.frameMsMedian);
+        modes.back()["frame_span_ms_median"] = finite(m.frameSpanMsMedian);
         modes.back()["enlarge_ms_median"] = finite(m.enlargeMsMedian);
         modes.back()["zoom"] = m.zoom;
         modes.back()["impostor_objects"] = m.impostorObjects;

@@ -172,12 +172,22 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
     }
     if (timer) result.passTimes = timer_.resolve();
     glFinish();
+    GLuint64 first = ~GLuint64(0), last = 0;
     for (const auto& p : result.passTimes) {
         // The detector is an inspection tool, not part of the technique's cost.
-        if (p.name.rfind(CoplanarityDetector::kPassPrefix, 0) == 0) result.coplanarityMs += p.gpuMs;
-        else result.gpuMs += p.gpuMs;
+        if (p.name.rfind(CoplanarityDetector::kPassPrefix, 0) == 0) {
+            result.coplanarityMs += p.gpuMs;
+            continue;
+        }
+        result.gpuMs += p.gpuMs;
         if (p.name == "enlarge") result.enlargeMs += p.gpuMs;
+        if (p.endNs > p.beginNs) {
+            first = std::min(first, p.beginNs);
+            last = std::max(last, p.endNs);
+        }
     }
+    // The detector runs between the technique and the enlargement: its time is not the frame's.
+    if (last > first) result.gpuSpanMs = std::max(0.0, double(last - first) * 1e-6 - result.coplanarityMs);
     result.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart).count();
     result.threadCpuMs = threadCpuMs() - threadStart;
     result.drawCalls = scene.drawCalls() - drawsBefore;

@@ -48,6 +48,9 @@ struct FrameOptions {
 struct FrameResult {
     std::vector<gl::PassTime> passTimes;
     double gpuMs = 0.0;     // sum over passes, the coplanarity detector's apart
+    // From the first pass's start to the last pass's end on the GPU clock, the detector's passes
+    // left out: the frame's GPU time with idle gaps between passes in and overlaps counted once.
+    double gpuSpanMs = 0.0;
     double coplanarityMs = 0.0;  // GPU time of the detector's passes (in passTimes too)
     double cpuMs = 0.0;     // wall time of the whole frame, including waits for results
     // CPU time of the thread that rendered the frame (its own, not the driver's worker threads;

@@ -60,7 +60,7 @@ std::vector<PassTime> GpuTimer::resolve() {
         GLuint64 start = 0, end = 0;
         glGetQueryObjectui64v(pool_[p.query].id(), GL_QUERY_RESULT, &start);
         glGetQueryObjectui64v(pool_[p.query + 1].id(), GL_QUERY_RESULT, &end);
-        out.push_back({p.name, end > start ? double(end - start) * 1e-6 : 0.0, p.cpuMs});
+        out.push_back({p.name, end > start ? double(end - start) * 1e-6 : 0.0, p.cpuMs, start, end});
     }
     pending_.clear();
     return out;

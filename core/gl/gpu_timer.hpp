@@ -13,6 +13,9 @@ struct PassTime {
     std::string name;
     double gpuMs = 0.0;
     double cpuMs = 0.0;
+    // The GPU clock at the pass's two stamps (ns). Passes that overlap on the GPU (issued ahead
+    // of a read, PeelLoop::runAhead) can add up to more than the span from first to last stamp.
+    GLuint64 beginNs = 0, endNs = 0;
 };
 
 class GpuTimer {
