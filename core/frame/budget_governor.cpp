@@ -15,6 +15,8 @@ constexpr double kTie = 1e-9;
 
 // Reactive: a frame this many times over the target ends the hold.
 constexpr double kJumpOverTarget = 2.0;
+// Reactive: this many frames in a row over the band end the hold too, judged on their median.
+constexpr int kOverFramesToAct = 2;
 // The LOD pixel scale's fit: each frame's weight decays by this per frame (about the last ten
 // frames count), x must spread by this share of its mean, and the scale stays in this range.
 constexpr double kPixelFitMemory = 0.9;
@@ -200,8 +202,18 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     // A frame over twice the target is no outlier to wait out (a cut, a turn into a dense view):
     // it is judged at once, on its own time.
     const bool jump = cost.ms > kJumpOverTarget * budget_.targetMs;
-    if (++sinceChange_ < hold_ && !jump) return;
-    const double now = jump ? cost.ms : medianMs(recent_);
+    // Frames over the band since the last change, all of them: the state (or the new load) is
+    // too slow, and each frame the hold waits is a frame over budget (on the orchard's sweep into
+    // the grid, the hold kept 8 of 72 frames over). Relief (under the band) still waits the hold.
+    const double overLimit = budget_.targetMs * (1.0 + budget_.band);
+    const bool overRun = int(recent_.size()) >= kOverFramesToAct &&
+                         std::all_of(recent_.end() - kOverFramesToAct, recent_.end(), [&](double t) { return t > overLimit; });
+    if (++sinceChange_ < hold_ && !jump && !overRun) return;
+    // Judged on the frames that ended the hold: a run over the band on its own frames (the
+    // window may still hold frames of an easier view before it).
+    const double now = jump      ? cost.ms
+                       : overRun ? medianMs(std::deque<double>(recent_.end() - kOverFramesToAct, recent_.end()))
+                                 : medianMs(recent_);
 
     // Learn the pixel share from a change of zoom alone (the bound held): t = a + b P through the
     // medians before and after, as the reactive zoom controller does.
