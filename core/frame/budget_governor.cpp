@@ -242,7 +242,10 @@ void BudgetGovernor::observe(const FrameCost& cost) {
             for (int k = 0; k <= highestLevel(load); ++k) {
                 if (z == zoom_ && k == level_) continue;
                 if (over && (z < zoom_ || k < level_)) continue;
-                if (under && (z > zoom_ || k > level_)) continue;
+                // Relief one step of each lever at most, as the zoom controller steps down by
+                // one: its estimate extrapolates the measured time, and a long step that
+                // overshoots costs frames over the band (the orchard's sweep: 8 -> 4 -> 6).
+                if (under && (z > zoom_ || k > level_ || z < zoom_ - 1 || k < level_ - 1)) continue;
                 const double ms = reactiveEstimate(load, now, z, k);
                 // A bound that predicts no saving is no step at all.
                 if (over && z == zoom_ && ms >= now - kTie) continue;

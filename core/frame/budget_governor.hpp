@@ -25,7 +25,8 @@
 //    less lossy one, each estimated from the measured time (zoom: the learned pixel share; LOD:
 //    the selection's predicted difference), and never within the band. A frame over twice the
 //    target is judged at once instead of after the hold, and two frames in a row over the band
-//    on their median (relief, under the band, waits the hold).
+//    on their median. Relief (under the band) waits the hold and eases each lever by one step
+//    at most.
 // With the zoom lever alone it is today's zoom controller (frame/zoom_controller.hpp), unchanged.
 #include "frame/zoom_controller.hpp"
 

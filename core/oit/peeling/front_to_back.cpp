@@ -8,7 +8,7 @@
 // Stopping: a counting pass before the first peel counts (samples passed) every transparent
 // fragment in front of the opaque depth, and each layer pass counts the fragments it captured.
 // The counts are read behind the passes (PeelLoop::runAhead): the next layer is issued before
-// the last one's count is read while what is known to remain exceeds a pixel each.
+// the last one's count is read while the counts read prove that more than a layer remains.
 // When what is left equals what a layer captured nothing lies behind it and no further pass is
 // issued, so D layers cost exactly D peels; a layer pass that captures nothing (only coincident
 // leftovers were left, which a strict test never peels) stops it too. max_passes bounds the loop; hitting it is reported as an overflow.

@@ -43,6 +43,12 @@ int PeelLoop::runAhead(const PeelLoopOptions& options, const std::function<void(
         const std::uint64_t inFlight = options.takenAtMost * std::uint64_t(issued - collected);
         return remaining_ > inFlight ? remaining_ - inFlight : 0;
     };
+    auto collectNext = [&] {
+        const PeelStep s = collect(collected++);
+        stats_.fragmentsCaptured += s.kept;
+        overflow_ += s.overflow;
+        return s;
+    };
     for (;;) {
         if (collected == issued) {
             if (issued >= options.maxPasses) {
@@ -57,18 +63,12 @@ int PeelLoop::runAhead(const PeelLoopOptions& options, const std::function<void(
             if (options.between) options.between(issued - 1);
             issue(issued++);
         }
-        const PeelStep s = collect(collected++);
-        stats_.fragmentsCaptured += s.kept;
-        overflow_ += s.overflow;
+        const PeelStep s = collectNext();
         if (s.layer == 0 || !s.more || s.layer >= remaining_) break;
         remaining_ -= s.layer;
     }
     // Issued behind the end (the one case above): collected, so that nothing is left in flight.
-    while (collected < issued) {
-        const PeelStep s = collect(collected++);
-        stats_.fragmentsCaptured += s.kept;
-        overflow_ += s.overflow;
-    }
+    while (collected < issued) collectNext();
     return issued;
 }
 
