@@ -27,7 +27,8 @@
 #   --ties ULPS   also run the coplanarity tests beside the shards with the default tie tolerance
 #                 at ULPS (STRATA_DEBUG_DEPTH_TIE_ULPS; group 1; default 1024, 0 leaves it out)
 #   --layers LIST the layer counts of step 3 (default 8,16,32)
-#   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, skipping on)
+#   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, and 16 with
+#                 read_ahead=0: what reading each layer's count before the next costs)
 #   --tests-only  step 1 (and 2 with --group2) alone: no timings
 #   --bench-only  steps 3 and 4 alone: no tests
 #   --no-orchard  leave out step 4
@@ -42,7 +43,7 @@ skip_group2=1
 repeat=1
 ties=1024
 peel_layers=8,16,32
-peel_settings="precision=32 skip_peeled=1;precision=16 skip_peeled=1"
+peel_settings="precision=32;precision=16;precision=16 read_ahead=0"
 run_tests=1
 run_bench=1
 run_orchard=1
@@ -61,7 +62,7 @@ while [[ $# -gt 0 ]]; do
         --tests-only) run_bench=0; shift ;;
         --bench-only) run_tests=0; skip_group2=1; shift ;;
         --no-orchard) run_orchard=0; shift ;;
-        -h|--help) sed -n '2,33p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,34p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
