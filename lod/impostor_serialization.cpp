@@ -85,12 +85,14 @@ std::vector<std::uint8_t> LayeredImpostor::serialize() const {
     w.put(std::uint8_t(albedo_.id() != 0));
     w.putBytes(readLayers(atlas_.id()));
     if (albedo_.id()) w.putBytes(readLayers(albedo_.id()));
-    w.put(std::uint32_t(rects_.size()));
-    for (const SliceRect& r : rects_) w.put(r);
+    // Level 0's rectangles and hole slices; the coarser levels are rebuilt from the atlas.
+    const Level& fine = levels_[0];
+    w.put(std::uint32_t(fine.rects.size()));
+    for (const SliceRect& r : fine.rects) w.put(r);
     w.put(std::uint32_t(adjacency_.size()));
     for (const auto& [a, b] : adjacency_) w.put(std::int32_t(a)), w.put(std::int32_t(b));
-    w.put(std::uint32_t(holeSlices_.size()));
-    for (const auto& [pair, slices] : holeSlices_) {
+    w.put(std::uint32_t(fine.holeSlices.size()));
+    for (const auto& [pair, slices] : fine.holeSlices) {
         w.put(std::int32_t(pair.first)), w.put(std::int32_t(pair.second)), w.put(std::uint32_t(slices.size()));
         for (int s : slices) w.put(std::int32_t(s));
     }
@@ -123,8 +125,8 @@ LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes
     const std::span<const std::uint8_t> albedoTexels = albedo ? r.getBytes(imageBytes, "the albedo") : atlas.first(0);
     const std::size_t ranges = std::size_t(layers) * std::size_t(s.slices);
     if (r.count(sizeof(SliceRect), "the rectangles") != ranges) throw std::runtime_error("rectangle count does not match the settings");
-    m.rects_.resize(ranges);
-    for (SliceRect& rect : m.rects_) {
+    std::vector<SliceRect> rects(ranges);
+    for (SliceRect& rect : rects) {
         rect = r.get<SliceRect>("the rectangles");
         if (!rect.empty() && (int(rect.x1) >= s.resolution || int(rect.y1) >= s.resolution || rect.y0 > rect.y1))
             throw std::runtime_error("a rectangle lies outside the image or is inverted");
@@ -138,11 +140,12 @@ LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes
         const int a = view(r.get<std::int32_t>("the adjacency"));
         m.adjacency_.emplace_back(a, view(r.get<std::int32_t>("the adjacency")));
     }
-    const std::uint32_t holes = r.count(12, "the hole slices");
-    for (std::uint32_t i = 0; i < holes; ++i) {
+    std::map<std::pair<int, int>, std::vector<int>> holes;
+    const std::uint32_t holeCount = r.count(12, "the hole slices");
+    for (std::uint32_t i = 0; i < holeCount; ++i) {
         const int a = view(r.get<std::int32_t>("the hole slices"));
         const int b = view(r.get<std::int32_t>("the hole slices"));
-        std::vector<int>& slices = m.holeSlices_[{a, b}];
+        std::vector<int>& slices = holes[{a, b}];
         slices.resize(r.count(4, "the hole slices"));
         for (int& slice : slices) {
             slice = r.get<std::int32_t>("the hole slices");
@@ -162,6 +165,11 @@ LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes
     };
     m.atlas_ = upload(GL_RGBA8, atlas);
     if (albedo) m.albedo_ = upload(GL_SRGB8_ALPHA8, albedoTexels);
+    // The coarser levels from the atlas; level 0's rectangles as stored (the same by construction).
+    m.buildRectangles(atlas);
+    m.levels_[0].rects = std::move(rects);
+    m.levels_[0].holeSlices = std::move(holes);
+    m.mergeHoleSlices();
     m.buildQuads();
     m.bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return m;

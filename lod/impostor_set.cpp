@@ -2,6 +2,7 @@
 
 #include "render/scene_program.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -206,24 +207,24 @@ glm::vec3 ImpostorSet::eyeInObject(int objectIndex, const glm::vec3& eyeWorld) c
     return glm::vec3(glm::inverse(world) * glm::vec4(eyeWorld, 1.0f));
 }
 
-const StandInDraw* ImpostorSet::drawFor(int objectIndex, const glm::vec3& eyeWorld) {
+const StandInDraw* ImpostorSet::drawFor(int objectIndex, const glm::vec3& eyeWorld, int level) {
     const LayeredImpostor* impostor = impostorOf(objectIndex);
     if (!impostor) return nullptr;
     if (!representative(objectIndex)) return &nothing_;
     // Hole-filling slices overlap the nearest view's: a transparent impostor would blend twice.
     const bool fillHoles = !transparent_[std::size_t(idOf(objectIndex))];
     StandInDraw& d = draws_[std::size_t(objectIndex)];
-    d = impostor->drawFor(eyeInObject(objectIndex, eyeWorld), fillHoles);
+    d = impostor->drawFor(eyeInObject(objectIndex, eyeWorld), fillHoles, std::clamp(level, 0, impostor->levels() - 1));
     d.worldBounds = keys_.units.units[std::size_t(keys_.units.ofObject[std::size_t(objectIndex)])].worldBounds;
     return &d;
 }
 
-std::vector<const StandInDraw*> ImpostorSet::drawsFor(const glm::vec3& eyeWorld, const std::vector<bool>& useImpostor) {
+std::vector<const StandInDraw*> ImpostorSet::drawsFor(const glm::vec3& eyeWorld, const std::vector<int>& levels) {
     std::vector<const StandInDraw*> out(scene_->objects().size(), nullptr);
     for (std::size_t i = 0; i < out.size(); ++i) {
         const int unit = keys_.units.ofObject[i];
-        if (unit >= 0 && std::size_t(unit) < useImpostor.size() && useImpostor[std::size_t(unit)])
-            out[i] = drawFor(int(i), eyeWorld);
+        if (unit >= 0 && std::size_t(unit) < levels.size() && levels[std::size_t(unit)] >= 0)
+            out[i] = drawFor(int(i), eyeWorld, levels[std::size_t(unit)]);
     }
     return out;
 }

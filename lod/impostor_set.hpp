@@ -77,11 +77,13 @@ public:
     // unit's for the representative, an empty draw (nothing) for the unit's other parts. Holes
     // are filled for opaque impostors only (a transparent one would composite twice where the
     // hole-filling slices overlap the nearest view's). The pointer stays valid, its contents
-    // until the next call for the same object.
-    const StandInDraw* drawFor(int objectIndex, const glm::vec3& eyeWorld);
-    // Per object (indexed like GpuScene::objects()): drawFor where useImpostor[unit of i] and the
-    // unit has an impostor, null elsewhere. useImpostor is per unit; shorter counts as false.
-    std::vector<const StandInDraw*> drawsFor(const glm::vec3& eyeWorld, const std::vector<bool>& useImpostor);
+    // until the next call for the same object. `level`: the impostor's level of merged slices
+    // (LayeredImpostor::levels; clamped to those it has).
+    const StandInDraw* drawFor(int objectIndex, const glm::vec3& eyeWorld, int level = 0);
+    // Per object (indexed like GpuScene::objects()): drawFor at level levels[unit of i] where that
+    // is >= 0 and the unit has an impostor, null elsewhere. `levels` is per unit; shorter counts
+    // as -1 (geometry).
+    std::vector<const StandInDraw*> drawsFor(const glm::vec3& eyeWorld, const std::vector<int>& levels);
     // The view error of an object's impostor (radians), 0 without one.
     float nearestViewAngle(int objectIndex, const glm::vec3& eyeWorld) const;
 

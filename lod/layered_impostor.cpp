@@ -113,6 +113,7 @@ LayeredImpostor::LayeredImpostor(const std::vector<BakePart>& parts, const Bound
     buildRectangles(readLayers(atlas_.id()));
     buildQuads();
     if (settings_.holeFilling) findHoleSlices(parts);
+    mergeHoleSlices();
     glFinish();
     bakeMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -205,9 +206,20 @@ void LayeredImpostor::bakeImages(const std::vector<BakePart>& parts, const GpuSc
     glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
-void LayeredImpostor::buildRectangles(const std::vector<std::uint8_t>& texels) {
-    const int res = settings_.resolution, L = settings_.slices, layers = settings_.views * settings_.peels;
-    rects_.assign(std::size_t(layers) * std::size_t(L), SliceRect{});
+void LayeredImpostor::buildRectangles(std::span<const std::uint8_t> texels) {
+    levels_.clear();
+    for (int slices = settings_.slices;; slices /= 2) {
+        Level level;
+        level.slices = slices;
+        level.rects = rectanglesFor(texels, slices);
+        levels_.push_back(std::move(level));
+        if (slices % 2 != 0 || slices / 2 < kLeastLevelSlices) break;
+    }
+}
+
+std::vector<SliceRect> LayeredImpostor::rectanglesFor(std::span<const std::uint8_t> texels, int L) const {
+    const int res = settings_.resolution, layers = settings_.views * settings_.peels;
+    std::vector<SliceRect> rects(std::size_t(layers) * std::size_t(L), SliceRect{});
     // Per code, the slices that accept it: a layer's rectangles are then unions of per-code boxes.
     std::vector<std::pair<int, int>> accepted(256);
     for (int code = 1; code < 256; ++code) accepted[std::size_t(code)] = acceptedSlices(code, L, settings_.overlap);
@@ -226,53 +238,75 @@ void LayeredImpostor::buildRectangles(const std::vector<std::uint8_t>& texels) {
             const Box& b = boxes[code];
             if (b.x1 < 0) continue;
             for (int s = accepted[std::size_t(code)].first; s <= accepted[std::size_t(code)].second; ++s) {
-                SliceRect& r = rects_[std::size_t(layer) * std::size_t(L) + std::size_t(s)];
+                SliceRect& r = rects[std::size_t(layer) * std::size_t(L) + std::size_t(s)];
                 if (r.empty()) r = {std::uint8_t(b.x0), std::uint8_t(b.y0), std::uint8_t(b.x1), std::uint8_t(b.y1)};
                 else r = {std::min(r.x0, std::uint8_t(b.x0)), std::min(r.y0, std::uint8_t(b.y0)),
                           std::max(r.x1, std::uint8_t(b.x1)), std::max(r.y1, std::uint8_t(b.y1))};
             }
         }
     }
+    return rects;
 }
 
 void LayeredImpostor::buildQuads() {
-    const int L = settings_.slices, peels = settings_.peels;
+    const int peels = settings_.peels;
     const float res = float(settings_.resolution);
     std::vector<float> vertices;
-    first_.assign(rects_.size(), 0);
-    count_.assign(rects_.size(), 0);
-    viewFirst_.assign(std::size_t(settings_.views), 0);
-    viewCount_.assign(std::size_t(settings_.views), 0);
-    for (int view = 0; view < settings_.views; ++view) {
-        const ImpostorFrame& f = frames_[std::size_t(view)];
-        viewFirst_[std::size_t(view)] = GLint(vertices.size() / kFloatsPerVertex);
-        for (int p = 0; p < peels; ++p)
-            for (int s = 0; s < L; ++s) {
-                const std::size_t i = rangeIndex(view, p, s);
-                const SliceRect r = rects_[i];
-                if (r.empty()) continue;
-                // Texel x covers u in [x / res, (x + 1) / res).
-                const UvRect uv{{float(r.x0) / res, float(r.y0) / res},
-                                {float(r.x1 + 1) / res, float(r.y1 + 1) / res}};
-                // Peel p's surfaces lie behind peel 0's on every ray (nearer the apex): its quads
-                // sit p quarter-slices nearer the apex, so a pixel's two peels in one slice are
-                // not coplanar fragments (which one-layer-per-depth peeling would merge).
-                const auto q = f.sliceQuad(s, L, uv, -0.25f * float(p));
-                const glm::vec2 c[4] = {uv.min, {uv.max.x, uv.min.y}, uv.max, {uv.min.x, uv.max.y}};
-                first_[i] = GLint(vertices.size() / kFloatsPerVertex);
-                count_[i] = kVerticesPerQuad;
-                for (int k : {0, 2, 1, 0, 3, 2})  // counter-clockwise seen from the viewer's side (+axis)
-                    vertices.insert(vertices.end(), {q[k].x, q[k].y, q[k].z, c[k].x, c[k].y,
-                                                     float(view * peels + p), float(s)});
-                ++quads_;
-            }
-        viewCount_[std::size_t(view)] = GLint(vertices.size() / kFloatsPerVertex) - viewFirst_[std::size_t(view)];
+    // Level by level, view by view: each view's quads of one level are contiguous.
+    for (Level& level : levels_) {
+        const int L = level.slices;
+        level.first.assign(level.rects.size(), 0);
+        level.count.assign(level.rects.size(), 0);
+        level.viewFirst.assign(std::size_t(settings_.views), 0);
+        level.viewCount.assign(std::size_t(settings_.views), 0);
+        level.quads = 0;
+        for (int view = 0; view < settings_.views; ++view) {
+            const ImpostorFrame& f = frames_[std::size_t(view)];
+            level.viewFirst[std::size_t(view)] = GLint(vertices.size() / kFloatsPerVertex);
+            for (int p = 0; p < peels; ++p)
+                for (int s = 0; s < L; ++s) {
+                    const std::size_t i = (std::size_t(view) * std::size_t(peels) + std::size_t(p)) * std::size_t(L) + std::size_t(s);
+                    const SliceRect r = level.rects[i];
+                    if (r.empty()) continue;
+                    // Texel x covers u in [x / res, (x + 1) / res).
+                    const UvRect uv{{float(r.x0) / res, float(r.y0) / res},
+                                    {float(r.x1 + 1) / res, float(r.y1 + 1) / res}};
+                    // Peel p's surfaces lie behind peel 0's on every ray (nearer the apex): its quads
+                    // sit p quarter-slices nearer the apex, so a pixel's two peels in one slice are
+                    // not coplanar fragments (which one-layer-per-depth peeling would merge).
+                    const auto q = f.sliceQuad(s, L, uv, -0.25f * float(p));
+                    const glm::vec2 c[4] = {uv.min, {uv.max.x, uv.min.y}, uv.max, {uv.min.x, uv.max.y}};
+                    level.first[i] = GLint(vertices.size() / kFloatsPerVertex);
+                    level.count[i] = kVerticesPerQuad;
+                    for (int k : {0, 2, 1, 0, 3, 2})  // counter-clockwise seen from the viewer's side (+axis)
+                        vertices.insert(vertices.end(), {q[k].x, q[k].y, q[k].z, c[k].x, c[k].y,
+                                                         float(view * peels + p), float(s)});
+                    ++level.quads;
+                }
+            level.viewCount[std::size_t(view)] =
+                GLint(vertices.size() / kFloatsPerVertex) - level.viewFirst[std::size_t(view)];
+        }
     }
     vertexBytes_ = vertices.size() * sizeof(float);
     quadBuffer_ = gl::Buffer::create();
     glNamedBufferStorage(quadBuffer_.id(), GLsizeiptr(std::max<std::size_t>(vertexBytes_, 4)),
                          vertices.empty() ? nullptr : vertices.data(), 0);
     quadArray_ = makeStandInVertexArray(quadBuffer_.id());
+}
+
+void LayeredImpostor::mergeHoleSlices() {
+    const Level& fine = levels_[0];
+    for (std::size_t l = 1; l < levels_.size(); ++l) {
+        Level& level = levels_[l];
+        const int merged = fine.slices / level.slices;
+        level.holeSlices.clear();
+        for (const auto& [pair, slices] : fine.holeSlices) {
+            std::set<int> coarse;
+            for (int local : slices)
+                coarse.insert((local / fine.slices) * level.slices + (local % fine.slices) / merged);
+            level.holeSlices[pair] = std::vector<int>(coarse.begin(), coarse.end());
+        }
+    }
 }
 
 void LayeredImpostor::findHoleSlices(const std::vector<BakePart>& parts) {
@@ -338,32 +372,36 @@ void LayeredImpostor::findHoleSlices(const std::vector<BakePart>& parts) {
         glUseProgram(id);
         glBindVertexArray(quadArray_.id());
         glStencilFunc(GL_ALWAYS, 0, 0xFF);
-        if (viewCount_[std::size_t(v)] > 0) glDrawArrays(GL_TRIANGLES, viewFirst_[std::size_t(v)], viewCount_[std::size_t(v)]);
+        const Level& fine = levels_[0];
+        if (fine.viewCount[std::size_t(v)] > 0) glDrawArrays(GL_TRIANGLES, fine.viewFirst[std::size_t(v)], fine.viewCount[std::size_t(v)]);
         // Vi: ids where V left the stencil clear, nearest slice wins.
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glStencilFunc(GL_EQUAL, 1, 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-        if (viewCount_[std::size_t(w)] > 0) glDrawArrays(GL_TRIANGLES, viewFirst_[std::size_t(w)], viewCount_[std::size_t(w)]);
+        if (fine.viewCount[std::size_t(w)] > 0) glDrawArrays(GL_TRIANGLES, fine.viewFirst[std::size_t(w)], fine.viewCount[std::size_t(w)]);
         glGetTextureImage(ids.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, GLsizei(image.size() * sizeof(GLuint)), image.data());
         std::set<int> seen;
         for (GLuint value : image)
             if (value > 0 && value <= GLuint(peels * L)) seen.insert(int(value) - 1);
-        holeSlices_[{v, w}] = std::vector<int>(seen.begin(), seen.end());
+        levels_[0].holeSlices[{v, w}] = std::vector<int>(seen.begin(), seen.end());
     }
     glBindTextureUnit(gpu::BIND_SLICE_ATLAS, 0);
 }
 
-std::pair<GLint, GLsizei> LayeredImpostor::sliceRange(int view, int peel, int slice) const {
-    const std::size_t i = rangeIndex(view, peel, slice);
-    return {first_[i], count_[i]};
+std::pair<GLint, GLsizei> LayeredImpostor::sliceRange(int view, int peel, int slice, int level) const {
+    const std::size_t i = rangeIndex(view, peel, slice, level);
+    const Level& l = levels_[std::size_t(level)];
+    return {l.first[i], l.count[i]};
 }
 
-const std::vector<int>& LayeredImpostor::holeSlices(int view, int adjacentView) const {
+const std::vector<int>& LayeredImpostor::holeSlices(int view, int adjacentView, int level) const {
     static const std::vector<int> none;
-    const auto it = holeSlices_.find({view, adjacentView});
-    return it == holeSlices_.end() ? none : it->second;
+    if (!valid()) return none;
+    const auto& holes = levels_[std::size_t(level)].holeSlices;
+    const auto it = holes.find({view, adjacentView});
+    return it == holes.end() ? none : it->second;
 }
 
 int LayeredImpostor::nearestView(const glm::vec3& eye) const {
@@ -377,13 +415,15 @@ float LayeredImpostor::nearestViewAngle(const glm::vec3& eye) const {
     return angleToNearestView(directions_, eye - centre_);
 }
 
-StandInDraw LayeredImpostor::drawFor(const glm::vec3& eye, bool fillHoles) const {
+StandInDraw LayeredImpostor::drawFor(const glm::vec3& eye, bool fillHoles, int levelIndex) const {
     StandInDraw d;
     if (!valid()) return d;
+    levelIndex = std::clamp(levelIndex, 0, levels() - 1);
+    const Level& level = levels_[std::size_t(levelIndex)];
     d.vertexArray = quadArray_.id();
     d.atlas = atlas_.id();
     d.albedo = albedo_.id();
-    d.slices = settings_.slices;
+    d.slices = level.slices;
     d.overlap = settings_.overlap;
     auto add = [&](GLint first, GLsizei count) {
         if (count <= 0) return;
@@ -393,12 +433,12 @@ StandInDraw LayeredImpostor::drawFor(const glm::vec3& eye, bool fillHoles) const
     const glm::vec3 dir = eye - centre_;
     const std::vector<int> views =
         glm::dot(dir, dir) > 0.0f ? nearestViews(directions_, dir, 3) : std::vector<int>{0};
-    add(viewFirst_[std::size_t(views[0])], viewCount_[std::size_t(views[0])]);
+    add(level.viewFirst[std::size_t(views[0])], level.viewCount[std::size_t(views[0])]);
     if (fillHoles)
         for (std::size_t k = 1; k < views.size(); ++k)
-            for (int local : holeSlices(views[0], views[k])) {
-                const int peel = local / settings_.slices, slice = local % settings_.slices;
-                const auto [first, count] = sliceRange(views[k], peel, slice);
+            for (int local : holeSlices(views[0], views[k], levelIndex)) {
+                const int peel = local / level.slices, slice = local % level.slices;
+                const auto [first, count] = sliceRange(views[k], peel, slice, levelIndex);
                 add(first, count);
             }
     return d;

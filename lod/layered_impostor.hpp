@@ -108,29 +108,45 @@ public:
     // The ranges to draw for an eye at `eyeInObjectSpace`: every non-empty slice of the nearest
     // view (all its peels) and, with fillHoles, the slices of the two other nearest views that
     // the preprocessing found closing that view's holes. An eye at the centre uses view 0.
-    // Empty ranges when !valid().
-    StandInDraw drawFor(const glm::vec3& eyeInObjectSpace, bool fillHoles = true) const;
+    // `level` (0..levels() - 1) draws that level's merged slices. Empty ranges when !valid().
+    StandInDraw drawFor(const glm::vec3& eyeInObjectSpace, bool fillHoles = true, int level = 0) const;
+
+    // Levels of merged slices, from the same images (no bake of their own): level l has
+    // levelSlices(l) = slices / 2^l slices, each accepting the depth codes of 2^l neighbouring
+    // ones (overlap in its own widths), with its own rectangles and quads in the same vertex
+    // buffer. The images hold one depth code per texel, so a slice is only a quad at a depth
+    // that accepts the codes in its interval: merging needs no new texels. Level 0 is the baked
+    // count; coarser levels go down to kLeastLevelSlices while the count halves exactly. A far
+    // stand-in whose error bound allows it draws a coarser level: fewer, larger quads, whose cost
+    // follows the count (lod_select.hpp).
+    static constexpr int kLeastLevelSlices = 8;
+    int levels() const { return int(levels_.size()); }
+    int levelSlices(int level) const { return levels_[std::size_t(level)].slices; }
     // The view error: angle in radians between the direction centre -> eye and the nearest view.
     float nearestViewAngle(const glm::vec3& eyeInObjectSpace) const;
     int nearestView(const glm::vec3& eyeInObjectSpace) const;
 
     // Images and rectangles exactly per the formulas (impostor_memory.hpp), the vertex buffer apart.
     ImpostorMemory bytes() const;
-    int quadCount() const { return quads_; }
+    int quadCount(int level = 0) const { return valid() ? levels_[std::size_t(level)].quads : 0; }
     double bakeMs() const { return bakeMs_; }
 
     const std::vector<glm::vec3>& directions() const { return directions_; }
     const ImpostorFrame& frame(int view) const { return frames_[std::size_t(view)]; }
     glm::vec3 centre() const { return centre_; }
     float radius() const { return radius_; }
-    SliceRect rectangle(int view, int peel, int slice) const { return rects_[rangeIndex(view, peel, slice)]; }
+    // Of a level's (view, peel, slice), slice < levelSlices(level).
+    SliceRect rectangle(int view, int peel, int slice, int level = 0) const {
+        return levels_[std::size_t(level)].rects[rangeIndex(view, peel, slice, level)];
+    }
     // Vertex range of one (view, peel, slice): count 0 when the slice is empty.
-    std::pair<GLint, GLsizei> sliceRange(int view, int peel, int slice) const;
+    std::pair<GLint, GLsizei> sliceRange(int view, int peel, int slice, int level = 0) const;
     // The adjacent pairs (V, Vi) the preprocessing ran, and for each the slices of Vi (as
     // peel * slices + slice) that showed through V's holes (pixels the mesh covers and V's
-    // impostor does not) from the direction halfway between.
+    // impostor does not) from the direction halfway between. A coarser level's are the merged
+    // slices holding those (slice / 2^l).
     const std::vector<std::pair<int, int>>& adjacency() const { return adjacency_; }
-    const std::vector<int>& holeSlices(int view, int adjacentView) const;
+    const std::vector<int>& holeSlices(int view, int adjacentView, int level = 0) const;
     GLuint atlas() const { return atlas_.id(); }
     GLuint albedo() const { return albedo_.id(); }  // 0 without a BakeMaterial
     GLuint vertexArray() const { return quadArray_.id(); }
@@ -141,14 +157,19 @@ private:
     static gl::Texture layerTexture(GLenum format, int resolution, int layers);
     // Every layer of an atlas-shaped texture (the atlas or the albedo) as RGBA8 bytes.
     std::vector<std::uint8_t> readLayers(GLuint texture) const;
-    std::size_t rangeIndex(int view, int peel, int slice) const {
-        return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) * std::size_t(settings_.slices) +
+    std::size_t rangeIndex(int view, int peel, int slice, int level = 0) const {
+        return (std::size_t(view) * std::size_t(settings_.peels) + std::size_t(peel)) *
+                   std::size_t(levels_[std::size_t(level)].slices) +
                std::size_t(slice);
     }
     void bakeImages(const std::vector<BakePart>& parts, const GpuScene* albedoScene);
-    void buildRectangles(const std::vector<std::uint8_t>& texels);
+    // Every level's rectangles from the images' depth codes (levels_ sized here).
+    void buildRectangles(std::span<const std::uint8_t> texels);
+    std::vector<SliceRect> rectanglesFor(std::span<const std::uint8_t> texels, int slices) const;
     void buildQuads();
     void findHoleSlices(const std::vector<BakePart>& parts);
+    // The coarser levels' hole slices from level 0's.
+    void mergeHoleSlices();
 
     ImpostorSettings settings_;
     std::string reason_;
@@ -159,14 +180,18 @@ private:
     gl::Texture atlas_, albedo_;
     gl::Buffer quadBuffer_;
     gl::VertexArray quadArray_;
-    std::vector<SliceRect> rects_;          // per rangeIndex
-    std::vector<GLint> first_;              // per rangeIndex
-    std::vector<GLsizei> count_;            // per rangeIndex, 0 empty
-    std::vector<GLint> viewFirst_;          // per view: all its peels' quads are contiguous
-    std::vector<GLsizei> viewCount_;
+    struct Level {
+        int slices = 0;
+        std::vector<SliceRect> rects;    // per rangeIndex
+        std::vector<GLint> first;        // per rangeIndex
+        std::vector<GLsizei> count;      // per rangeIndex, 0 empty
+        std::vector<GLint> viewFirst;    // per view: all its peels' quads are contiguous
+        std::vector<GLsizei> viewCount;
+        std::map<std::pair<int, int>, std::vector<int>> holeSlices;
+        int quads = 0;
+    };
+    std::vector<Level> levels_;  // [0]: the baked slices; then each half the last
     std::vector<std::pair<int, int>> adjacency_;
-    std::map<std::pair<int, int>, std::vector<int>> holeSlices_;
-    int quads_ = 0;
     std::uint64_t vertexBytes_ = 0;
     double bakeMs_ = 0.0;
 };

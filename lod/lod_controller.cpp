@@ -17,27 +17,28 @@ namespace {
 // over all peels (so up to `peels`), and the quads drawn (its non-empty slices, and with hole
 // filling the hole-closing slices of two neighbours, each neighbour's the mean over the view's
 // adjacent pairs). Fixed once baked, so worked out once per mesh.
-std::vector<ViewDrawn> viewsDrawn(const LayeredImpostor& impostor, bool fillsHoles) {
+std::vector<ViewDrawn> viewsDrawn(const LayeredImpostor& impostor, bool fillsHoles, int level) {
     const ImpostorSettings& s = impostor.settings();
+    const int slices = impostor.levelSlices(level);
     std::vector<ViewDrawn> views(std::size_t(s.views));
     std::vector<double> holeQuads(std::size_t(s.views), 0.0), pairs(std::size_t(s.views), 0.0);
     if (fillsHoles)
         for (const auto& [v, w] : impostor.adjacency()) {
-            for (int local : impostor.holeSlices(v, w))
+            for (int local : impostor.holeSlices(v, w, level))
                 holeQuads[std::size_t(v)] +=
-                    double(impostor.sliceRange(w, local / s.slices, local % s.slices).second / 6);
+                    double(impostor.sliceRange(w, local / slices, local % slices, level).second / 6);
             pairs[std::size_t(v)] += 1.0;
         }
     for (int view = 0; view < s.views; ++view) {
         double texels = 0.0, quads = 0.0;
         for (int peel = 0; peel < s.peels; ++peel)
-            for (int slice = 0; slice < s.slices; ++slice) {
-                const SliceRect r = impostor.rectangle(view, peel, slice);
+            for (int slice = 0; slice < slices; ++slice) {
+                const SliceRect r = impostor.rectangle(view, peel, slice, level);
                 if (!r.empty()) texels += double(r.x1 - r.x0 + 1) * double(r.y1 - r.y0 + 1);
-                quads += double(impostor.sliceRange(view, peel, slice).second / 6);
+                quads += double(impostor.sliceRange(view, peel, slice, level).second / 6);
             }
         ViewDrawn& d = views[std::size_t(view)];
-        d.fraction = texels / (double(s.resolution) * s.resolution * s.slices);
+        d.fraction = texels / (double(s.resolution) * s.resolution * slices);
         const std::size_t v = std::size_t(view);
         d.quads = quads + (pairs[v] > 0.0 ? 2.0 * holeQuads[v] / pairs[v] : 0.0);
     }
@@ -204,8 +205,14 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         inputs_[i].impostor.resolution = impostor->settings().resolution;
         inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
+        const int levels = std::min(impostor->levels(), 1 + ImpostorSummary::kMaxCoarserLevels);
+        inputs_[i].impostor.coarserLevels = options_.mergedSlices ? levels - 1 : 0;
+        for (int level = 1; level < levels; ++level)
+            inputs_[i].impostor.coarser[std::size_t(level - 1)].slices = impostor->levelSlices(level);
         auto& drawn = viewsDrawn_[std::size_t(keys_.ofUnit[i])];
-        if (drawn.empty()) drawn = viewsDrawn(*impostor, !impostors_->transparent(keys_.ofUnit[i]));
+        if (drawn.empty())
+            for (int level = 0; level < levels; ++level)
+                drawn.push_back(viewsDrawn(*impostor, !impostors_->transparent(keys_.ofUnit[i]), level));
     }
 }
 
@@ -238,8 +245,9 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
     updateViewAngles(camera.position);
     unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
     if (enforceMemoryCap()) unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
-    std::vector<bool> use(inputs_.size());
-    for (std::size_t i = 0; i < use.size(); ++i) use[i] = unitSelection_.objects[i].impostor;
+    std::vector<int> use(inputs_.size());  // per unit: -1 geometry, else the stand-in's level
+    for (std::size_t i = 0; i < use.size(); ++i)
+        use[i] = unitSelection_.objects[i].impostor ? unitSelection_.objects[i].level : -1;
     standIns_ = impostors_->drawsFor(camera.position, use);
     // Per object: its unit's decision (a volume medium, in no unit, its own triangles); the totals
     // are the units'.
@@ -294,9 +302,15 @@ void LodController::updateViewAngles(const glm::vec3& eye) {
         const glm::vec3 local = impostors_->eyeInObject(keys_.units.units[i].objects[0], eye);
         const int nearest = impostor.nearestView(local);
         inputs_[i].impostor.viewAngleRadians = impostor.nearestViewAngle(local);
-        const ViewDrawn& drawn = viewsDrawn_[std::size_t(keys_.ofUnit[i])][std::size_t(nearest)];
+        const auto& levels = viewsDrawn_[std::size_t(keys_.ofUnit[i])];
+        const ViewDrawn& drawn = levels[0][std::size_t(nearest)];
         inputs_[i].impostor.drawnFraction = drawn.fraction;
         inputs_[i].impostor.quads = drawn.quads;
+        for (std::size_t level = 1; level < levels.size(); ++level) {
+            ImpostorSummary::Level& coarse = inputs_[i].impostor.coarser[level - 1];
+            coarse.drawnFraction = levels[level][std::size_t(nearest)].fraction;
+            coarse.quads = levels[level][std::size_t(nearest)].quads;
+        }
     }
 }
 

@@ -76,13 +76,28 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
 
     if (object.hasImpostor) {
         const ImpostorSummary& s = object.impostor;
-        d.layerPixels = double(std::max(s.slices, 1)) * squarePx * std::clamp(s.drawnFraction, 0.0, double(std::max(s.peels, 1)));
-        d.quads = s.quads > 0.0 ? s.quads : double(std::max(s.slices, 1));
-        d.impostorMs = model.impostorMs(d.layerPixels, d.quads, object.standInDraws);
-        const ImpostorError e = impostorError(d.projectedPx, s.slices, s.resolution, s.viewAngleRadians);
-        d.parallaxPx = e.parallaxPx;
-        d.samplingPx = e.samplingPx;
-        d.errorPx = e.totalPx();
+        // Level l's prediction and error into d; level 0 is the baked slices.
+        auto judge = [&](int level, LodDecision& out) {
+            const int slices = level == 0 ? s.slices : s.coarser[std::size_t(level - 1)].slices;
+            const double fraction = level == 0 ? s.drawnFraction : s.coarser[std::size_t(level - 1)].drawnFraction;
+            const double quads = level == 0 ? s.quads : s.coarser[std::size_t(level - 1)].quads;
+            out.layerPixels = double(std::max(slices, 1)) * squarePx * std::clamp(fraction, 0.0, double(std::max(s.peels, 1)));
+            out.quads = quads > 0.0 ? quads : double(std::max(slices, 1));
+            out.impostorMs = model.impostorMs(out.layerPixels, out.quads, object.standInDraws);
+            const ImpostorError e = impostorError(out.projectedPx, slices, s.resolution, s.viewAngleRadians);
+            out.parallaxPx = e.parallaxPx;
+            out.samplingPx = e.samplingPx;
+            out.errorPx = e.totalPx();
+            out.level = level;
+        };
+        judge(0, d);
+        // Auto: the cheapest level within the bound (coarser levels trade parallax for quads).
+        if (options.mode == LodMode::Auto && d.errorPx <= options.maxErrorPx)
+            for (int level = 1; level <= std::min(s.coarserLevels, ImpostorSummary::kMaxCoarserLevels); ++level) {
+                LodDecision coarse = d;
+                judge(level, coarse);
+                if (coarse.errorPx <= options.maxErrorPx && coarse.impostorMs < d.impostorMs) d = coarse;
+            }
     }
     if (options.mode == LodMode::Geometry) return geometry(LodReason::GeometryForced);
     if (!object.hasImpostor) return geometry(LodReason::NoImpostor);

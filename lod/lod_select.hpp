@@ -15,12 +15,15 @@
 //  4. no impostor baked for the object: geometry;
 //  5. mode Impostors: impostor (forced, whatever its error or cost);
 //  6. mode Auto: error above maxErrorPx: geometry; else the cheaper of the two predictions
-//     (ties go to geometry: exact for the same cost).
+//     (ties go to geometry: exact for the same cost). The impostor's prediction is that of the
+//     cheapest of its levels of merged slices whose error is within the bound (level 0, the
+//     baked slices, when no coarser one is); forced impostors draw level 0.
 #include "lod/lod_cost_model.hpp"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -56,6 +59,16 @@ struct ImpostorSummary {
     // The slice quads drawn from the nearest view (its non-empty slices and the hole-closing
     // slices of its neighbours, LayeredImpostor::drawFor); 0: one per slice.
     double quads = 0.0;
+    // The coarser levels of merged slices (LayeredImpostor::levels), each with the same three
+    // figures as level 0 above; auto draws the cheapest level whose error is within the bound.
+    struct Level {
+        int slices = 1;
+        double drawnFraction = 1.0;
+        double quads = 0.0;
+    };
+    static constexpr int kMaxCoarserLevels = 6;  // 256 slices down to 8
+    std::array<Level, kMaxCoarserLevels> coarser{};
+    int coarserLevels = 0;
 };
 
 // One object, or a LOD unit of several (lod/lod_units.hpp) decided as one.
@@ -128,6 +141,7 @@ struct LodDecision {
     double layerPixels = 0.0;    // the impostor's predicted layer pixels (0 without one)
     double quads = 0.0;          // the impostor's predicted quads (0 without one)
     double parallaxPx = 0.0, samplingPx = 0.0;
+    int level = 0;               // the impostor's level of merged slices (ImpostorSummary::coarser)
 };
 
 // One line saying why, e.g. "too close: distance 1.50 < 2 x radius 1.00" or

@@ -162,3 +162,39 @@ TEST_CASE("lod controller: every technique draws forced transparent impostors (e
         if (id != "bun") CHECK(r.result.stats.overflowed == g.result.stats.overflowed);
     }
 }
+
+TEST_CASE("lod controller: merged slices only where asked, each stand-in at the level its unit chose") {
+    // builtin:orchard:100 from its default camera, auto with a cost model that makes every
+    // stand-in cheaper than its tree (no calibration): with merged slices the far trees draw
+    // fewer slices (their errors allow it), each stand-in's draw at its unit's level; without,
+    // every stand-in draws the baked 32.
+    test::Fixture fx(makeOrchardScene(100, false));
+    for (bool merged : {false, true}) {
+        CAPTURE(merged);
+        LodOptions o = smallImpostors(LodMode::Auto);
+        o.impostor.slices = 32;
+        o.mergedSlices = merged;
+        LodCostModel model;
+        model.geometryFixedMs = 1.0;  // a tree's draw costs more than any stand-in
+        model.impostorMsPerMegapixel = 1.0;
+        o.costModel = model;
+        LodController lod(*fx.gpu, o);
+        const StandIns* s = lod.select(fx.camera, {160, 100});
+        REQUIRE(s);
+        int coarser = 0, standIns = 0;
+        const auto& units = lod.unitSelection().objects;
+        for (std::size_t u = 0; u < units.size(); ++u) {
+            if (!units[u].impostor) continue;
+            ++standIns;
+            coarser += units[u].level > 0 ? 1 : 0;
+            const int object = lod.units().units[u].objects[0];
+            const StandInDraw* d = (*s)[std::size_t(object)];
+            REQUIRE(d != nullptr);
+            CHECK(d->slices == (32 >> units[u].level));
+            CHECK(units[u].errorPx <= o.maxErrorPx);
+        }
+        CHECK(standIns > 0);
+        if (merged) CHECK(coarser > 0);
+        else CHECK(coarser == 0);
+    }
+}

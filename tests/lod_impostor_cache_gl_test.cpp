@@ -69,6 +69,7 @@ TEST_CASE("impostor cache: what is read back equals what was baked") {
     for (int peels : {1, 2}) {
         ImpostorSettings s = small();
         s.peels = peels;
+        s.slices = 16;  // two levels: 16 and 8 merged
         const LayeredImpostor baked(fx.gpu->meshOf(1), fx.gpu->scene().meshes[std::size_t(mesh)].bounds(), s);
         REQUIRE(baked.valid());
         const std::vector<std::uint8_t> bytes = baked.serialize();
@@ -81,19 +82,28 @@ TEST_CASE("impostor cache: what is read back equals what was baked") {
         CHECK(loaded.centre() == baked.centre());
         CHECK(loaded.radius() == baked.radius());
         CHECK(texelsOf(loaded.atlas(), loaded) == texelsOf(baked.atlas(), baked));
-        for (int view = 0; view < s.views; ++view)
-            for (int slice = 0; slice < s.slices; ++slice) {
-                const SliceRect a = loaded.rectangle(view, 0, slice), b = baked.rectangle(view, 0, slice);
-                REQUIRE(std::tie(a.x0, a.y0, a.x1, a.y1) == std::tie(b.x0, b.y0, b.x1, b.y1));
-                REQUIRE(loaded.sliceRange(view, 0, slice) == baked.sliceRange(view, 0, slice));
-            }
+        // Every level of merged slices, rebuilt from the loaded images, as baked.
+        REQUIRE(loaded.levels() == baked.levels());
+        CHECK(baked.levels() > 1);
+        for (int level = 0; level < baked.levels(); ++level) {
+            CAPTURE(level);
+            CHECK(loaded.quadCount(level) == baked.quadCount(level));
+            for (int view = 0; view < s.views; ++view)
+                for (int slice = 0; slice < baked.levelSlices(level); ++slice) {
+                    const SliceRect a = loaded.rectangle(view, 0, slice, level), b = baked.rectangle(view, 0, slice, level);
+                    REQUIRE(std::tie(a.x0, a.y0, a.x1, a.y1) == std::tie(b.x0, b.y0, b.x1, b.y1));
+                    REQUIRE(loaded.sliceRange(view, 0, slice, level) == baked.sliceRange(view, 0, slice, level));
+                }
+            for (const auto& [v, w] : baked.adjacency())
+                CHECK(loaded.holeSlices(v, w, level) == baked.holeSlices(v, w, level));
+            // The same draws for an eye anywhere.
+            const glm::vec3 eye = baked.centre() + glm::vec3(3.0f, 1.0f, 2.0f) * baked.radius();
+            const StandInDraw a = baked.drawFor(eye, true, level), b = loaded.drawFor(eye, true, level);
+            CHECK(a.first == b.first);
+            CHECK(a.count == b.count);
+            CHECK(a.slices == baked.levelSlices(level));
+        }
         CHECK(loaded.adjacency() == baked.adjacency());
-        for (const auto& [v, w] : baked.adjacency()) CHECK(loaded.holeSlices(v, w) == baked.holeSlices(v, w));
-        // The same draws for an eye anywhere.
-        const glm::vec3 eye = baked.centre() + glm::vec3(3.0f, 1.0f, 2.0f) * baked.radius();
-        const StandInDraw a = baked.drawFor(eye), b = loaded.drawFor(eye);
-        CHECK(a.first == b.first);
-        CHECK(a.count == b.count);
         // Serialising what was loaded gives the same bytes.
         CHECK(loaded.serialize() == bytes);
     }

@@ -162,6 +162,63 @@ TEST_CASE("lod impostor gl: transparent peels keep the far then the near surface
         for (int i = 0; i < res * res; ++i) CHECK(texels[(std::size_t(view * 3 + 2) * res * res + i) * 4 + 3] == 0);
 }
 
+namespace {
+
+// Checks every rectangle and quad of `level` (with L slices) against the texels, by the
+// contract's rule in float as the shader does it (strict) and the same rule with 1e-4 slice widths
+// of margin at its boundaries (loose): a code whose t * L falls on a slice boundary may round
+// either way on a GPU, so the rectangles include it in both slices. Expected: strict inside r, r
+// equal to loose. Returns the level's non-empty slices.
+int checkLevelRectangles(const LayeredImpostor& imp, const std::vector<std::uint8_t>& texels, int res, int views,
+                         int L, int level, float overlap) {
+    int nonEmpty = 0;
+    for (int view = 0; view < views; ++view)
+        for (int s = 0; s < L; ++s) {
+            struct Rect { int x0 = 1 << 20, y0 = 1 << 20, x1 = -1, y1 = -1; };
+            Rect strict, loose;
+            auto grow = [](Rect& r, int x, int y) {
+                r.x0 = std::min(r.x0, x), r.y0 = std::min(r.y0, y), r.x1 = std::max(r.x1, x), r.y1 = std::max(r.y1, y);
+            };
+            for (int y = 0; y < res; ++y)
+                for (int x = 0; x < res; ++x) {
+                    const int code = texels[(std::size_t(view) * res * res + std::size_t(y) * res + x) * 4 + 3];
+                    if (code == 0) continue;
+                    const float t = (float(code) - 0.5f) / 255.0f;
+                    const bool accept = overlap == 0.0f
+                                            ? std::min(int(t * float(L)), L - 1) == s
+                                            : std::abs(t - (float(s) + 0.5f) / float(L)) <= (0.5f + overlap) / float(L);
+                    const double tL = (double(code) - 0.5) / 255.0 * L, m = 1e-4;
+                    const bool nearBoundary =
+                        overlap == 0.0f ? (std::floor(tL - m) == s || std::floor(tL + m) == s)
+                                        : (s >= std::ceil(tL - 1.0 - overlap - m) && s <= std::floor(tL + overlap + m));
+                    if (accept) grow(strict, x, y);
+                    if (accept || nearBoundary) grow(loose, x, y);
+                }
+            const SliceRect r = imp.rectangle(view, 0, s, level);
+            const auto [first, count] = imp.sliceRange(view, 0, s, level);
+            if (loose.x1 < 0) {
+                CHECK(r.empty());
+                CHECK(count == 0);
+                continue;
+            }
+            ++nonEmpty;
+            CHECK(count == 6);
+            CHECK(int(r.x0) == loose.x0);
+            CHECK(int(r.y0) == loose.y0);
+            CHECK(int(r.x1) == loose.x1);
+            CHECK(int(r.y1) == loose.y1);
+            if (strict.x1 >= 0) {
+                CHECK(int(r.x0) <= strict.x0);
+                CHECK(int(r.y0) <= strict.y0);
+                CHECK(int(r.x1) >= strict.x1);
+                CHECK(int(r.y1) >= strict.y1);
+            }
+        }
+    return nonEmpty;
+}
+
+}  // namespace
+
 TEST_CASE("lod impostor gl: rectangles bound exactly the texels each slice accepts; quads and memory") {
     test::Fixture fx(singleObjectScene(makeBox(glm::vec3(-1.0f, -0.5f, -0.25f), glm::vec3(1.0f, 0.5f, 0.25f))));
     for (float overlap : {0.0f, 0.5f, 2.0f}) {
@@ -172,67 +229,63 @@ TEST_CASE("lod impostor gl: rectangles bound exactly the texels each slice accep
         settings.overlap = overlap;
         const LayeredImpostor imp(fx.gpu->meshOf(0), fx.gpu->scene().meshes[0].bounds(), settings);
         REQUIRE(imp.valid());
+        // 10 slices halve to 5, under kLeastLevelSlices: one level.
+        CHECK(imp.levels() == 1);
         const auto texels = readAtlas(imp);
-        const int res = 40, L = 10;
-        int nonEmpty = 0;
-        for (int view = 0; view < 12; ++view)
-            for (int s = 0; s < L; ++s) {
-                // The contract's rule in float as the shader does it (strict), and the same rule
-                // with 1e-4 slice widths of margin at its boundaries (loose): a code whose t * L
-                // falls on a slice boundary may round either way on a GPU, so the rectangles
-                // include it in both slices. Expected: strict inside r, r equal to loose.
-                struct Rect { int x0 = 1 << 20, y0 = 1 << 20, x1 = -1, y1 = -1; };
-                Rect strict, loose;
-                auto grow = [](Rect& r, int x, int y) {
-                    r.x0 = std::min(r.x0, x), r.y0 = std::min(r.y0, y), r.x1 = std::max(r.x1, x), r.y1 = std::max(r.y1, y);
-                };
-                for (int y = 0; y < res; ++y)
-                    for (int x = 0; x < res; ++x) {
-                        const int code = texels[(std::size_t(view) * res * res + std::size_t(y) * res + x) * 4 + 3];
-                        if (code == 0) continue;
-                        const float t = (float(code) - 0.5f) / 255.0f;
-                        const bool accept = overlap == 0.0f
-                                                ? std::min(int(t * float(L)), L - 1) == s
-                                                : std::abs(t - (float(s) + 0.5f) / float(L)) <= (0.5f + overlap) / float(L);
-                        const double tL = (double(code) - 0.5) / 255.0 * L, m = 1e-4;
-                        const bool nearBoundary =
-                            overlap == 0.0f ? (std::floor(tL - m) == s || std::floor(tL + m) == s)
-                                            : (s >= std::ceil(tL - 1.0 - overlap - m) && s <= std::floor(tL + overlap + m));
-                        if (accept) grow(strict, x, y);
-                        if (accept || nearBoundary) grow(loose, x, y);
-                    }
-                const SliceRect r = imp.rectangle(view, 0, s);
-                const auto [first, count] = imp.sliceRange(view, 0, s);
-                if (loose.x1 < 0) {
-                    CHECK(r.empty());
-                    CHECK(count == 0);
-                    continue;
-                }
-                ++nonEmpty;
-                CHECK(count == 6);
-                CHECK(int(r.x0) == loose.x0);
-                CHECK(int(r.y0) == loose.y0);
-                CHECK(int(r.x1) == loose.x1);
-                CHECK(int(r.y1) == loose.y1);
-                if (strict.x1 >= 0) {
-                    CHECK(int(r.x0) <= strict.x0);
-                    CHECK(int(r.y0) <= strict.y0);
-                    CHECK(int(r.x1) >= strict.x1);
-                    CHECK(int(r.y1) >= strict.y1);
-                }
-            }
+        const int nonEmpty = checkLevelRectangles(imp, texels, 40, 12, 10, 0, overlap);
         CHECK(imp.quadCount() == nonEmpty);
         // Memory: Table 2's images, 4 bytes per rectangle, and the quads' vertices apart.
         const ImpostorMemory b = imp.bytes();
         CHECK(b.images == 4ull * 40 * 40 * 12);
         CHECK(b.rectangles == 4ull * 12 * 10);
         CHECK(b.vertexBuffer == std::uint64_t(imp.quadCount()) * 6 * 7 * sizeof(float));
-        MESSAGE("overlap ", overlap, ": ", nonEmpty, " of ", 12 * L, " slices drawn");
+        MESSAGE("overlap ", overlap, ": ", nonEmpty, " of ", 12 * 10, " slices drawn");
         if (overlap > 0.0f) {
             // More reach, no fewer slices.
             CHECK(nonEmpty >= 12);
         }
     }
+}
+
+TEST_CASE("lod impostor gl: levels of merged slices: 32, 16 and 8 slices from one bake, each exact") {
+    // A level's slice accepts what 2^l neighbouring slices accept, with the overlap in its own
+    // widths: its rectangles follow the same rule at L / 2^l, from the same texels. Fewer, larger
+    // quads: at most the finer level's count, and the vertex buffer holds every level's.
+    test::Fixture fx(singleObjectScene(makeSphere(1.0f, 24, 12)));
+    ImpostorSettings settings;
+    settings.views = 12;
+    settings.resolution = 40;
+    settings.slices = 32;
+    const LayeredImpostor imp(fx.gpu->meshOf(0), fx.gpu->scene().meshes[0].bounds(), settings);
+    REQUIRE(imp.valid());
+    REQUIRE(imp.levels() == 3);
+    const auto texels = readAtlas(imp);
+    int quads = 0;
+    for (int level = 0; level < imp.levels(); ++level) {
+        CAPTURE(level);
+        const int L = 32 >> level;
+        CHECK(imp.levelSlices(level) == L);
+        const int nonEmpty = checkLevelRectangles(imp, texels, 40, 12, L, level, settings.overlap);
+        CHECK(imp.quadCount(level) == nonEmpty);
+        if (level > 0) CHECK(imp.quadCount(level) <= imp.quadCount(level - 1));
+        quads += imp.quadCount(level);
+        // A level's draw without hole filling: its slice count and the nearest view's
+        // non-empty slices of this level, six vertices each.
+        const glm::vec3 eye(0, 0, 5);
+        const StandInDraw d = imp.drawFor(eye, false, level);
+        CHECK(d.slices == L);
+        GLsizei drawn = 0, expected = 0;
+        for (GLsizei c : d.count) drawn += c;
+        for (int s = 0; s < L; ++s) expected += imp.sliceRange(imp.nearestView(eye), 0, s, level).second;
+        CHECK(drawn == expected);
+        CHECK(expected > 0);
+    }
+    MESSAGE("quads by level: ", imp.quadCount(0), ", ", imp.quadCount(1), ", ", imp.quadCount(2));
+    CHECK(imp.quadCount(2) < imp.quadCount(0) / 2);
+    CHECK(imp.bytes().vertexBuffer == std::uint64_t(quads) * 6 * 7 * sizeof(float));
+    // The rectangles' bytes stay the baked level's (the paper's formula): the coarser ones are
+    // rebuilt from the images.
+    CHECK(imp.bytes().rectangles == 4ull * 12 * 32);
 }
 
 TEST_CASE("lod impostor gl: no triangles, zero radius or bad settings give no impostor and a reason") {

@@ -88,10 +88,10 @@ Comparison compare(const Image& geometry, const Image& impostor, const glm::vec3
 
 // Geometry and impostor renders of object 0 from `camera` with `technique`.
 Comparison renderBoth(const test::Fixture& fx, ImpostorSet& set, const Camera& camera,
-                      const std::string& technique = "abuffer") {
+                      const std::string& technique = "abuffer", int level = 0) {
     const Image geometry = test::renderWith(*fx.gpu, camera, kSize, technique).image;
     std::vector<const StandInDraw*> standIns(fx.gpu->objects().size(), nullptr);
-    standIns[0] = set.drawFor(0, camera.position);
+    standIns[0] = set.drawFor(0, camera.position, level);
     REQUIRE(standIns[0] != nullptr);
     FrameOptions options;
     options.standIns = &standIns;
@@ -123,7 +123,7 @@ Mesh twoBoxes() {
 
 // Mean error over 4 baked views x 4 directions `degrees` away from each (azimuths 0, 90, 180,
 // 270 deg): one direction alone mixes the warp's error with how the silhouette meets the pixels.
-Comparison averagedAt(const test::Fixture& fx, ImpostorSet& set, float degrees) {
+Comparison averagedAt(const test::Fixture& fx, ImpostorSet& set, float degrees, int level = 0) {
     const auto& dirs = set.impostorOf(0)->directions();
     Comparison sum;
     int n = 0;
@@ -131,7 +131,7 @@ Comparison averagedAt(const test::Fixture& fx, ImpostorSet& set, float degrees) 
         for (int az = 0; az < 4; ++az) {
             const glm::vec3 d = turned(dirs[std::size_t(view)], degrees, float(az) * 1.5707964f);
             REQUIRE(nearestViews(dirs, d, 1)[0] == view);  // the same stack: the warp, not a switch
-            const Comparison c = renderBoth(fx, set, cameraAlong(*fx.gpu, d));
+            const Comparison c = renderBoth(fx, set, cameraAlong(*fx.gpu, d), "abuffer", level);
             sum.meanAbs += c.meanAbs;
             sum.coverageMismatch += c.coverageMismatch;
             sum.finite = sum.finite && c.finite;
@@ -182,6 +182,41 @@ TEST_CASE("lod impostor render: error grows with the angle to the baked view, fa
         MESSAGE(slices, " slices at 10 deg: mean abs ", c.meanAbs, ", coverage mismatch ", c.coverageMismatch);
         CHECK(c.meanAbs < previous);
         previous = c.meanAbs;
+    }
+}
+
+TEST_CASE("lod impostor render: merged slices draw what a bake of that many slices draws") {
+    // Levels 0-3 of one 64-slice bake draw 64, 32, 16 and 8 slices. Each is held to a bake of
+    // that many slices: the same images, the same rule at the coarser count, so the same error
+    // against the geometry at a baked view and 10 deg off it (what the error bound, which takes
+    // the slice count, predicts for them).
+    test::Fixture fx(oneObject(twoBoxes()));
+    ImpostorSettings settings = settingsWith(64);
+    settings.holeFilling = false;
+    ImpostorSet set(*fx.gpu, settings);
+    REQUIRE(set.impostorOf(0)->levels() == 4);
+    const Camera atView = cameraAlong(*fx.gpu, set.impostorOf(0)->directions()[5]);
+    double previousOff = 0.0;
+    for (int level = 0; level < 4; ++level) {
+        CAPTURE(level);
+        ImpostorSettings fewer = settingsWith(64 >> level);
+        fewer.holeFilling = false;
+        ImpostorSet baked(*fx.gpu, fewer);
+        const Comparison at = renderBoth(fx, set, atView, "abuffer", level);
+        const Comparison bakedAt = renderBoth(fx, baked, atView);
+        const Comparison off = averagedAt(fx, set, 10.0f, level);
+        const Comparison bakedOff = averagedAt(fx, baked, 10.0f);
+        MESSAGE("level ", level, " (", 64 >> level, " slices): at the view ", at.meanAbs, " / ", at.coverageMismatch,
+                " (bake ", bakedAt.meanAbs, " / ", bakedAt.coverageMismatch, "), 10 deg off ", off.meanAbs, " (bake ",
+                bakedOff.meanAbs, ")");
+        CHECK(at.finite);
+        CHECK(at.covered > 300);
+        CHECK(std::abs(at.meanAbs - bakedAt.meanAbs) <= 0.2 * bakedAt.meanAbs + 5e-4);
+        CHECK(std::abs(at.coverageMismatch - bakedAt.coverageMismatch) <= 0.2 * bakedAt.coverageMismatch + 0.01);
+        CHECK(std::abs(off.meanAbs - bakedOff.meanAbs) <= 0.2 * bakedOff.meanAbs + 5e-4);
+        // Fewer slices, more error.
+        CHECK(off.meanAbs > previousOff);
+        previousOff = off.meanAbs;
     }
 }
 

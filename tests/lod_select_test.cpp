@@ -255,3 +255,51 @@ TEST_CASE("lod select: a stand-in pays its share of a draw, its quads and their 
     CHECK(selectLodFor(o, view(), m).impostorMs ==
           doctest::Approx(0.01 + 0.001 + 0.2 * 16e-3 + 0.1 * 16.0 * px * 1e-3 + 2.0 * layer * 1e-6));
 }
+
+TEST_CASE("lod select: auto draws the cheapest level of merged slices within the bound; forced draws the baked one") {
+    // The 16-slice impostor at d = 10 (10.0504 px) with coarser levels of 8 and 4 slices, drawn
+    // fraction 1 and one quad a slice each. Errors at 0.2 rad: parallax 10.0504 sin 0.2 / (2L) =
+    // 0.0624 (16), 0.1248 (8), 0.2497 (4) px, sampling 0.157 px; layer pixels L x 101.01: each
+    // level halves the impostor's pixel part.
+    LodObjectInput o = object(10.0f);
+    o.impostor.coarserLevels = 2;
+    o.impostor.coarser[0] = {8, 1.0, 8.0};
+    o.impostor.coarser[1] = {4, 1.0, 4.0};
+    const double px = 100.0 / std::sqrt(99.0);
+    const double sampling = px / 64.0;
+    auto errorAt = [&](int slices) { return px * std::sin(0.2) / (2.0 * slices) + sampling; };
+
+    const LodDecision coarsest = selectLodFor(o, view(), synthetic());
+    CHECK(coarsest.impostor);
+    CHECK(coarsest.level == 2);
+    CHECK(coarsest.errorPx == doctest::Approx(errorAt(4)));
+    CHECK(coarsest.layerPixels == doctest::Approx(4.0 * px * px));
+    CHECK(coarsest.impostorMs == doctest::Approx(0.1 + 2.0 * 4 * px * px * 1e-6));
+
+    // A bound between the 8- and 4-slice errors: the 8-slice level.
+    LodSelectOptions tight = mode(LodMode::Auto);
+    tight.maxErrorPx = 0.5 * (errorAt(8) + errorAt(4));
+    const LodDecision middle = selectLodFor(o, view(), synthetic(), tight);
+    CHECK(middle.impostor);
+    CHECK(middle.level == 1);
+    CHECK(middle.errorPx == doctest::Approx(errorAt(8)));
+
+    // A bound only the baked slices meet: level 0, as without levels.
+    tight.maxErrorPx = 0.5 * (errorAt(16) + errorAt(8));
+    const LodDecision baked = selectLodFor(o, view(), synthetic(), tight);
+    CHECK(baked.impostor);
+    CHECK(baked.level == 0);
+    CHECK(baked.impostorMs == doctest::Approx(0.1 + 2.0 * 16 * px * px * 1e-6));
+
+    // Forced impostors draw the baked slices whatever the bound.
+    const LodDecision forced = selectLodFor(o, view(), synthetic(), mode(LodMode::Impostors));
+    CHECK(forced.level == 0);
+
+    // A coarser level that draws more (its merged rectangles larger than the slices they merge:
+    // 8 x 0.5 and 4 x 0.9 of the square against 16 x 0.2) is not taken: the level must be
+    // cheaper, not only within the bound.
+    o.impostor.drawnFraction = 0.2;
+    o.impostor.coarser[0] = {8, 0.5, 8.0};
+    o.impostor.coarser[1] = {4, 0.9, 4.0};
+    CHECK(selectLodFor(o, view(), synthetic()).level == 0);
+}

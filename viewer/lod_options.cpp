@@ -1,6 +1,9 @@
 #include "lod_options.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <map>
 #include <iostream>
 
 namespace strata {
@@ -13,6 +16,7 @@ lod::LodOptions LodArgs::options() const {
     o.impostor.resolution = resolution;
     o.impostor.slices = slices;
     o.impostor.overlap = overlap;
+    o.mergedSlices = mergedSlices;
     if (cache == "default") o.impostorCache = lod::defaultImpostorCacheFolder();  // empty without a home: none
     else if (cache != "none") o.impostorCache = cache;
     o.impostorCacheMaxBytes = std::uint64_t(cacheMiB * double(1 << 20));
@@ -42,6 +46,9 @@ void addLodOptions(CLI::App* cmd, LodArgs& args) {
                     "slice widths each slice's depth interval reaches into its neighbours' (opaque only)")
         ->check(CLI::Range(0.0, 16.0))
         ->capture_default_str();
+    cmd->add_flag("--impostor-merged-slices", args.mergedSlices,
+                  "auto may draw far stand-ins with fewer, merged slices where the error bound allows (experimental: "
+                  "the bound leaves out the overlap's and the bake rays' depth error, so images lose more than it says)");
     cmd->add_option("--impostor-cache", args.cache,
                     "where baked impostors are kept between runs, keyed by what they bake: none, default "
                     "($XDG_CACHE_HOME/strata/impostors, else ~/.cache/strata/impostors) or a folder")
@@ -57,6 +64,19 @@ void addLodOptions(CLI::App* cmd, LodArgs& args) {
         ->capture_default_str();
 }
 
+namespace {
+
+// The LOD units drawn as stand-ins, by the slices their level of merged slices draws (level l:
+// the baked count halved l times), fewest slices last.
+std::map<int, int, std::greater<int>> standInsBySlices(const lod::LodController& controller) {
+    std::map<int, int, std::greater<int>> counts;
+    for (const lod::LodDecision& d : controller.unitSelection().objects)
+        if (d.impostor) ++counts[std::max(1, controller.options().impostor.slices >> d.level)];
+    return counts;
+}
+
+}  // namespace
+
 nlohmann::json lodReport(const lod::LodController& controller) {
     const lod::LodOptions& o = controller.options();
     nlohmann::json j = {
@@ -66,12 +86,17 @@ nlohmann::json lodReport(const lod::LodController& controller) {
         {"resolution", o.impostor.resolution},
         {"slices", o.impostor.slices},
         {"overlap", o.impostor.overlap},
+        {"merged_slices", o.mergedSlices},
         {"impostor_cache", o.impostorCache.string()},
         // The last frame's LOD units, predicted by the cost model (what LOD draws, not the frame:
         // objects in no unit, the technique and the enlargement are not in it).
         {"predicted_ms", controller.selection().predictedMs},
         {"geometry_only_predicted_ms", controller.selection().geometryOnlyMs},
     };
+    // The last frame's stand-ins by the slices they drew (levels of merged slices).
+    nlohmann::json bySlices = nlohmann::json::object();
+    for (const auto& [slices, units] : standInsBySlices(controller)) bySlices[std::to_string(slices)] = units;
+    j["stand_ins_by_slices"] = bySlices;
     if (const lod::ImpostorSet* set = controller.impostors()) {
         const lod::ImpostorMemory m = set->bytes();
         j["baked_impostors"] = set->bakedImpostors();  // one per mesh, or per mesh and material where the bake keeps its texture
@@ -124,6 +149,11 @@ std::string lodSummary(const lod::LodController& controller) {
         int impostorUnits = 0;
         for (const lod::LodDecision& d : units.objects) impostorUnits += d.impostor ? 1 : 0;
         add("; %d of %zu LOD units", impostorUnits, units.objects.size());
+    }
+    if (const auto bySlices = standInsBySlices(controller); bySlices.size() > 1 ||
+                                                             (bySlices.size() == 1 && bySlices.begin()->first != controller.options().impostor.slices)) {
+        line += "; stand-ins by slices drawn:";
+        for (const auto& [slices, units] : bySlices) add(" %d at %d", units, slices);
     }
     if (const lod::ImpostorSet* set = controller.impostors(); set && set->bakedImpostors() > 0)
         add("; %d impostors baked (%d from the cache) in %.0f ms", set->bakedImpostors(), set->loadedImpostors(), set->bakeMs());

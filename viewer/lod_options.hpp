@@ -26,6 +26,7 @@ struct LodArgs {
     std::string cache = "default";  // "none", "default" ($XDG_CACHE_HOME/strata/impostors) or a folder
     double cacheMiB = double(lod::ImpostorCache::kDefaultMaxBytes >> 20);
     double memoryMiB = 0.0;  // 0: no cap
+    bool mergedSlices = false;
 
     lod::LodOptions options() const;  // throws naming a bad mode
 };
