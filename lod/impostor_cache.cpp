@@ -100,7 +100,7 @@ bool ImpostorCache::contains(std::uint64_t key) const {
     return std::filesystem::is_regular_file(pathOf(key), error);
 }
 
-std::optional<LayeredImpostor> ImpostorCache::load(std::uint64_t key) {
+std::optional<LayeredImpostor> ImpostorCache::load(std::uint64_t key, bool mergedLevels) {
     const std::filesystem::path path = pathOf(key);
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) {
@@ -111,7 +111,7 @@ std::optional<LayeredImpostor> ImpostorCache::load(std::uint64_t key) {
     try {
         const std::string bytes = readBoundedFile(path, kImpostorFileLimit);
         LayeredImpostor impostor = LayeredImpostor::deserialize(
-            std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+            std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), mergedLevels);
         // Touched: eviction removes the least recently used first.
         std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), error);
         ++counts_.hits;

@@ -53,7 +53,7 @@ public:
     bool contains(std::uint64_t key) const;
     // The impostor stored under `key` on the current GL context, or nullopt (a miss, or a file
     // that did not read: removed).
-    std::optional<LayeredImpostor> load(std::uint64_t key);
+    std::optional<LayeredImpostor> load(std::uint64_t key, bool mergedLevels = false);
     // Stores a valid impostor under `key`, then evicts down to the cap. A store that fails (a full
     // disk, a folder that cannot be made) is not an error of the run: it returns false.
     bool store(std::uint64_t key, const LayeredImpostor& impostor);

@@ -99,7 +99,7 @@ std::vector<std::uint8_t> LayeredImpostor::serialize() const {
     return std::move(w.bytes);
 }
 
-LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes) {
+LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes, bool mergedLevels) {
     const auto start = std::chrono::steady_clock::now();
     Reader r(bytes);
     for (char c : kMagic)
@@ -112,6 +112,7 @@ LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes
     s.slices = r.get<std::int32_t>("the settings"), s.peels = r.get<std::int32_t>("the settings");
     s.overlap = r.get<float>("the settings"), s.apexFactor = r.get<float>("the settings");
     s.holeFilling = r.get<std::uint8_t>("the settings") != 0;
+    s.mergedLevels = mergedLevels;
     if (const std::string why = s.validate(); !why.empty()) throw std::runtime_error(why);
     m.centre_ = r.get<glm::vec3>("the bounds");
     m.radius_ = r.get<float>("the bounds");

@@ -111,7 +111,7 @@ int ImpostorSet::bake(const std::vector<bool>& ids, double budgetMs) {
         ++done;
         const std::uint64_t key = cache_ ? keyOf(int(k)) : 0;
         if (cache_) {
-            std::optional<LayeredImpostor> kept = cache_->load(key);
+            std::optional<LayeredImpostor> kept = cache_->load(key, settings_.mergedLevels);
             // What was loaded is what this bake would make (a key collision would show here).
             if (kept && !sameSettings(kept->settings(), own)) kept.reset();
             if (kept) {

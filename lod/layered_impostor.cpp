@@ -213,7 +213,7 @@ void LayeredImpostor::buildRectangles(std::span<const std::uint8_t> texels) {
         level.slices = slices;
         level.rects = rectanglesFor(texels, slices);
         levels_.push_back(std::move(level));
-        if (slices % 2 != 0 || slices / 2 < kLeastLevelSlices) break;
+        if (!settings_.mergedLevels || slices % 2 != 0 || slices / 2 < kLeastLevelSlices) break;
     }
 }
 

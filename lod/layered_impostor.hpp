@@ -43,6 +43,9 @@ struct ImpostorSettings {
     int peels = 1;           // surfaces kept per texel: 1 opaque, 1..4 transparent (overlap then 0)
     float apexFactor = kDefaultApexFactor;  // D = apexFactor * r, > 1
     bool holeFilling = true; // run the id-render preprocessing (else drawFor never fills holes)
+    // Build the levels of merged slices (levels()) beside the baked ones. Not part of what a bake
+    // is (no cache key, not stored): the levels come from the images on bake and on load.
+    bool mergedLevels = false;
 
     // Empty when usable, else why not (one line).
     std::string validate() const;
@@ -97,7 +100,7 @@ public:
     // An impostor from serialize()'s bytes, uploaded on the current GL context (no bake: bakeMs is
     // the load's time). Throws std::runtime_error naming what is malformed: the bytes may come
     // from a file another version wrote or a disk damaged.
-    static LayeredImpostor deserialize(std::span<const std::uint8_t> bytes);
+    static LayeredImpostor deserialize(std::span<const std::uint8_t> bytes, bool mergedLevels = false);
     LayeredImpostor& operator=(LayeredImpostor&&) noexcept = default;
 
     bool valid() const { return reason_.empty(); }
@@ -116,7 +119,8 @@ public:
     // ones (overlap in its own widths), with its own rectangles and quads in the same vertex
     // buffer. The images hold one depth code per texel, so a slice is only a quad at a depth
     // that accepts the codes in its interval: merging needs no new texels. Level 0 is the baked
-    // count; coarser levels go down to kLeastLevelSlices while the count halves exactly. A far
+    // count; with settings().mergedLevels, coarser levels go down to kLeastLevelSlices while the
+    // count halves exactly (else there is level 0 alone). A far
     // stand-in whose error bound allows it draws a coarser level: fewer, larger quads, whose cost
     // follows the count (lod_select.hpp).
     static constexpr int kLeastLevelSlices = 8;

@@ -49,6 +49,7 @@ std::vector<ViewDrawn> viewsDrawn(const LayeredImpostor& impostor, bool fillsHol
 
 LodController::LodController(const GpuScene& scene, const LodOptions& options, std::ostream* progress)
     : scene_(scene), options_(options), progress_(progress) {
+    options_.impostor.mergedLevels = options_.mergedSlices;  // the levels only where they may be drawn
     const std::string invalid = options_.impostor.validate();
     if (!invalid.empty()) throw std::invalid_argument("impostor settings: " + invalid);
     keys_ = impostorKeys(scene_);
@@ -206,7 +207,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         inputs_[i].impostor.peels = impostor->settings().peels;
         inputs_[i].impostor.bytes = impostor->bytes().total();
         const int levels = std::min(impostor->levels(), 1 + ImpostorSummary::kMaxCoarserLevels);
-        inputs_[i].impostor.coarserLevels = options_.mergedSlices ? levels - 1 : 0;
+        inputs_[i].impostor.coarserLevels = levels - 1;
         for (int level = 1; level < levels; ++level)
             inputs_[i].impostor.coarser[std::size_t(level - 1)].slices = impostor->levelSlices(level);
         auto& drawn = viewsDrawn_[std::size_t(keys_.ofUnit[i])];

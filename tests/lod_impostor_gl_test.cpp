@@ -256,6 +256,9 @@ TEST_CASE("lod impostor gl: levels of merged slices: 32, 16 and 8 slices from on
     settings.views = 12;
     settings.resolution = 40;
     settings.slices = 32;
+    // Built only when asked: without, the baked slices alone.
+    CHECK(LayeredImpostor(fx.gpu->meshOf(0), fx.gpu->scene().meshes[0].bounds(), settings).levels() == 1);
+    settings.mergedLevels = true;
     const LayeredImpostor imp(fx.gpu->meshOf(0), fx.gpu->scene().meshes[0].bounds(), settings);
     REQUIRE(imp.valid());
     REQUIRE(imp.levels() == 3);

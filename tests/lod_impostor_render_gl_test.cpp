@@ -193,6 +193,7 @@ TEST_CASE("lod impostor render: merged slices draw what a bake of that many slic
     test::Fixture fx(oneObject(twoBoxes()));
     ImpostorSettings settings = settingsWith(64);
     settings.holeFilling = false;
+    settings.mergedLevels = true;
     ImpostorSet set(*fx.gpu, settings);
     REQUIRE(set.impostorOf(0)->levels() == 4);
     const Camera atView = cameraAlong(*fx.gpu, set.impostorOf(0)->directions()[5]);
