@@ -166,9 +166,8 @@ LayeredImpostor LayeredImpostor::deserialize(std::span<const std::uint8_t> bytes
     };
     m.atlas_ = upload(GL_RGBA8, atlas);
     if (albedo) m.albedo_ = upload(GL_SRGB8_ALPHA8, albedoTexels);
-    // The coarser levels from the atlas; level 0's rectangles as stored (the same by construction).
-    m.buildRectangles(atlas);
-    m.levels_[0].rects = std::move(rects);
+    // Level 0's rectangles as stored, the coarser levels' (where asked) from the atlas.
+    m.buildRectangles(atlas, std::move(rects));
     m.levels_[0].holeSlices = std::move(holes);
     m.mergeHoleSlices();
     m.buildQuads();

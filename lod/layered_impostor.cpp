@@ -206,12 +206,12 @@ void LayeredImpostor::bakeImages(const std::vector<BakePart>& parts, const GpuSc
     glDisable(GL_FRAMEBUFFER_SRGB);
 }
 
-void LayeredImpostor::buildRectangles(std::span<const std::uint8_t> texels) {
+void LayeredImpostor::buildRectangles(std::span<const std::uint8_t> texels, std::vector<SliceRect> baked) {
     levels_.clear();
     for (int slices = settings_.slices;; slices /= 2) {
         Level level;
         level.slices = slices;
-        level.rects = rectanglesFor(texels, slices);
+        level.rects = levels_.empty() && !baked.empty() ? std::move(baked) : rectanglesFor(texels, slices);
         levels_.push_back(std::move(level));
         if (!settings_.mergedLevels || slices % 2 != 0 || slices / 2 < kLeastLevelSlices) break;
     }
@@ -253,7 +253,8 @@ void LayeredImpostor::buildQuads() {
     const float res = float(settings_.resolution);
     std::vector<float> vertices;
     // Level by level, view by view: each view's quads of one level are contiguous.
-    for (Level& level : levels_) {
+    for (int levelIndex = 0; levelIndex < levels(); ++levelIndex) {
+        Level& level = levels_[std::size_t(levelIndex)];
         const int L = level.slices;
         level.first.assign(level.rects.size(), 0);
         level.count.assign(level.rects.size(), 0);
@@ -265,7 +266,7 @@ void LayeredImpostor::buildQuads() {
             level.viewFirst[std::size_t(view)] = GLint(vertices.size() / kFloatsPerVertex);
             for (int p = 0; p < peels; ++p)
                 for (int s = 0; s < L; ++s) {
-                    const std::size_t i = (std::size_t(view) * std::size_t(peels) + std::size_t(p)) * std::size_t(L) + std::size_t(s);
+                    const std::size_t i = rangeIndex(view, p, s, levelIndex);
                     const SliceRect r = level.rects[i];
                     if (r.empty()) continue;
                     // Texel x covers u in [x / res, (x + 1) / res).

@@ -167,8 +167,9 @@ private:
                std::size_t(slice);
     }
     void bakeImages(const std::vector<BakePart>& parts, const GpuScene* albedoScene);
-    // Every level's rectangles from the images' depth codes (levels_ sized here).
-    void buildRectangles(std::span<const std::uint8_t> texels);
+    // Every level's rectangles from the images' depth codes (levels_ sized here); level 0's are
+    // `baked` where given (a cache load has them stored).
+    void buildRectangles(std::span<const std::uint8_t> texels, std::vector<SliceRect> baked = {});
     std::vector<SliceRect> rectanglesFor(std::span<const std::uint8_t> texels, int slices) const;
     void buildQuads();
     void findHoleSlices(const std::vector<BakePart>& parts);

@@ -15,23 +15,11 @@ PeelLoop::PeelLoop(const FrameContext& frame, TechniqueStats& stats, ObjectSkipp
 void PeelLoop::setTotal(std::uint64_t total) { total_ = remaining_ = total; }
 
 int PeelLoop::run(const PeelLoopOptions& options, const std::function<PeelStep(int)>& step) {
-    int iteration = 0;
-    for (;; ++iteration) {
-        if (iteration >= options.maxPasses) {
-            stats_.overflowed = true;
-            break;
-        }
-        const PeelStep s = step(iteration);
-        stats_.fragmentsCaptured += s.kept;
-        overflow_ += s.overflow;
-        if (s.layer == 0 || !s.more || s.layer >= remaining_) {
-            ++iteration;
-            break;
-        }
-        remaining_ -= s.layer;
-        if (options.between) options.between(iteration);
-    }
-    return iteration;
+    // runAhead with nothing issued ahead: each iteration issued and collected in one go.
+    PeelLoopOptions waiting = options;
+    waiting.takenAtMost = 0;
+    PeelStep last;
+    return runAhead(waiting, [&](int iteration) { last = step(iteration); }, [&](int) { return last; });
 }
 
 int PeelLoop::runAhead(const PeelLoopOptions& options, const std::function<void(int)>& issue,
