@@ -265,7 +265,8 @@ void LayeredImpostor::buildQuads() {
             const ImpostorFrame& f = frames_[std::size_t(view)];
             level.viewFirst[std::size_t(view)] = GLint(vertices.size() / kFloatsPerVertex);
             for (int p = 0; p < peels; ++p)
-                for (int s = 0; s < L; ++s) {
+                for (int k = 0; k < L; ++k) {
+                    const int s = sliceAt(k, L);
                     const std::size_t i = rangeIndex(view, p, s, levelIndex);
                     const SliceRect r = level.rects[i];
                     if (r.empty()) continue;
@@ -436,12 +437,16 @@ StandInDraw LayeredImpostor::drawFor(const glm::vec3& eye, bool fillHoles, int l
         glm::dot(dir, dir) > 0.0f ? nearestViews(directions_, dir, 3) : std::vector<int>{0};
     add(level.viewFirst[std::size_t(views[0])], level.viewCount[std::size_t(views[0])]);
     if (fillHoles)
-        for (std::size_t k = 1; k < views.size(); ++k)
-            for (int local : holeSlices(views[0], views[k], levelIndex)) {
+        for (std::size_t k = 1; k < views.size(); ++k) {
+            // In the buffer's order (sliceAt), so that neighbouring slices join into one range.
+            const std::vector<int>& holes = holeSlices(views[0], views[k], levelIndex);
+            for (std::size_t h = 0; h < holes.size(); ++h) {
+                const int local = frontToBack() ? holes[holes.size() - 1 - h] : holes[h];
                 const int peel = local / level.slices, slice = local % level.slices;
                 const auto [first, count] = sliceRange(views[k], peel, slice, levelIndex);
                 add(first, count);
             }
+        }
     return d;
 }
 

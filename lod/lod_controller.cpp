@@ -1,6 +1,7 @@
 #include "lod/lod_controller.hpp"
 
 #include "lod/lod_cost_cache.hpp"
+#include "lod/lod_error.hpp"
 #include "lod/view_directions.hpp"
 #include "render/frustum.hpp"
 
@@ -12,6 +13,12 @@
 
 namespace strata::lod {
 namespace {
+
+// What of the bake the error bound needs (lod_error.hpp); overlap as the bake uses it.
+void setShape(ImpostorSummary& summary, const ImpostorSettings& settings) {
+    summary.overlap = settings.peels > 1 ? 0.0 : double(settings.overlap);
+    summary.apexHalfAngleRadians = apexHalfAngleRadians(double(settings.apexFactor));
+}
 
 // Per view, what drawing it costs: the share of the full slice squares its rectangles cover,
 // over all peels (so up to `peels`), and the quads drawn (its non-empty slices, and with hole
@@ -114,6 +121,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         guess.hasImpostor = true;
         guess.impostor.slices = options_.impostor.slices;
         guess.impostor.resolution = options_.impostor.resolution;
+        setShape(guess.impostor, options_.impostor);
         guess.impostor.viewAngleRadians = 0.0;
         guess.impostor.drawnFraction = kUnbakedDrawnFraction;
         const LodDecision d = selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx});
@@ -205,6 +213,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         inputs_[i].impostor.slices = impostor->settings().slices;
         inputs_[i].impostor.resolution = impostor->settings().resolution;
         inputs_[i].impostor.peels = impostor->settings().peels;
+        setShape(inputs_[i].impostor, impostor->settings());
         inputs_[i].impostor.bytes = impostor->bytes().total();
         const int levels = std::min(impostor->levels(), 1 + ImpostorSummary::kMaxCoarserLevels);
         inputs_[i].impostor.coarserLevels = levels - 1;
@@ -339,6 +348,7 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
         in.hasImpostor = true;
         in.impostor.slices = options_.impostor.slices;
         in.impostor.resolution = options_.impostor.resolution;
+        setShape(in.impostor, options_.impostor);
         in.impostor.viewAngleRadians = 0.0;
         in.impostor.drawnFraction = kUnbakedDrawnFraction;
     }

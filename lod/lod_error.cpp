@@ -17,12 +17,21 @@ double projectedDiameterPx(double radius, double distance, double fovYRadians, i
     return 2.0 * focalLengthPx(fovYRadians, imageHeight) * radius / std::sqrt(distance * distance - radius * radius);
 }
 
-ImpostorError impostorError(double projectedDiameter, int slices, int resolution, double angleRadians) {
+double apexHalfAngleRadians(double apexFactor) {
+    return apexFactor > 1.0 ? std::asin(1.0 / apexFactor) : 0.5 * std::numbers::pi;
+}
+
+ImpostorError impostorError(double projectedDiameter, const ImpostorShape& shape, double angleRadians) {
     ImpostorError e;
-    const double angle = std::clamp(std::abs(angleRadians), 0.0, 0.5 * std::numbers::pi);
-    // At the baked view itself nothing moves, whatever the size (no 0 x infinity).
-    e.parallaxPx = angle > 0.0 ? projectedDiameter * std::sin(angle) / (2.0 * double(std::max(slices, 1))) : 0.0;
-    e.samplingPx = projectedDiameter / double(std::max(resolution, 1));
+    const double halfPi = 0.5 * std::numbers::pi;
+    const double apex = std::clamp(shape.apexHalfAngleRadians, 0.0, 0.49 * std::numbers::pi);
+    const double angle = std::min(std::abs(angleRadians) + apex, halfPi);
+    const double depthSlices = 0.5 + std::max(shape.overlap, 0.0);
+    // Where nothing moves (a baked view, parallel rays) it is 0 whatever the size (no 0 x infinity).
+    e.parallaxPx = angle > 0.0 ? projectedDiameter * depthSlices * std::sin(angle) /
+                                     (double(std::max(shape.slices, 1)) * std::cos(apex))
+                               : 0.0;
+    e.samplingPx = projectedDiameter / double(std::max(shape.resolution, 1));
     return e;
 }
 

@@ -2,14 +2,19 @@
 // The screen-space error of drawing an object as a layered impostor instead of its geometry,
 // in pixels of the final image, from the bounding sphere alone (no rendering):
 //
-//  - parallax: the impostor puts each surface point on its slice's plane. Slices are 2r / L
-//    apart across the sphere's depth (lod-contract.md), so a point lies at most half a slice,
-//    r / L, off its true depth along the baked view's axis. Seen from a direction at angle a
-//    to that axis, a depth offset d moves the point sideways on screen by d sin a: the error is
-//    (2r / L) / 2 * sin a world units, i.e. projectedDiameterPx * sin a / (2 L) pixels. It grows
-//    with the angle to the nearest baked view and falls as 1 / L (Schauffler section 3.2: the
-//    warp's accuracy grows with the number of layers). Angles past 90 degrees count as 90 (the
-//    nearest of 12 or more views is always within about 38 degrees).
+//  - parallax: the impostor puts each surface point on a slice's plane, along the bake's ray
+//    from the apex through its texel. Slices are w = 2r / L apart along the baked view's axis
+//    (lod-contract.md), and a slice accepts the depths of its own interval and `overlap` widths
+//    past it each side, so a point lands up to dz = (0.5 + overlap) w off its true depth. The
+//    bake's rays diverge from the apex by up to h = asin(1 / apexFactor) (19.5 degrees at 3r):
+//    the point moves dz / cos h along its ray, and seen from a direction at angle a to the axis
+//    that moves it sideways on screen by at most dz sin(a + h) / cos h. In pixels that is
+//    projectedDiameterPx (0.5 + overlap) sin(a + h) / (L cos h). It falls as 1 / L (Schauffler
+//    section 3.2: the warp's accuracy grows with the number of layers) and grows with the angle
+//    to the nearest baked view; it is not 0 at a baked view itself, since the eye's rays are
+//    not the bake's (a far eye's are parallel). a + h past 90 degrees counts as 90 (the nearest
+//    of 12 or more views is always within about 38 degrees). With overlap 0 and h 0 this is the
+//    half-slice bound d sin a / 2L.
 //  - sampling: the image holds `resolution` texels across the sphere's diameter, so one texel
 //    covers projectedDiameterPx / resolution pixels on screen. Detail finer than a texel is lost
 //    and edges step by a texel: the texel's footprint is the error (below 1 px it is below the
@@ -37,8 +42,19 @@ struct ImpostorError {
     double totalPx() const { return parallaxPx + samplingPx; }
 };
 
-// The error above for an impostor of `slices` slices (>= 1) and `resolution` texels a side
-// (>= 1) seen `angleRadians` from its nearest baked view, at `projectedDiameter` pixels.
-ImpostorError impostorError(double projectedDiameter, int slices, int resolution, double angleRadians);
+// What of an impostor's bake the error depends on.
+struct ImpostorShape {
+    int slices = 1;                     // L (>= 1)
+    int resolution = 64;                // texels a side (>= 1)
+    double overlap = 0.0;               // slice widths past its own interval, each side (>= 0)
+    double apexHalfAngleRadians = 0.0;  // h: the bake frustum's half-angle, asin(r / D)
+};
+
+// h for an apex at apexFactor * r (> 1).
+double apexHalfAngleRadians(double apexFactor);
+
+// The error above for an impostor of `shape` seen `angleRadians` from its nearest baked view,
+// at `projectedDiameter` pixels.
+ImpostorError impostorError(double projectedDiameter, const ImpostorShape& shape, double angleRadians);
 
 }  // namespace strata::lod

@@ -84,7 +84,8 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
             out.layerPixels = double(std::max(slices, 1)) * squarePx * std::clamp(fraction, 0.0, double(std::max(s.peels, 1)));
             out.quads = quads > 0.0 ? quads : double(std::max(slices, 1));
             out.impostorMs = model.impostorMs(out.layerPixels, out.quads, object.standInDraws);
-            const ImpostorError e = impostorError(out.projectedPx, slices, s.resolution, s.viewAngleRadians);
+            const ImpostorError e =
+                impostorError(out.projectedPx, {slices, s.resolution, s.overlap, s.apexHalfAngleRadians}, s.viewAngleRadians);
             out.parallaxPx = e.parallaxPx;
             out.samplingPx = e.samplingPx;
             out.errorPx = e.totalPx();

@@ -52,6 +52,8 @@ struct ImpostorSummary {
     int id = -1;                   // which impostor (lod/impostor_set.hpp's keys: instances share one); -1: its own
     int slices = 1;                // L
     int resolution = 64;           // texels a side of each view's image
+    double overlap = 0.5;          // as the bake used it (0 with peels > 1): lod_error.hpp
+    double apexHalfAngleRadians = 0.3398369094541219;  // asin(1 / 3): the default apex at 3r
     double viewAngleRadians = 0.0; // from the eye direction to the nearest baked view
     std::uint64_t bytes = 0;       // its memory (Table 2's formula + rectangles)
     double drawnFraction = 1.0;    // of the full slice squares actually drawn (per-slice rectangles)

@@ -348,12 +348,17 @@ TEST_CASE("lod impostor gl: ranges per frame: the nearest view in full, holes fr
         CHECK(imp.nearestView(eye) == view);
         CHECK(imp.nearestViewAngle(eye) < 1e-3f);
         const StandInDraw plain = imp.drawFor(eye, false);
-        // One contiguous range: every non-empty slice of this view's stack.
+        // One contiguous range: every non-empty slice of this view's stack, the slice nearest
+        // the viewer (farthest from the apex) first, so its range starts at the last slice's.
         REQUIRE(plain.first.size() == 1);
-        int expected = 0, firstVertex = -1;
-        for (int s = 0; s < 16; ++s) {
+        CHECK(imp.frontToBack());
+        int expected = 0, firstVertex = -1, previousFirst = -1;
+        for (int s = 15; s >= 0; --s) {
             const auto [first, count] = imp.sliceRange(view, 0, s);
-            if (count > 0 && firstVertex < 0) firstVertex = first;
+            if (count == 0) continue;
+            if (firstVertex < 0) firstVertex = first;
+            CHECK(first > previousFirst);  // slice s after slice s + 1
+            previousFirst = first;
             expected += count;
         }
         CHECK(plain.count[0] == expected);

@@ -40,7 +40,9 @@ LodView view() {
 }
 
 // A unit sphere `distance` down -Z with 100 000 triangles and a 16-slice, 64-texel impostor
-// seen 0.2 rad from its nearest view.
+// seen 0.2 rad from its nearest view. Its slices have no overlap and its rays are parallel, so
+// its parallax is the half-slice bound d sin a / 2L (lod_error.hpp; the bake's own terms are
+// checked once below).
 LodObjectInput object(float distance, std::uint64_t triangles = 100000) {
     LodObjectInput o;
     o.center = {0.0f, 0.0f, -distance};
@@ -51,6 +53,8 @@ LodObjectInput object(float distance, std::uint64_t triangles = 100000) {
     o.impostor.slices = 16;
     o.impostor.resolution = 64;
     o.impostor.viewAngleRadians = 0.2;
+    o.impostor.overlap = 0.0;
+    o.impostor.apexHalfAngleRadians = 0.0;
     o.impostor.bytes = 1000;
     return o;
 }
@@ -88,6 +92,13 @@ TEST_CASE("lod select: a far dense object becomes an impostor with its predictio
     CHECK(d.parallaxPx == doctest::Approx(px * std::sin(0.2) / 32.0));
     CHECK(d.samplingPx == doctest::Approx(px / 64.0));
     CHECK(d.errorPx == doctest::Approx(d.parallaxPx + d.samplingPx));
+    // The default bake's overlap (0.5) and apex (3r, h = asin 1/3) enter the bound:
+    // px x 1 x sin(0.2 + h) / (16 cos h).
+    LodObjectInput baked = object(10.0f);
+    baked.impostor.overlap = 0.5;
+    baked.impostor.apexHalfAngleRadians = std::asin(1.0 / 3.0);
+    const double h = std::asin(1.0 / 3.0);
+    CHECK(selectLodFor(baked, view(), synthetic()).parallaxPx == doctest::Approx(px * std::sin(0.2 + h) / (16.0 * std::cos(h))));
 }
 
 TEST_CASE("lod select: a light object stays geometry (geometry cheaper)") {
