@@ -15,8 +15,11 @@
 #            instance): the zoom takes little off it, raising the bound a lot.
 #
 # usage: scripts/bench_budget.sh [--out DIR] [--strata PATH] [--scenes orchard,field] [--frames N]
-#        [--mode ID] [--budget-share F] [--quick]
+#        [--mode ID] [--budget-share F] [--merged-slices] [--least-bound PX] [--quick]
 #   --quick: 12 frames, orchard only.
+#   --merged-slices: every run with --impostor-merged-slices, so that raising the LOD bound
+#            also draws stand-ins at fewer slices (layered-impostors.md, "Levels of merged slices").
+#   --least-bound PX: the least LOD bound for every scene, in place of the scene's own.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$root/docs/bench/budget
@@ -25,6 +28,8 @@ scenes=orchard,field
 frames=24
 mode=blend-sorted
 share=0.5
+merged=()
+least=
 while [[ $# -gt 0 ]]; do
     case $1 in
         --out) out=$2; shift 2 ;;
@@ -33,6 +38,8 @@ while [[ $# -gt 0 ]]; do
         --frames) frames=$2; shift 2 ;;
         --mode) mode=$2; shift 2 ;;
         --budget-share) share=$2; shift 2 ;;
+        --merged-slices) merged=(--impostor-merged-slices); shift ;;
+        --least-bound) least=$2; shift 2 ;;
         --quick) frames=12; scenes=orchard; shift ;;
         -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
         *) echo "bench_budget.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
@@ -48,10 +55,11 @@ for name in ${scenes//,/ }; do
         field) scene=builtin:field:100; size=640x480; base=0.5; count=100; spacing=3 ;;
         *) echo "bench_budget.sh: unknown scene '$name' (orchard, field)" >&2; exit 2 ;;
     esac
+    [[ -z $least ]] || base=$least
     path=$out/$name-sweep.path
     python3 "$root/scripts/lib/sweep_path.py" "$count" "$spacing" "$path"
     common=(bench "$scene" --size "$size" --modes "$mode" --frames "$frames" --warmup 1 --camera-path "$path"
-            --lod auto --lod-max-error-px "$base")
+            --lod auto --lod-max-error-px "$base" "${merged[@]}")
     echo "bench_budget: $name: no budget" >&2
     # A budget nothing reaches (1e6 ms) keeps the zoom at 1 and gives the per-frame figures.
     "$strata" "${common[@]}" --frame-budget-ms 1e6 --budget-levers zoom --json "$out/$name-none.json" >/dev/null 2>"$out/$name-none.log"
