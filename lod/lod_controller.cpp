@@ -56,7 +56,8 @@ std::vector<ViewDrawn> viewsDrawn(const LayeredImpostor& impostor, bool fillsHol
 
 LodController::LodController(const GpuScene& scene, const LodOptions& options, std::ostream* progress)
     : scene_(scene), options_(options), progress_(progress) {
-    options_.impostor.mergedLevels = options_.mergedSlices;  // the levels only where they may be drawn
+    // The levels only where they may be drawn.
+    options_.impostor.mergedLevels = options_.mergedSlices || options_.levelBasePx > 0.0;
     const std::string invalid = options_.impostor.validate();
     if (!invalid.empty()) throw std::invalid_argument("impostor settings: " + invalid);
     keys_ = impostorKeys(scene_);
@@ -124,7 +125,7 @@ void LodController::bakeCandidates(const LodView& view, const LodCostModel& mode
         setShape(guess.impostor, options_.impostor);
         guess.impostor.viewAngleRadians = 0.0;
         guess.impostor.drawnFraction = kUnbakedDrawnFraction;
-        const LodDecision d = selectLodFor(guess, view, model, {options_.mode, options_.maxErrorPx});
+        const LodDecision d = selectLodFor(guess, view, model, selectOptions());
         if (!d.impostor) continue;
         wanted[std::size_t(id)] = any = true;
         saving[std::size_t(id)] += std::max(0.0, d.geometryMs - d.impostorMs);
@@ -253,8 +254,8 @@ const StandIns* LodController::select(const Camera& camera, glm::ivec2 size, int
     const LodCostModel model = calibration_ ? calibration_->model : LodCostModel{};
     bakeCandidates(view, model);
     updateViewAngles(camera.position);
-    unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
-    if (enforceMemoryCap()) unitSelection_ = selectLod(inputs_, view, model, {options_.mode, options_.maxErrorPx});
+    unitSelection_ = selectLod(inputs_, view, model, selectOptions());
+    if (enforceMemoryCap()) unitSelection_ = selectLod(inputs_, view, model, selectOptions());
     std::vector<int> use(inputs_.size());  // per unit: -1 geometry, else the stand-in's level
     for (std::size_t i = 0; i < use.size(); ++i)
         use[i] = unitSelection_.objects[i].impostor ? unitSelection_.objects[i].level : -1;
@@ -366,7 +367,7 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
         // Each decision is selectLod's (selectLodFor), summed without keeping them.
         double covered = 0.0, weightedError = 0.0;
         for (std::size_t i = 0; i < inputs.size(); ++i) {
-            const LodDecision d = selectLodFor(inputs[i], view, model, {LodMode::Auto, bound});
+            const LodDecision d = selectLodFor(inputs[i], view, model, {LodMode::Auto, bound, options_.levelBasePx});
             level.predictedMs += d.impostor ? d.impostorMs : d.geometryMs;
             if (d.impostor) level.impostorObjects += inputs[i].objects;
             if (d.impostor) weightedError += d.errorPx * discArea(d);
@@ -437,7 +438,7 @@ std::string LodController::explainUnit(int unit) const {
     const std::size_t i = std::size_t(unit);
     if (i >= unitSelection_.objects.size() || i >= inputs_.size()) return "";
     if (options_.mode == LodMode::Geometry) return "geometry: forced";
-    return explain(unitSelection_.objects[i], inputs_[i], {options_.mode, options_.maxErrorPx});
+    return explain(unitSelection_.objects[i], inputs_[i], selectOptions());
 }
 
 }  // namespace strata::lod

@@ -45,12 +45,15 @@ struct LodOptions {
     // Baking time per frame (select call), 0: none. The viewer's: a frame starts no bake past it
     // (one at least), and the objects whose impostor waits draw geometry until it is ready.
     double bakeBudgetMs = 0.0;
-    // Auto may draw a stand-in with fewer, merged slices (LayeredImpostor::levels) where its
-    // error bound allows. Off by default: the error bound (lod_error.hpp) leaves out the depth
-    // error a slice's overlap and the bake's diverging rays add, which is small at 64 slices and
-    // not at 8 (builtin:orchard:1000 at 640x400: 6-7x faster than geometry but 25 dB, against
-    // 2.6x at 32 dB with the baked slices; docs/layered-impostors.md).
+    // Auto may draw a stand-in with fewer, merged slices (LayeredImpostor::levels), the cheapest
+    // whose error is within the bound. Off by default: a per-object pixel bound does not hold a
+    // PSNR, and at the default 4 px every orchard tree drops to 8 slices (builtin:orchard:1000
+    // at 640x400: 7.6x faster than geometry at 25 dB, against 3.0x at 32 dB with the baked
+    // slices; docs/layered-impostors.md).
     bool mergedSlices = false;
+    // The frame budget's LOD lever (LodSelectOptions::levelBasePx): > 0 builds the levels and
+    // takes a coarser one only as the bound rises above this, its least value. 0: none.
+    double levelBasePx = 0.0;
 };
 
 // What auto declines to bake because it would not pay over the frames planned: the impostors
@@ -112,6 +115,11 @@ public:
     const LodOptions& options() const { return options_; }
     void setMode(LodMode mode) { options_.mode = mode; }
     void setMaxErrorPx(double px) { options_.maxErrorPx = px; }
+    // LodOptions::levelBasePx; has an effect only where the levels were built (either option
+    // at construction).
+    void setLevelBasePx(double px) { options_.levelBasePx = px; }
+    // What selection is judged with: the mode, the bound and the budget's level base.
+    LodSelectOptions selectOptions() const { return {options_.mode, options_.maxErrorPx, options_.levelBasePx}; }
     const ImpostorSet* impostors() const { return impostors_.get(); }
     const ImpostorCache* cache() const { return cache_.get(); }  // null without one (or before the first bake)
     const std::optional<LodCalibration>& calibration() const { return calibration_; }

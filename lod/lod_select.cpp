@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <set>
 #include <stdexcept>
@@ -92,12 +93,18 @@ LodDecision selectLodFor(const LodObjectInput& object, const LodView& view, cons
             out.level = level;
         };
         judge(0, d);
-        // Auto: the cheapest level within the bound (coarser levels trade parallax for quads).
+        // Auto: the cheapest level within the bound (coarser levels trade parallax for quads),
+        // adding at most the bound's raise over levelBasePx where that is set.
+        const double bakedErrorPx = d.errorPx;
+        const double addedAtMostPx = options.levelBasePx > 0.0 ? options.maxErrorPx - options.levelBasePx
+                                                               : std::numeric_limits<double>::infinity();
         if (options.mode == LodMode::Auto && d.errorPx <= options.maxErrorPx)
             for (int level = 1; level <= std::min(s.coarserLevels, ImpostorSummary::kMaxCoarserLevels); ++level) {
                 LodDecision coarse = d;
                 judge(level, coarse);
-                if (coarse.errorPx <= options.maxErrorPx && coarse.impostorMs < d.impostorMs) d = coarse;
+                if (coarse.errorPx <= options.maxErrorPx && coarse.errorPx - bakedErrorPx <= addedAtMostPx &&
+                    coarse.impostorMs < d.impostorMs)
+                    d = coarse;
             }
     }
     if (options.mode == LodMode::Geometry) return geometry(LodReason::GeometryForced);

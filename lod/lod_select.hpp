@@ -113,6 +113,11 @@ LodView lodView(const Camera& camera, glm::ivec2 imageSize);
 struct LodSelectOptions {
     LodMode mode = LodMode::Auto;
     double maxErrorPx = kDefaultMaxErrorPx;
+    // Where a frame budget steers the bound: the bound at which no coarser level is taken. A
+    // level of merged slices may then add at most maxErrorPx - levelBasePx to the baked level's
+    // error, so levels come only with the budget's raise of the bound, and without it each
+    // stand-in draws its baked slices. 0: any level within maxErrorPx.
+    double levelBasePx = 0.0;
 };
 
 enum class LodReason {

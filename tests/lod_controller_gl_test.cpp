@@ -198,3 +198,40 @@ TEST_CASE("lod controller: merged slices only where asked, each stand-in at the 
         else CHECK(coarser == 0);
     }
 }
+
+TEST_CASE("lod controller: a level base builds the levels and takes them only as the bound rises above it") {
+    // The orchard above with the frame budget's LOD lever: levels built (levelBasePx > 0), none
+    // drawn at the base bound, coarser ones once the bound is raised 8x (the ladder's top), every
+    // stand-in within the bound (the rule's arithmetic is lod_select_test's).
+    test::Fixture fx(makeOrchardScene(100, false));
+    LodOptions o = smallImpostors(LodMode::Auto);
+    o.impostor.slices = 32;
+    o.maxErrorPx = 0.5;
+    o.levelBasePx = 0.5;
+    LodCostModel model;
+    model.geometryFixedMs = 1.0;
+    model.impostorMsPerMegapixel = 1.0;
+    o.costModel = model;
+    LodController lod(*fx.gpu, o);
+    auto levels = [&](double boundPx) {
+        lod.setMaxErrorPx(boundPx);
+        REQUIRE(lod.select(fx.camera, {160, 100}));
+        int standIns = 0, coarser = 0;
+        for (const LodDecision& d : lod.unitSelection().objects) {
+            if (!d.impostor) continue;
+            ++standIns;
+            coarser += d.level > 0 ? 1 : 0;
+            CHECK(d.errorPx <= boundPx);
+        }
+        return std::pair{standIns, coarser};
+    };
+    const auto [atBase, coarserAtBase] = levels(0.5);
+    CHECK(atBase > 0);
+    CHECK(coarserAtBase == 0);
+    const auto [raised, coarserRaised] = levels(4.0);
+    CHECK(raised >= atBase);
+    CHECK(coarserRaised > 0);
+    MESSAGE("stand-ins at 0.5 px: ", atBase, " (none coarser); at 4 px: ", raised, ", ", coarserRaised, " coarser");
+    // Back at the base: the baked slices again.
+    CHECK(levels(0.5).second == 0);
+}

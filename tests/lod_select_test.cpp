@@ -314,3 +314,33 @@ TEST_CASE("lod select: auto draws the cheapest level of merged slices within the
     o.impostor.coarser[1] = {4, 0.9, 4.0};
     CHECK(selectLodFor(o, view(), synthetic()).level == 0);
 }
+
+TEST_CASE("lod select: with a level base, a coarser level may add only the bound's raise over it") {
+    // The impostor above (16 slices, levels of 8 and 4; 10.0504 px at 0.2 rad). Errors:
+    // e(L) = px sin 0.2 / (2L) + px / 64; a coarser level adds e(8) - e(16) = 0.0624 px and
+    // e(4) - e(16) = 0.1872 px.
+    LodObjectInput o = object(10.0f);
+    o.impostor.coarserLevels = 2;
+    o.impostor.coarser[0] = {8, 1.0, 8.0};
+    o.impostor.coarser[1] = {4, 1.0, 4.0};
+    const double px = 100.0 / std::sqrt(99.0);
+    auto errorAt = [&](int slices) { return px * std::sin(0.2) / (2.0 * slices) + px / 64.0; };
+    LodSelectOptions budget = mode(LodMode::Auto);
+    budget.levelBasePx = 0.5;
+    // At the base itself (no raise): the baked slices, although every level is within 0.5 px.
+    budget.maxErrorPx = 0.5;
+    CHECK(errorAt(4) < 0.5);
+    CHECK(selectLodFor(o, view(), synthetic(), budget).level == 0);
+    // Raised by 0.1 px: the 8-slice level adds 0.0624 (taken), the 4-slice 0.1872 (not).
+    budget.maxErrorPx = 0.6;
+    const LodDecision raised = selectLodFor(o, view(), synthetic(), budget);
+    CHECK(raised.level == 1);
+    CHECK(raised.errorPx - errorAt(16) == doctest::Approx(px * std::sin(0.2) / 32.0));
+    // Raised by 0.2 px: the 4-slice level too.
+    budget.maxErrorPx = 0.7;
+    CHECK(selectLodFor(o, view(), synthetic(), budget).level == 2);
+    // Without a base (0) any level within the bound, as before: the 4-slice one at 0.5.
+    budget.levelBasePx = 0.0;
+    budget.maxErrorPx = 0.5;
+    CHECK(selectLodFor(o, view(), synthetic(), budget).level == 2);
+}

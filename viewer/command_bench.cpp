@@ -103,6 +103,9 @@ void run(const BenchArgs& a) {
         // Every frame the run draws with stand-ins, warm-up included, over the techniques asked
         // for (an unrequested reference draws geometry).
         lod::LodOptions planned = lodOptions;
+        // Under a budget with the LOD lever, raising the bound also draws stand-ins at fewer,
+        // merged slices (unless --impostor-merged-slices already takes them within any bound).
+        if (options.budget && options.levers.lod && !planned.mergedSlices) planned.levelBasePx = planned.maxErrorPx;
         const std::size_t modes = options.modes.empty() ? techniqueRegistry().size() : options.modes.size();
         planned.plannedFrames = (long long)modes * (options.frames + options.warmupFrames);
         lodController.emplace(gpu, planned, &std::cerr);

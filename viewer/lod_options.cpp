@@ -87,6 +87,9 @@ nlohmann::json lodReport(const lod::LodController& controller) {
         {"slices", o.impostor.slices},
         {"overlap", o.impostor.overlap},
         {"merged_slices", o.mergedSlices},
+        // > 0: the budget's LOD lever takes coarser levels only above this bound (0: none, or
+        // with merged_slices any level within the bound).
+        {"level_base_px", o.levelBasePx},
         {"impostor_cache", o.impostorCache.string()},
         // The last frame's LOD units, predicted by the cost model (what LOD draws, not the frame:
         // objects in no unit, the technique and the enlargement are not in it).
@@ -176,6 +179,9 @@ std::string lodSummary(const lod::LodController& controller) {
 std::unique_ptr<lod::LodController> makeWindowLod(const GpuScene& scene, const LodArgs& args) {
     lod::LodOptions options = args.options();
     options.bakeBudgetMs = kViewerBakeBudgetMs;
+    // The levels of merged slices are built for the frame budget's LOD lever, which a window can
+    // turn on at any time; at the user's bound they draw nothing (LodOptions::levelBasePx).
+    if (!options.mergedSlices) options.levelBasePx = options.maxErrorPx;
     return std::make_unique<lod::LodController>(scene, options, &std::cerr);
 }
 

@@ -86,13 +86,18 @@ int ZoomDriver::begin(const GpuScene& scene, const Camera& camera, glm::ivec2 di
             if (!steeredBound_) userBoundPx_ = lod->options().maxErrorPx;
             lodBoundPx_ = ladder.bound(choice.lodLevel);
             lod->setMaxErrorPx(lodBoundPx_);
+            // Levels of merged slices come with the raise over the ladder's least bound.
+            if (lod->options().levelBasePx > 0.0) lod->setLevelBasePx(ladder.bound(0));
         }
     } else {
         zoom_ = std::clamp(std::max(choices_.fixedZoom, headFloor_), 1, 16);
         predictedMs_ = std::nan("");
     }
     // The budget stopped steering the bound (another lever, no budget): the user's is auto's again.
-    if (lod && steeredBound_ && lodBoundPx_ == 0.0) lod->setMaxErrorPx(userBoundPx_);
+    if (lod && steeredBound_ && lodBoundPx_ == 0.0) {
+        lod->setMaxErrorPx(userBoundPx_);
+        if (lod->options().levelBasePx > 0.0) lod->setLevelBasePx(userBoundPx_);
+    }
     steeredBound_ = lodBoundPx_ > 0.0;
     options.zoom = zoom_;
     options.zoomFilter = choices_.blur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
