@@ -8,6 +8,9 @@
 namespace strata {
 namespace {
 
+// The least share of a frame's time the reactive policy takes to scale with the zoom's pixels.
+constexpr double kLeastPixelShare = 0.02;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Two losses (or times) closer than this are equal: the tie goes to the other criterion.
@@ -155,7 +158,16 @@ double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int
     double scaled = ms;
     if (display.x > 0 && zoom != zoom_) {
         const double p1 = zoomPixels(display, 1);
-        auto model = [&](int z) { return (1.0 - pixelShare_) + pixelShare_ * zoomPixels(display, z) / p1; };
+        // Until a change of zoom has shown how the time splits, the LOD preview's part that no zoom
+        // shrinks (its geometry's triangles and draws) is taken as the frame's only such part: a
+        // geometry-bound view is not promised a zoom's saving. Without a preview, all of it scales.
+        double share = pixelShare_;
+        if (!shareLearned_ && !load.lod.levels.empty() && ms > 0.0) {
+            const LodLevelPreview& at = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
+            const double fixedMs = std::max(0.0, at.predictedMs - at.pixelMs - at.sideMs);
+            share = std::clamp(1.0 - fixedMs / ms, kLeastPixelShare, 1.0);
+        }
+        auto model = [&](int z) { return (1.0 - share) + share * zoomPixels(display, z) / p1; };
         scaled = ms * model(zoom) / model(zoom_);
     }
     return scaled + lodMs(load, level, zoom) - lodMs(load, level_, zoom);
@@ -224,8 +236,11 @@ void BudgetGovernor::observe(const FrameCost& cost) {
         const double pb = zoomPixels(display, beforeZoom_) / p1, pn = zoomPixels(display, zoom_) / p1;
         const double b = (beforeMs_ - now) / (pb - pn);
         const double a = now - b * pn;
-        const double share = std::clamp(b / std::max(a + b, 1e-9), 0.02, 1.0);
-        if (std::isfinite(share)) pixelShare_ = share;
+        const double share = std::clamp(b / std::max(a + b, 1e-9), kLeastPixelShare, 1.0);
+        if (std::isfinite(share)) {
+            pixelShare_ = share;
+            shareLearned_ = true;
+        }
     }
     if (!jump) beforeMs_ = kNaN;
 

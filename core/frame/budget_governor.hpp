@@ -22,8 +22,9 @@
 //    or a view that changed it). A bias that grows with the bound is not learnt.
 //  - reactive: from the measured median of the last `holdFrames` frames at the current state:
 //    over budget it moves to a lossier state (more zoom, a larger bound, or both), under it to a
-//    less lossy one, each estimated from the measured time (zoom: the learned pixel share; LOD:
-//    the selection's predicted difference), and never within the band. A frame over twice the
+//    less lossy one, each estimated from the measured time (zoom: the learned pixel share, and
+//    before a change of zoom has measured it, the share LOD's preview leaves to pixels; LOD: the
+//    selection's predicted difference), and never within the band. A frame over twice the
 //    target is judged at once instead of after the hold, and two frames in a row over the band
 //    on their median. Relief (under the band) waits the hold and eases each lever by one step
 //    at most.
@@ -148,6 +149,7 @@ private:
     int beforeZoom_ = 0, beforeLevel_ = 0;
     double beforeMs_;
     double pixelShare_ = 1.0;  // of the time at the current zoom, what scales with pixels
+    bool shareLearned_ = false;  // pixelShare_ measured (a change of zoom alone), not assumed
     // Predictive: LOD's pixel part as drawn over as previewed (lodMs), fitted to the frames.
     void learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost);
     // LOD's size-dependent part at zoom z: its pixel part / z^2 and its side part / z.
