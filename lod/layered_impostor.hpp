@@ -152,12 +152,15 @@ public:
     const std::vector<std::pair<int, int>>& adjacency() const { return adjacency_; }
     const std::vector<int>& holeSlices(int view, int adjacentView, int level = 0) const;
 
-    // Opaque impostors (one peel) store and draw each view's slices nearest its viewer first
-    // (slice L - 1, farthest from the apex, first): a deeper slice's texels behind a nearer
-    // slice's surface then fail the early depth test and are never shaded (llvmpipe, like a GPU,
-    // tests depth before a shader that only discards). Transparent ones keep the apex's order,
-    // back to front, the order blending needs.
-    bool frontToBack() const { return settings_.peels == 1; }
+    // Opaque impostors store and draw each view's slices nearest its viewer first (slice L - 1,
+    // farthest from the apex, first): a deeper slice's texels behind a nearer slice's surface
+    // then fail the early depth test and are never shaded (llvmpipe, like a GPU, tests depth
+    // before a shader that only discards). Transparent ones keep the apex's order, back to
+    // front, the order blending needs. A transparent impostor always has overlap 0 (ImpostorSet
+    // sets it, so that no surface is blended twice), with one peel or more; one peel and an
+    // overlap is therefore opaque. An opaque one baked with overlap 0 keeps the apex's order:
+    // right, without the saving.
+    bool frontToBack() const { return settings_.peels == 1 && settings_.overlap > 0.0f; }
     // The slice drawn k-th (0..L - 1) of a view's L.
     int sliceAt(int k, int L) const { return frontToBack() ? L - 1 - k : k; }
     GLuint atlas() const { return atlas_.id(); }

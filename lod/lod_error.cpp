@@ -24,9 +24,11 @@ double apexHalfAngleRadians(double apexFactor) {
 ImpostorError impostorError(double projectedDiameter, const ImpostorShape& shape, double angleRadians) {
     ImpostorError e;
     const double halfPi = 0.5 * std::numbers::pi;
-    const double apex = std::clamp(shape.apexHalfAngleRadians, 0.0, 0.49 * std::numbers::pi);
+    // Below 90 degrees, so that cos h stays positive (an apex at the sphere, factor <= 1, is 90).
+    const double apex =
+        shape.apexHalfAngleRadians > 0.0 ? std::min(shape.apexHalfAngleRadians, 0.49 * std::numbers::pi) : 0.0;
     const double angle = std::min(std::abs(angleRadians) + apex, halfPi);
-    const double depthSlices = 0.5 + std::max(shape.overlap, 0.0);
+    const double depthSlices = 0.5 + (shape.overlap > 0.0 ? shape.overlap : 0.0);  // NaN counts as 0
     // Where nothing moves (a baked view, parallel rays) it is 0 whatever the size (no 0 x infinity).
     e.parallaxPx = angle > 0.0 ? projectedDiameter * depthSlices * std::sin(angle) /
                                      (double(std::max(shape.slices, 1)) * std::cos(apex))

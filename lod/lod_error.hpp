@@ -50,7 +50,8 @@ struct ImpostorShape {
     double apexHalfAngleRadians = 0.0;  // h: the bake frustum's half-angle, asin(r / D)
 };
 
-// h for an apex at apexFactor * r (> 1).
+// h for an apex at apexFactor * r (> 1); 90 degrees for a factor <= 1 (impostorError takes at
+// most 0.49 pi of it).
 double apexHalfAngleRadians(double apexFactor);
 
 // The error above for an impostor of `shape` seen `angleRadians` from its nearest baked view,

@@ -10,14 +10,15 @@
 //     geometry, in every mode. The impostor is baked for viewers outside the sphere: inside it
 //     there is no image of what surrounds the eye, and near it the object spans more than 60
 //     degrees of view (half-angle asin(1/2)), its slices are seen at grazing angles and tear,
-//     and the parallax error r/L sin a is a large part of the screen;
+//     and the parallax error (lod_error.hpp) is a large part of the screen;
 //  3. mode Geometry: geometry (forced);
 //  4. no impostor baked for the object: geometry;
 //  5. mode Impostors: impostor (forced, whatever its error or cost);
 //  6. mode Auto: error above maxErrorPx: geometry; else the cheaper of the two predictions
 //     (ties go to geometry: exact for the same cost). The impostor's prediction is that of the
 //     cheapest of its levels of merged slices whose error is within the bound (level 0, the
-//     baked slices, when no coarser one is); forced impostors draw level 0.
+//     baked slices, when no coarser one is) and, with LodSelectOptions::levelBasePx, adds at
+//     most maxErrorPx - levelBasePx to level 0's; forced impostors draw level 0.
 #include "lod/lod_cost_model.hpp"
 
 #include <glm/glm.hpp>

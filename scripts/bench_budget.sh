@@ -59,7 +59,7 @@ for name in ${scenes//,/ }; do
     path=$out/$name-sweep.path
     python3 "$root/scripts/lib/sweep_path.py" "$count" "$spacing" "$path"
     common=(bench "$scene" --size "$size" --modes "$mode" --frames "$frames" --warmup 1 --camera-path "$path"
-            --lod auto --lod-max-error-px "$base" "${merged[@]}")
+            --lod auto --lod-max-error-px "$base" ${merged[@]+"${merged[@]}"})
     echo "bench_budget: $name: no budget" >&2
     # A budget nothing reaches (1e6 ms) keeps the zoom at 1 and gives the per-frame figures.
     "$strata" "${common[@]}" --frame-budget-ms 1e6 --budget-levers zoom --json "$out/$name-none.json" >/dev/null 2>"$out/$name-none.log"

@@ -301,3 +301,20 @@ TEST_CASE("budget governor: predictive learns what LOD's pixels really cost, the
     drive(right, d, 60);
     CHECK(right.lodPixelScale() == doctest::Approx(1.0).epsilon(0.01));
 }
+
+TEST_CASE("budget governor: the reactive prior pixel share, of the time at zoom 1") {
+    // The synthetic device at (1, 0): 68.864 ms of which LOD's 30 is fixed: 38.864 / 68.864.
+    CHECK(priorPixelShare(68.864, 30.0, 1.0) == doctest::Approx(38.864 / 68.864));
+    // At (2, 1): 29.216 ms drawn at a quarter of the pixels, 18 fixed: the pixel part at zoom 1
+    // is 11.216 x 4 = 44.864, so 44.864 / 62.864 (the device's truth: 38.864 of 56.864, the zoom
+    // part's own 2 ms being fixed too). Taken of the time at zoom 2 it would be 11.216 / 29.216.
+    CHECK(priorPixelShare(29.216, 18.0, 0.25) == doctest::Approx(44.864 / 62.864));
+    // A frame that is all fixed, or more than all: the least share; nothing known: 1.
+    CHECK(priorPixelShare(20.0, 20.0, 1.0) == doctest::Approx(0.02));
+    CHECK(priorPixelShare(20.0, 35.0, 0.25) == doctest::Approx(0.02));
+    CHECK(priorPixelShare(20.0, 0.0, 0.25) == doctest::Approx(1.0));
+    CHECK(priorPixelShare(0.0, 5.0, 1.0) == 1.0);
+    CHECK(priorPixelShare(NAN, 5.0, 1.0) == 1.0);
+    CHECK(priorPixelShare(20.0, NAN, 1.0) == 1.0);
+    CHECK(priorPixelShare(20.0, 5.0, 0.0) == 1.0);
+}

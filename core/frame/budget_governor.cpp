@@ -50,6 +50,14 @@ std::vector<double> LodLadder::bounds() const {
 
 double zoomLossPx(int zoom) { return 0.5 * double(std::max(zoom, 1) - 1); }
 
+double priorPixelShare(double ms, double fixedMs, double pixelRatio) {
+    if (!(ms > 0.0) || !(pixelRatio > 0.0) || !std::isfinite(fixedMs)) return 1.0;
+    // ms = fixed + perPixel * pixelRatio, so perPixel = (ms - fixed) / pixelRatio at zoom 1.
+    const double fixed = std::clamp(fixedMs, 0.0, ms);
+    const double perPixel = (ms - fixed) / pixelRatio;
+    return std::clamp(perPixel / std::max(fixed + perPixel, 1e-9), kLeastPixelShare, 1.0);
+}
+
 BudgetGovernor::BudgetGovernor(const ZoomBudget& budget, BudgetLevers levers, ZoomControllerKind kind,
                                const ZoomCostModel& model, LossScales scales)
     : budget_(budget), levers_(levers), kind_(kind), model_(model), scales_(scales), beforeMs_(kNaN) {
@@ -162,10 +170,9 @@ double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int
         // shrinks (its geometry's triangles and draws) is taken as the frame's only such part: a
         // geometry-bound view is not promised a zoom's saving. Without a preview, all of it scales.
         double share = pixelShare_;
-        if (!shareLearned_ && !load.lod.levels.empty() && ms > 0.0) {
+        if (!shareLearned_ && !load.lod.levels.empty()) {
             const LodLevelPreview& at = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
-            const double fixedMs = std::max(0.0, at.predictedMs - at.pixelMs - at.sideMs);
-            share = std::clamp(1.0 - fixedMs / ms, kLeastPixelShare, 1.0);
+            share = priorPixelShare(ms, at.predictedMs - at.pixelMs - at.sideMs, zoomPixels(display, zoom_) / p1);
         }
         auto model = [&](int z) { return (1.0 - share) + share * zoomPixels(display, z) / p1; };
         scaled = ms * model(zoom) / model(zoom_);

@@ -93,6 +93,12 @@ struct LossScales {
     double lod = 1.0;
 };
 
+// Reactive, before a change of zoom alone has measured it: the share of the frame time at zoom 1
+// that scales with pixels, from a frame of `ms` drawn at a zoom whose pixels are `pixelRatio` of
+// zoom 1's, of which `fixedMs` (LOD's preview: its predicted time less its pixel and quad-side
+// parts) is taken as the only part no zoom shrinks. In [0.02, 1]; 1 where nothing is known.
+double priorPixelShare(double ms, double fixedMs, double pixelRatio);
+
 // The farthest a display pixel lies from the sample it shows when a zoom-z frame is enlarged by
 // replication: a block corner from the block's sample, (z - 1) / 2 along each axis.
 double zoomLossPx(int zoom);
@@ -148,7 +154,7 @@ private:
     std::deque<double> recent_;
     int beforeZoom_ = 0, beforeLevel_ = 0;
     double beforeMs_;
-    double pixelShare_ = 1.0;  // of the time at the current zoom, what scales with pixels
+    double pixelShare_ = 1.0;  // of the time at zoom 1, what scales with pixels
     bool shareLearned_ = false;  // pixelShare_ measured (a change of zoom alone), not assumed
     // Predictive: LOD's pixel part as drawn over as previewed (lodMs), fitted to the frames.
     void learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost);
