@@ -15,11 +15,12 @@
 #            instance): the zoom takes little off it, raising the bound a lot.
 #
 # usage: scripts/bench_budget.sh [--out DIR] [--strata PATH] [--scenes orchard,field] [--frames N]
-#        [--mode ID] [--budget-share F] [--merged-slices] [--least-bound PX] [--quick]
+#        [--mode ID] [--budget-share F] [--merged-slices] [--least-bound PX] [--size WxH] [--quick]
 #   --quick: 12 frames, orchard only.
 #   --merged-slices: every run with --impostor-merged-slices, so that raising the LOD bound
 #            also draws stand-ins at fewer slices (layered-impostors.md, "Levels of merged slices").
 #   --least-bound PX: the least LOD bound for every scene, in place of the scene's own.
+#   --size WxH: the image size for every scene, in place of the scene's own.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$root/docs/bench/budget
@@ -30,6 +31,7 @@ mode=blend-sorted
 share=0.5
 merged=()
 least=
+sizeArg=
 while [[ $# -gt 0 ]]; do
     case $1 in
         --out) out=$2; shift 2 ;;
@@ -40,6 +42,7 @@ while [[ $# -gt 0 ]]; do
         --budget-share) share=$2; shift 2 ;;
         --merged-slices) merged=(--impostor-merged-slices); shift ;;
         --least-bound) least=$2; shift 2 ;;
+        --size) sizeArg=$2; shift 2 ;;
         --quick) frames=12; scenes=orchard; shift ;;
         -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
         *) echo "bench_budget.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
@@ -56,6 +59,7 @@ for name in ${scenes//,/ }; do
         *) echo "bench_budget.sh: unknown scene '$name' (orchard, field)" >&2; exit 2 ;;
     esac
     [[ -z $least ]] || base=$least
+    [[ -z $sizeArg ]] || size=$sizeArg
     path=$out/$name-sweep.path
     python3 "$root/scripts/lib/sweep_path.py" "$count" "$spacing" "$path"
     common=(bench "$scene" --size "$size" --modes "$mode" --frames "$frames" --warmup 1 --camera-path "$path"
