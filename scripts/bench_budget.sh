@@ -44,7 +44,7 @@ while [[ $# -gt 0 ]]; do
         --least-bound) least=$2; shift 2 ;;
         --size) sizeArg=$2; shift 2 ;;
         --quick) frames=12; scenes=orchard; shift ;;
-        -h|--help) sed -n '2,22p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
         *) echo "bench_budget.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
