@@ -358,6 +358,9 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
         const double px = std::isfinite(d.projectedPx) ? d.projectedPx : 2.0 * double(std::max(size.x, size.y));
         return std::min(0.7853981633974483 * px * px, area);
     };
+    // The ladder's first bound is its least: where the levels serve the budget, the raise above
+    // it is what a coarser level may add.
+    const double levelBase = options_.levelBasePx > 0.0 && !boundsPx.empty() ? boundsPx.front() : 0.0;
     bool first = true;
     for (double bound : boundsPx) {
         LodLevelPreview level;
@@ -367,7 +370,7 @@ LodPreview LodController::previewBounds(const Camera& camera, glm::ivec2 size, c
         // Each decision is selectLod's (selectLodFor), summed without keeping them.
         double covered = 0.0, weightedError = 0.0;
         for (std::size_t i = 0; i < inputs.size(); ++i) {
-            const LodDecision d = selectLodFor(inputs[i], view, model, {LodMode::Auto, bound, options_.levelBasePx});
+            const LodDecision d = selectLodFor(inputs[i], view, model, {LodMode::Auto, bound, levelBase});
             level.predictedMs += d.impostor ? d.impostorMs : d.geometryMs;
             if (d.impostor) level.impostorObjects += inputs[i].objects;
             if (d.impostor) weightedError += d.errorPx * discArea(d);

@@ -52,7 +52,8 @@ struct LodOptions {
     // slices; docs/layered-impostors.md).
     bool mergedSlices = false;
     // The frame budget's LOD lever (LodSelectOptions::levelBasePx): > 0 builds the levels and
-    // takes a coarser one only as the bound rises above this, its least value. 0: none.
+    // takes a coarser one only as the bound rises above this, its least value
+    // (setBudgetBoundPx; previewBounds takes its ladder's first bound as the least). 0: none.
     double levelBasePx = 0.0;
 };
 
@@ -114,10 +115,19 @@ public:
     const glm::vec3& lastEye() const { return lastEye_; }         // the last frame's eye, world
     const LodOptions& options() const { return options_; }
     void setMode(LodMode mode) { options_.mode = mode; }
-    void setMaxErrorPx(double px) { options_.maxErrorPx = px; }
-    // LodOptions::levelBasePx; has an effect only where the levels were built (either option
-    // at construction).
-    void setLevelBasePx(double px) { options_.levelBasePx = px; }
+    // The bound as the user sets it (or as it is again once no budget steers it). Where the
+    // levels serve the frame budget (LodOptions::levelBasePx > 0) none is drawn at it: the level
+    // base follows.
+    void setMaxErrorPx(double px) {
+        options_.maxErrorPx = px;
+        if (options_.levelBasePx > 0.0) options_.levelBasePx = px;
+    }
+    // The bound a frame budget raised from its least, `leastPx`: the levels (where they serve the
+    // budget) may add the raise.
+    void setBudgetBoundPx(double px, double leastPx) {
+        options_.maxErrorPx = px;
+        if (options_.levelBasePx > 0.0) options_.levelBasePx = leastPx;
+    }
     // What selection is judged with: the mode, the bound and the budget's level base.
     LodSelectOptions selectOptions() const { return {options_.mode, options_.maxErrorPx, options_.levelBasePx}; }
     const ImpostorSet* impostors() const { return impostors_.get(); }

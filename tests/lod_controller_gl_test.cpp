@@ -214,7 +214,7 @@ TEST_CASE("lod controller: a level base builds the levels and takes them only as
     o.costModel = model;
     LodController lod(*fx.gpu, o);
     auto levels = [&](double boundPx) {
-        lod.setMaxErrorPx(boundPx);
+        lod.setBudgetBoundPx(boundPx, 0.5);
         REQUIRE(lod.select(fx.camera, {160, 100}));
         int standIns = 0, coarser = 0;
         for (const LodDecision& d : lod.unitSelection().objects) {
@@ -234,4 +234,11 @@ TEST_CASE("lod controller: a level base builds the levels and takes them only as
     MESSAGE("stand-ins at 0.5 px: ", atBase, " (none coarser); at 4 px: ", raised, ", ", coarserRaised, " coarser");
     // Back at the base: the baked slices again.
     CHECK(levels(0.5).second == 0);
+    // A bound the user sets (no budget raised it) moves the base with it: 4 px, no coarser level.
+    lod.setMaxErrorPx(4.0);
+    CHECK(lod.options().levelBasePx == 4.0);
+    REQUIRE(lod.select(fx.camera, {160, 100}));
+    int coarserAtUserBound = 0;
+    for (const LodDecision& d : lod.unitSelection().objects) coarserAtUserBound += d.impostor && d.level > 0 ? 1 : 0;
+    CHECK(coarserAtUserBound == 0);
 }

@@ -65,6 +65,20 @@ LodSelectOptions mode(LodMode m) {
     return o;
 }
 
+// object(10) (10.0504 px, 16 slices) with coarser levels of 8 and 4 slices, drawn fraction 1 and
+// one quad a slice each; and its error at L slices, px sin 0.2 / (2L) + px / 64.
+LodObjectInput withLevels() {
+    LodObjectInput o = object(10.0f);
+    o.impostor.coarserLevels = 2;
+    o.impostor.coarser[0] = {8, 1.0, 8.0};
+    o.impostor.coarser[1] = {4, 1.0, 4.0};
+    return o;
+}
+double errorAtSlices(int slices) {
+    const double px = 100.0 / std::sqrt(99.0);
+    return px * std::sin(0.2) / (2.0 * slices) + px / 64.0;
+}
+
 }  // namespace
 
 TEST_CASE("lod select: mode names parse and print; anything else is a clear error") {
@@ -272,13 +286,9 @@ TEST_CASE("lod select: auto draws the cheapest level of merged slices within the
     // fraction 1 and one quad a slice each. Errors at 0.2 rad: parallax 10.0504 sin 0.2 / (2L) =
     // 0.0624 (16), 0.1248 (8), 0.2497 (4) px, sampling 0.157 px; layer pixels L x 101.01: each
     // level halves the impostor's pixel part.
-    LodObjectInput o = object(10.0f);
-    o.impostor.coarserLevels = 2;
-    o.impostor.coarser[0] = {8, 1.0, 8.0};
-    o.impostor.coarser[1] = {4, 1.0, 4.0};
+    LodObjectInput o = withLevels();
     const double px = 100.0 / std::sqrt(99.0);
-    const double sampling = px / 64.0;
-    auto errorAt = [&](int slices) { return px * std::sin(0.2) / (2.0 * slices) + sampling; };
+    const auto errorAt = errorAtSlices;
 
     const LodDecision coarsest = selectLodFor(o, view(), synthetic());
     CHECK(coarsest.impostor);
@@ -319,12 +329,9 @@ TEST_CASE("lod select: with a level base, a coarser level may add only the bound
     // The impostor above (16 slices, levels of 8 and 4; 10.0504 px at 0.2 rad). Errors:
     // e(L) = px sin 0.2 / (2L) + px / 64; a coarser level adds e(8) - e(16) = 0.0624 px and
     // e(4) - e(16) = 0.1872 px.
-    LodObjectInput o = object(10.0f);
-    o.impostor.coarserLevels = 2;
-    o.impostor.coarser[0] = {8, 1.0, 8.0};
-    o.impostor.coarser[1] = {4, 1.0, 4.0};
+    LodObjectInput o = withLevels();
     const double px = 100.0 / std::sqrt(99.0);
-    auto errorAt = [&](int slices) { return px * std::sin(0.2) / (2.0 * slices) + px / 64.0; };
+    const auto errorAt = errorAtSlices;
     LodSelectOptions budget = mode(LodMode::Auto);
     budget.levelBasePx = 0.5;
     // At the base itself (no raise): the baked slices, although every level is within 0.5 px.

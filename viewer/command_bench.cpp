@@ -112,7 +112,8 @@ void run(const BenchArgs& a) {
         lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size, 0);  // bakes before timing
         options.lod = [&](const Camera& camera, glm::ivec2 size, int frames, double maxErrorPx) {
             BenchLodFrame frame;
-            lodController->setMaxErrorPx(maxErrorPx > 0.0 ? maxErrorPx : lodOptions.maxErrorPx);
+            if (maxErrorPx > 0.0) lodController->setBudgetBoundPx(maxErrorPx, lodOptions.maxErrorPx);
+            else lodController->setMaxErrorPx(lodOptions.maxErrorPx);
             frame.standIns = lodController->select(camera, size, frames);
             frame.impostorObjects = lodController->selection().impostorObjects;
             frame.impostorBytes = lodController->selection().impostorBytes;

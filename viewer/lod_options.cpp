@@ -47,8 +47,8 @@ void addLodOptions(CLI::App* cmd, LodArgs& args) {
         ->check(CLI::Range(0.0, 16.0))
         ->capture_default_str();
     cmd->add_flag("--impostor-merged-slices", args.mergedSlices,
-                  "auto may draw far stand-ins with fewer, merged slices where the error bound allows (experimental: "
-                  "the bound leaves out the overlap's and the bake rays' depth error, so images lose more than it says)");
+                  "auto may draw far stand-ins with fewer, merged slices where the error bound allows (off by default: "
+                  "a per-object bound in pixels does not hold a PSNR; a frame budget's LOD lever uses them anyway)");
     cmd->add_option("--impostor-cache", args.cache,
                     "where baked impostors are kept between runs, keyed by what they bake: none, default "
                     "($XDG_CACHE_HOME/strata/impostors, else ~/.cache/strata/impostors) or a folder")

@@ -22,11 +22,8 @@ void drawLodSection(lod::LodController& lod, double budgetBoundPx) {
     if (lod.options().mode == lod::LodMode::Auto && budgetBoundPx > 0.0)
         ImGui::Text("max error %.2f px, set by the frame budget", budgetBoundPx);
     else if (lod.options().mode == lod::LodMode::Auto &&
-             ImGui::SliderFloat("max error px", &maxError, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) {
+             ImGui::SliderFloat("max error px", &maxError, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
         lod.setMaxErrorPx(maxError);
-        // The user's bound is the one no budget raised: still no coarser levels at it.
-        if (lod.options().levelBasePx > 0.0) lod.setLevelBasePx(maxError);
-    }
     const lod::LodSelection& s = lod.selection();
     ImGui::TextWrapped("%s", lodSummary(lod).c_str());
     if (lod.options().mode != lod::LodMode::Geometry)

@@ -76,9 +76,6 @@ int ZoomDriver::begin(const GpuScene& scene, const Camera& camera, glm::ivec2 di
             scene, camera.projection(float(displaySize.x) / float(displaySize.y)) * camera.view(), displaySize);
         // The LOD lever steers auto's bound; in another mode it has nothing to steer this frame.
         const LodLadder ladder{std::max(0.01, double(choices_.lodBasePx)), 4};
-        // Levels of merged slices come with the raise over the ladder's least bound: set before
-        // the preview, which judges the levels by it.
-        if (controller_->levers().lod && lod && lod->options().levelBasePx > 0.0) lod->setLevelBasePx(ladder.bound(0));
         if (controller_->levers().lod && lod) load_.lod = lod->previewBounds(camera, displaySize, ladder.bounds());
         const GovernorChoice choice = controller_->choose(load_);
         zoom_ = choice.zoom;
@@ -88,17 +85,14 @@ int ZoomDriver::begin(const GpuScene& scene, const Camera& camera, glm::ivec2 di
             // The bound the user set, kept for when the budget stops steering it.
             if (!steeredBound_) userBoundPx_ = lod->options().maxErrorPx;
             lodBoundPx_ = ladder.bound(choice.lodLevel);
-            lod->setMaxErrorPx(lodBoundPx_);
+            lod->setBudgetBoundPx(lodBoundPx_, ladder.bound(0));
         }
     } else {
         zoom_ = std::clamp(std::max(choices_.fixedZoom, headFloor_), 1, 16);
         predictedMs_ = std::nan("");
     }
     // The budget stopped steering the bound (another lever, no budget): the user's is auto's again.
-    if (lod && steeredBound_ && lodBoundPx_ == 0.0) {
-        lod->setMaxErrorPx(userBoundPx_);
-        if (lod->options().levelBasePx > 0.0) lod->setLevelBasePx(userBoundPx_);
-    }
+    if (lod && steeredBound_ && lodBoundPx_ == 0.0) lod->setMaxErrorPx(userBoundPx_);
     steeredBound_ = lodBoundPx_ > 0.0;
     options.zoom = zoom_;
     options.zoomFilter = choices_.blur ? DeflectFilter::Bilinear : DeflectFilter::Nearest;
