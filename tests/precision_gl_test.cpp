@@ -143,8 +143,9 @@ TEST_CASE("memory follows the precision: RGBA16F 8 B, RGBA32F 16 B, R16F 2 B, R3
     CHECK(bytes("f2b", {"precision=32"}) == px * (2 * 4 + 2 * 16));
     CHECK(bytes("f2b2", {"precision=16"}) == px * (2 * 8 + 8));
     CHECK(bytes("f2b2", {"precision=32"}) == px * (2 * 8 + 16));
-    CHECK(bytes("dual", {"precision=16"}) == px * (2 * 8 + 4 * 8));
-    CHECK(bytes("dual", {"precision=32"}) == px * (2 * 8 + 4 * 16));
+    // dual: + the back depth buffer (back_depth_test, 4 B).
+    CHECK(bytes("dual", {"precision=16"}) == px * (2 * 8 + 4 * 8 + 4));
+    CHECK(bytes("dual", {"precision=32"}) == px * (2 * 8 + 4 * 16 + 4));
     CHECK(bytes("bun", {"precision=16"}) == px * (8 + 4 * 16 + 8 * 2 * 8) + 8);
     CHECK(bytes("bun", {"precision=32"}) == px * (8 + 4 * 16 + 8 * 2 * 16) + 8);
     CHECK(bytes("wboit", {"precision=16"}) == px * 10);

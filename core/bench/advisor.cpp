@@ -24,9 +24,10 @@ std::vector<double> tradeValues(const SettingDescription& d, bool hasTail) {
     // Precision: the other of 16 and 32. Where it only sizes the overflow tail's targets
     // (kbuffer, fab, ll with tail off), it changes nothing at the defaults.
     else if (d.name == "precision" && !hasTail) values = d.allowed;
-    // The overflow tail (blend what does not fit instead of dropping it), and the compute resolve
-    // (the same image, another cost).
-    else if ((d.name == "tail" || d.name == "compute_resolve") && d.defaultValue == 0.0) values = {1};
+    // The overflow tail (blend what does not fit instead of dropping it); the compute resolve and
+    // dual's atomic range (the same image, another cost: which is faster depends on the device).
+    else if ((d.name == "tail" || d.name == "compute_resolve" || d.name == "atomic_range") && d.defaultValue == 0.0)
+        values = {1};
     std::vector<double> out;
     for (double v : values)
         if (v != d.defaultValue && v >= d.min && v <= d.max) out.push_back(v);

@@ -61,7 +61,9 @@ public:
         std::function<void(S&, double)> set;
     };
 
-    SettingsSchema(std::initializer_list<Field> fields) : fields_(fields) {
+    SettingsSchema(std::initializer_list<Field> fields) : SettingsSchema(std::vector<Field>(fields)) {}
+    // A technique whose struct extends another's fields (dual's peeling settings and its own).
+    explicit SettingsSchema(std::vector<Field> fields) : fields_(std::move(fields)) {
         const S defaults{};
         for (auto& f : fields_) {
             // A field built without memberAccess would fail only when first written.

@@ -6,6 +6,13 @@
 // the back layer over the back accumulation. ceil(D/2) peel passes: the peel pass counts the
 // fragments strictly inside the range, and when there are none the next pass is not issued.
 // Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
+// With atomic_range the peel pass finds the next range by image atomics instead of the RG32F
+// MAX blend, and a full-screen pass after it writes the range in the same form
+// (dual_range_pack.frag.glsl), so everything after the peel reads what it read before.
+// With back_depth_test (the default) a peel pass tests against the back of its range instead of
+// the opaque depth (which lies behind it), so the back layers peeled already are rejected
+// before they are shaded; the shader still decides every fragment near the back
+// (dual_back_depth.glsl).
 // In a scene with coloured filters (oit/color_model.hpp) the layers carry their filters and both
 // accumulations what they let through per channel, in four more targets (dual_blend.frag.glsl).
 #include "oit/technique.hpp"
@@ -22,7 +29,7 @@
 namespace strata::peeling {
 namespace {
 
-class DualPeeling final : public TechniqueWithSettings<PeelingSettings> {
+class DualPeeling final : public TechniqueWithSettings<DualSettings> {
 public:
     using TechniqueWithSettings::TechniqueWithSettings;
 
@@ -31,8 +38,12 @@ public:
         ensurePrograms(model);
         ensureTargets(frame.size, model);
         PeelLoop loop(frame, stats_, skipper_, settings_.skipPeeled);
+        // The last frame's packs reset the range images with image stores: order them before
+        // this frame's atomics.
+        if (settings_.atomicRange) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         loop.setTotal(initialise(frame));
         if (loop.total() > 0) {
+            if (settings_.backDepthTest) writeBackDepth(frame, 0);
             clearAccumulation(frontAccum_.id(), rgb() ? frontAccumFilter_.id() : 0);
             clearAccumulation(backAccum_.id(), rgb() ? backAccumFilter_.id() : 0);
             PeelLoopOptions options;
@@ -50,6 +61,8 @@ public:
                 [&](int pass) {
                     const int cur = (pass + 1) % 2;
                     peel(frame, cur);
+                    if (settings_.atomicRange) packRange(frame, cur);  // writes the back depth too
+                    else if (settings_.backDepthTest) writeBackDepth(frame, cur);
                     blend(frame, cur, passQueries(pass));
                 },
                 [&](int pass) { return collect(passQueries(pass)); });
@@ -61,6 +74,10 @@ public:
         // accumulations (RGBA16F, 8 B, or RGBA32F, 16 B, each).
         // With coloured filters, four more: the layers' filters and the accumulations'.
         stats_.bytes = pixels * (2 * 8 + (rgb() ? 8 : 4) * floatTexelBytes(settings_.precision, 4));
+        // atomic_range: two pairs of R32I images (4 B each).
+        if (settings_.atomicRange) stats_.bytes += pixels * 4 * 4;
+        // back_depth_test: a 32-bit depth buffer.
+        if (settings_.backDepthTest) stats_.bytes += pixels * 4;
     }
 
 private:
@@ -75,8 +92,17 @@ private:
             p.composite = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/peel_composite.frag.glsl"},
                                            withColorModel({{"DUAL", ""}}, model));
         }
+        // atomic_range's, built when first used.
+        if (settings_.atomicRange && !p.peelAtomic.program) {
+            gl::Defines atomic = withColorModel({}, model);
+            atomic["STRATA_DUAL_ATOMIC_RANGE"] = "";
+            p.peelAtomic = buildSceneProgram("oit/peeling/dual_peel.frag.glsl", atomic);
+            if (!packProgram_)
+                packProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_range_pack.frag.glsl"});
+        }
         if (initProgram_.program) return;
         initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
+        backDepthProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_back_depth.frag.glsl"});
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
@@ -111,6 +137,20 @@ private:
                 glNamedFramebufferTexture(blendFbo_.id(), GL_COLOR_ATTACHMENT3, backAccumFilter_.id(), 0);
             }
             glNamedFramebufferDrawBuffers(blendFbo_.id(), rgb() ? 4 : 2, four);
+            for (auto& t : nextNearest_) t = {};
+            for (auto& t : nextFarthest_) t = {};
+            backDepth_ = {};
+        }
+        if (settings_.backDepthTest && !backDepth_) backDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+        if (settings_.atomicRange && !nextNearest_[0]) {
+            // Empty: every depth's bits lie above -1 and below INT_MAX. Each pack resets what it read.
+            const GLint none[2] = {-1, 0x7fffffff};
+            for (int i = 0; i < 2; ++i) {
+                nextNearest_[i] = gl::createTexture2D(GL_R32I, size.x, size.y);
+                nextFarthest_[i] = gl::createTexture2D(GL_R32I, size.x, size.y);
+                glClearTexImage(nextNearest_[i].id(), 0, GL_RED_INTEGER, GL_INT, &none[0]);
+                glClearTexImage(nextFarthest_[i].id(), 0, GL_RED_INTEGER, GL_INT, &none[1]);
+            }
         }
     }
 
@@ -119,18 +159,23 @@ private:
     void bindPeelTargets(const FrameContext& frame, int cur, bool withLayers) {
         if (!peelFbo_) peelFbo_ = gl::Framebuffer::create();
         GLuint fbo = peelFbo_.id();
-        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, minMax_[cur].id(), 0);
+        // atomic_range: a peel pass leaves the range in images; packRange writes minMax_[cur].
+        const bool rangeTarget = !(withLayers && settings_.atomicRange);
+        glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, rangeTarget ? minMax_[cur].id() : 0, 0);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT1, withLayers ? front_.id() : 0, 0);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT2, withLayers ? back_.id() : 0, 0);
         const bool filters = withLayers && rgb();
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, filters ? frontFilter_.id() : 0, 0);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT4, filters ? backFilter_.id() : 0, 0);
-        glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, frame.targets.depth(), 0);
-        const GLenum five[5] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3,
-                                GL_COLOR_ATTACHMENT4};
+        // A peel tests against the back of its range (back_depth_test), which lies in front of
+        // the opaque depth; the init pass against the opaque depth.
+        const bool backTest = withLayers && settings_.backDepthTest;
+        glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, backTest ? backDepth_.id() : frame.targets.depth(), 0);
+        const GLenum five[5] = {rangeTarget ? GLenum(GL_COLOR_ATTACHMENT0) : GLenum(GL_NONE), GL_COLOR_ATTACHMENT1,
+                                GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
         glNamedFramebufferDrawBuffers(fbo, filters ? 5 : withLayers ? 3 : 1, five);
         const float clearRange[4] = {-2, -2, 0, 0};
-        glClearTexImage(minMax_[cur].id(), 0, GL_RGBA, GL_FLOAT, clearRange);
+        if (rangeTarget) glClearTexImage(minMax_[cur].id(), 0, GL_RGBA, GL_FLOAT, clearRange);
         if (withLayers) {
             glClearTexImage(front_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
             glClearTexImage(back_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
@@ -140,7 +185,8 @@ private:
             glClearTexImage(backFilter_.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        setTransparentDepthState(frame);  // against the opaque depth, no writes
+        setTransparentDepthState(frame);  // no writes
+        if (backTest) glDepthFunc(GL_GEQUAL);  // the back itself passes
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
     }
@@ -164,9 +210,44 @@ private:
         gl::ScopedPass pass(frame.timer, "dual peel");
         bindPeelTargets(frame, cur, true);
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
-        skipper_.draw(frame, programs_->peel, stats_);
+        if (settings_.atomicRange) {
+            glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+            glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                               GL_R32I);
+        }
+        skipper_.draw(frame, settings_.atomicRange ? programs_->peelAtomic : programs_->peel, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
+        ++stats_.passes;
+    }
+
+    // atomic_range: the range the peel left in nextNearest_/nextFarthest_[cur], written to
+    // minMax_[cur] as the MAX blend would have left it; the images are reset for their next use.
+    void packRange(const FrameContext& frame, int cur) {
+        gl::ScopedPass pass(frame.timer, "dual range pack");
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the peel's atomics
+        if (!packFbo_) packFbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(packFbo_.id(), GL_COLOR_ATTACHMENT0, minMax_[cur].id(), 0);
+        glNamedFramebufferTexture(packFbo_.id(), GL_DEPTH_ATTACHMENT, settings_.backDepthTest ? backDepth_.id() : 0, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, packFbo_.id());
+        glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+        glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+        drawFullscreenDepth(frame, packProgram_.id());  // every texel, depth written whatever it held
+        glDisable(GL_DEPTH_TEST);
+        ++stats_.passes;
+    }
+
+    // back_depth_test without atomic_range: the back of the range in minMax_[cur] to the depth
+    // buffer the next peel tests.
+    void writeBackDepth(const FrameContext& frame, int cur) {
+        gl::ScopedPass pass(frame.timer, "dual back depth");
+        if (!depthFbo_) depthFbo_ = gl::Framebuffer::create();
+        glNamedFramebufferTexture(depthFbo_.id(), GL_DEPTH_ATTACHMENT, backDepth_.id(), 0);
+        glNamedFramebufferDrawBuffer(depthFbo_.id(), GL_NONE);
+        glBindFramebuffer(GL_FRAMEBUFFER, depthFbo_.id());
+        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[cur].id());
+        drawFullscreenDepth(frame, backDepthProgram_.id());
+        glDisable(GL_DEPTH_TEST);
         ++stats_.passes;
     }
 
@@ -264,12 +345,14 @@ private:
     }
 
     struct Programs {
-        SceneProgram peel;
+        SceneProgram peel, peelAtomic;
         gl::Program blend, composite;
     };
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     SceneProgram initProgram_;
+    gl::Program packProgram_;       // atomic_range
+    gl::Program backDepthProgram_;  // back_depth_test
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;                   // the init pass's count
     std::vector<PassQueries> passQueries_;  // each pass's, by pass
@@ -277,7 +360,10 @@ private:
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
     // The RGB build's: what the layers and the accumulations let through, per channel.
     gl::Texture frontFilter_, backFilter_, frontAccumFilter_, backAccumFilter_;
-    gl::Framebuffer peelFbo_, blendFbo_;
+    // atomic_range: the next range's nearest and farthest depth bits, per side of the ping-pong.
+    gl::Texture nextNearest_[2], nextFarthest_[2];
+    gl::Texture backDepth_;  // back_depth_test: the back of the range the next peel tests against
+    gl::Framebuffer peelFbo_, blendFbo_, packFbo_, depthFbo_;
     ObjectSkipper skipper_;
 };
 
@@ -287,10 +373,12 @@ private:
 namespace strata {
 
 TechniqueEntry dualEntry() {
-    TechniqueInfo info{"dual", "peeling", true, false, "2*ceil(D/2)+2 (init + ceil(D/2) peels + as many blends + composite)",
-                       "w*h*48 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
-                       "(8 each); w*h*80 B at 32 (RGBA32F, 16 each); + four more RGBA targets in a scene with coloured "
-                       "filters; Table 1: 6 words",
+    TechniqueInfo info{"dual", "peeling", true, false,
+                       "3*ceil(D/2)+3 (init and its back depth + ceil(D/2) x (peel, back depth or range pack, blend) "
+                       "+ composite); 2*ceil(D/2)+2 with back_depth_test and atomic_range off",
+                       "w*h*52 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
+                       "(8 each) + the back depth (4); w*h*84 B at 32 (RGBA32F, 16 each); + four more RGBA targets in "
+                       "a scene with coloured filters, + 16 with atomic_range; Table 1: 6 words",
                        "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
     info.rgbTransmittance = true;
     return techniqueEntry<peeling::DualPeeling>(info);

@@ -11,20 +11,49 @@ struct PeelingSettings {
     int precision = 32;
     bool readAhead = true;
 
-    static const SettingsSchema<PeelingSettings>& schema() {
-        static const SettingsSchema<PeelingSettings> s{
-            integerSetting(&PeelingSettings::maxPasses, "max_passes", 1, 1000000, SettingChange::Nothing,
-                           "most peel passes per frame (dual peels two layers a pass); a safety bound, hitting it "
-                           "counts as overflow"),
-            flagSetting(&PeelingSettings::skipPeeled, "skip_peeled", SettingChange::Nothing,
-                        "skip objects whose bounds lie wholly on the peeled side of the last pass's depth "
-                        "(section 3.3), found by occlusion queries"),
-            precisionSetting(&PeelingSettings::precision, "peeled layers and accumulations (depths stay 32-bit)"),
-            flagSetting(&PeelingSettings::readAhead, "read_ahead", SettingChange::Nothing,
-                        "issue the next passes before the last pass's count is read, while the counts read prove "
-                        "that fragments remain (a pass takes at most one a pixel, dual two), so the GPU does not "
-                        "wait for the CPU between passes (f2b, f2b2, dual)"),
+    // The fields of any struct built on these (S derives from PeelingSettings).
+    template <class S>
+    static std::vector<typename SettingsSchema<S>::Field> fields() {
+        return {
+            integerSetting<S>(&S::maxPasses, "max_passes", 1, 1000000, SettingChange::Nothing,
+                              "most peel passes per frame (dual peels two layers a pass); a safety bound, hitting "
+                              "it counts as overflow"),
+            flagSetting<S>(&S::skipPeeled, "skip_peeled", SettingChange::Nothing,
+                           "skip objects whose bounds lie wholly on the peeled side of the last pass's depth "
+                           "(section 3.3), found by occlusion queries"),
+            precisionSetting<S>(&S::precision, "peeled layers and accumulations (depths stay 32-bit)"),
+            flagSetting<S>(&S::readAhead, "read_ahead", SettingChange::Nothing,
+                           "issue the next passes before the last pass's count is read, while the counts read "
+                           "prove that fragments remain (a pass takes at most one a pixel, dual two), so the GPU "
+                           "does not wait for the CPU between passes (f2b, f2b2, dual)"),
         };
+    }
+    static const SettingsSchema<PeelingSettings>& schema() {
+        static const SettingsSchema<PeelingSettings> s{fields<PeelingSettings>()};
+        return s;
+    }
+};
+
+// dual's: the peeling settings and how a pass finds the next range.
+struct DualSettings : PeelingSettings {
+    bool atomicRange = false;
+    bool backDepthTest = true;
+
+    static const SettingsSchema<DualSettings>& schema() {
+        static const SettingsSchema<DualSettings> s{[] {
+            auto f = fields<DualSettings>();
+            f.push_back(flagSetting<DualSettings>(
+                &DualSettings::atomicRange, "atomic_range", SettingChange::Recompile,
+                "find the next range by image atomics (max and min of the depth bits) instead of MAX blending "
+                "into an RG32F target; the fragments inside the range are then discarded, so only the two "
+                "layers' reach the blending units, for one more full-screen pass a peel"));
+            f.push_back(flagSetting<DualSettings>(
+                &DualSettings::backDepthTest, "back_depth_test", SettingChange::Nothing,
+                "reject the fragments behind the range (the back layers peeled already) by the depth test, "
+                "before they are shaded: the back of each range goes to a depth buffer (a full-screen pass "
+                "a peel, folded into atomic_range's)"));
+            return f;
+        }()};
         return s;
     }
 };

@@ -7,10 +7,26 @@
 // MAX blending: -2 and 0 are neutral, and colours carry alpha + 1 so that presence is visible.
 // Nothing is counted here: an atomic per fragment per pass is a large share of a pass. The blend
 // pass counts the pixels whose next range is not empty, once per pixel.
+//
+// STRATA_DUAL_ATOMIC_RANGE (the atomic_range setting): a fragment strictly inside the range
+// leaves its depth bits in two r32i images by atomic max and min (depths are >= 0, so their bits
+// order as the floats do) and is discarded, so only the two layers' fragments reach the blend
+// units; dual_range_pack.frag.glsl turns the images into the next range. On a GPU with few
+// blending units the MAX blend of every remaining fragment into three targets is what a pass
+// costs (docs/gpu-h200-session5.md).
 #include "surface.glsl"
 #include "peel_bindings.h"
 
+#ifdef STRATA_DUAL_ATOMIC_RANGE
+// The atomics are side effects, which would make the depth test late: every fragment behind
+// the opaque surfaces would run this shader. They lie outside every range (the init pass tests
+// them), so testing early saves work; a wrapped variant discards before the atomics too.
+layout(early_fragment_tests) in;
+layout(binding = BIND_DUAL_NEXT_NEAREST, r32i) uniform iimage2D uNextNearest;
+layout(binding = BIND_DUAL_NEXT_FARTHEST, r32i) uniform iimage2D uNextFarthest;
+#else
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
+#endif
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;
 
 layout(location = 0) out vec2 outMinMax;
@@ -37,8 +53,15 @@ void main() {
     outBackFilter = vec4(0.0);
 #endif
     if (z < nearest && z > farthest) {
+#ifdef STRATA_DUAL_ATOMIC_RANGE
+        const int bits = floatBitsToInt(abs(z));  // abs: -0 would order below every depth
+        imageAtomicMax(uNextNearest, ivec2(gl_FragCoord.xy), bits);
+        imageAtomicMin(uNextFarthest, ivec2(gl_FragCoord.xy), bits);
+        discard;
+#else
         outMinMax = vec2(z, -z);
         return;
+#endif
     }
 #ifdef STRATA_RGB_TRANSMITTANCE
     // Premultiplied colour, presence marked by alpha 2.

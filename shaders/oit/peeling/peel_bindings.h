@@ -11,6 +11,10 @@ GPU_CONST uint BIND_PEEL_BACK = 4u;        // dual: back layer
 GPU_CONST uint BIND_PEEL_ACCUM = 5u;       // accumulated (colour, transmittance)
 GPU_CONST uint BIND_PEEL_BACK_ACCUM = 6u;  // dual: back accumulation
 GPU_CONST uint BIND_BUCKET_COLORS = 1u;    // bun: image unit of the per-slot colours
+// dual with atomic_range: image units (r32i) where a peel pass leaves the next range's nearest
+// and farthest depth bits (dual_peel.frag.glsl, dual_range_pack.frag.glsl).
+GPU_CONST uint BIND_DUAL_NEXT_NEAREST = 0u;
+GPU_CONST uint BIND_DUAL_NEXT_FARTHEST = 1u;
 // f2b's and dual's STRATA_RGB_TRANSMITTANCE builds: what the (front) layer, the (front)
 // accumulation, and dual's back layer and back accumulation let through per channel (units the
 // coplanarity variants below use for their own targets).

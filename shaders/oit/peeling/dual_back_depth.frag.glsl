@@ -1,0 +1,11 @@
+#version 450 core
+// dual: writes the back of the range a peel pass just found (MAX-blended into the min-max
+// target) to the depth buffer the next peel pass tests (dual_back_depth.glsl).
+#include "peel_bindings.h"
+#include "dual_back_depth.glsl"
+
+layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uMinMax;
+
+void main() {
+    gl_FragDepth = dualBackDepth(texelFetch(uMinMax, ivec2(gl_FragCoord.xy), 0).rg);
+}
