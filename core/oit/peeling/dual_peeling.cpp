@@ -12,7 +12,8 @@
 // With back_depth_test (the default) a peel pass tests against the back of its range instead of
 // the opaque depth (which lies behind it), so the back layers peeled already are rejected
 // before they are shaded; the shader still decides every fragment near the back
-// (dual_back_depth.glsl).
+// (dual_back_depth.glsl). A full-screen pass writes it after the init; after a peel the blend's
+// last step (or atomic_range's pack) writes it on the way.
 // In a scene with coloured filters (oit/color_model.hpp) the layers carry their filters and both
 // accumulations what they let through per channel, in four more targets (dual_blend.frag.glsl).
 #include "oit/technique.hpp"
@@ -61,8 +62,8 @@ public:
                 [&](int pass) {
                     const int cur = (pass + 1) % 2;
                     peel(frame, cur);
-                    if (settings_.atomicRange) packRange(frame, cur);  // writes the back depth too
-                    else if (settings_.backDepthTest) writeBackDepth(frame, cur);
+                    // The back depth for the next peel: the pack writes it, or else the blend.
+                    if (settings_.atomicRange) packRange(frame, cur);
                     blend(frame, cur, passQueries(pass));
                 },
                 [&](int pass) { return collect(passQueries(pass)); });
@@ -237,8 +238,8 @@ private:
         ++stats_.passes;
     }
 
-    // back_depth_test without atomic_range: the back of the range in minMax_[cur] to the depth
-    // buffer the next peel tests.
+    // back_depth_test: the back of the range in minMax_[cur] to the depth buffer the next peel
+    // tests. After the init; after a peel the pack or the blend writes it.
     void writeBackDepth(const FrameContext& frame, int cur) {
         gl::ScopedPass pass(frame.timer, "dual back depth");
         if (!depthFbo_) depthFbo_ = gl::Framebuffer::create();
@@ -271,6 +272,14 @@ private:
         gl::ScopedPass pass(frame.timer, "dual blend");
         // No memory barrier: the peel rendered what this pass samples, which GL orders itself
         // (barriers are for image and buffer stores; on llvmpipe one is a full finish).
+        // back_depth_test without atomic_range: step 2 writes the next peel's back depth.
+        const bool writesBackDepth = settings_.backDepthTest && !settings_.atomicRange;
+        glNamedFramebufferTexture(blendFbo_.id(), GL_DEPTH_ATTACHMENT, writesBackDepth ? backDepth_.id() : 0, 0);
+        if (writesBackDepth) {
+            // A pixel with nothing left keeps 1 (dual_blend.frag.glsl, step 2).
+            const float nearPlane = 1.0f;
+            glClearTexImage(backDepth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &nearPlane);
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
         glEnable(GL_BLEND);
@@ -304,7 +313,12 @@ private:
             }
             glProgramUniform1i(program, step, s);
             glBeginQuery(target, query);
-            drawFullscreen(frame, program);
+            if (s == 2 && writesBackDepth) {
+                drawFullscreenDepth(frame, program);  // GL_ALWAYS: the query counts as without it
+                glDisable(GL_DEPTH_TEST);
+            } else {
+                drawFullscreen(frame, program);
+            }
             glEndQuery(target);
         };
         drawStep(0, true, false, GL_SAMPLES_PASSED, queries.frontLayers.id());
@@ -374,8 +388,8 @@ namespace strata {
 
 TechniqueEntry dualEntry() {
     TechniqueInfo info{"dual", "peeling", true, false,
-                       "3*ceil(D/2)+3 (init and its back depth + ceil(D/2) x (peel, back depth or range pack, blend) "
-                       "+ composite); 2*ceil(D/2)+2 with back_depth_test and atomic_range off",
+                       "2*ceil(D/2)+3 (init and its back depth + ceil(D/2) x (peel, blend) + composite); one fewer "
+                       "with back_depth_test off, ceil(D/2) more (range packs) with atomic_range",
                        "w*h*52 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
                        "(8 each) + the back depth (4); w*h*84 B at 32 (RGBA32F, 16 each); + four more RGBA targets in "
                        "a scene with coloured filters, + 16 with atomic_range; Table 1: 6 words",

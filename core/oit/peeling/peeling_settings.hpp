@@ -49,9 +49,9 @@ struct DualSettings : PeelingSettings {
                 "layers' reach the blending units, for one more full-screen pass a peel"));
             f.push_back(flagSetting<DualSettings>(
                 &DualSettings::backDepthTest, "back_depth_test", SettingChange::Nothing,
-                "reject the fragments behind the range (the back layers peeled already) by the depth test, "
-                "before they are shaded: the back of each range goes to a depth buffer (a full-screen pass "
-                "a peel, folded into atomic_range's)"));
+                "reject the fragments behind the range (the back layers peeled already, and all at a "
+                "finished pixel) by the depth test, before they are shaded: the back of each range goes to "
+                "a depth buffer, written by the blend's last step (or atomic_range's pack)"));
             return f;
         }()};
         return s;

@@ -5,7 +5,13 @@
 //     without a front layer is discarded, so GL_SAMPLES_PASSED counts the front layers;
 //  1: adds the back layer over the back accumulation (back to front), counted the same way;
 //  2: passes only where fragments are left strictly inside the next range (the peel wrote it;
-//     -2 is the cleared, empty range): GL_ANY_SAMPLES_PASSED says whether to peel again.
+//     -2 is the cleared, empty range): GL_ANY_SAMPLES_PASSED says whether to peel again. With
+//     back_depth_test (and no atomic_range, whose pack does it) the host enables the depth test
+//     (GL_ALWAYS, writes on) for this step alone, and a pixel that passes writes the back of
+//     its next range, which the next peel tests against (dual_back_depth.glsl). A pixel whose
+//     range is empty is discarded and keeps the host's clear value, 1, so the next peel shades
+//     nothing there: most of what the test saves on a mesh, whose pixels finish at different
+//     passes.
 // The host sets the blend function and colour mask of each target per step.
 // STRATA_RGB_TRANSMITTANCE (coloured filters): the layers hold premultiplied colours and their
 // filters, and two more targets what each accumulation lets through per channel. Step 0 adds
@@ -14,6 +20,7 @@
 // what it held (no blending, reading its own texel) and multiplies the back T. Each pixel reads
 // and writes its own texel once per draw, with texture barriers between the draws.
 #include "peel_bindings.h"
+#include "dual_back_depth.glsl"
 
 layout(binding = BIND_PEEL_LAYER) uniform sampler2D uFront;
 layout(binding = BIND_PEEL_BACK) uniform sampler2D uBack;
@@ -33,6 +40,7 @@ layout(location = 3) out vec4 outBackAccumFilter;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
+    gl_FragDepth = 0.0;  // written only in step 2, the others run without the depth test
     outFront = vec4(0.0);  // neutral under both blend functions
     outBack = vec4(0.0);
 #ifdef STRATA_RGB_TRANSMITTANCE
@@ -63,7 +71,9 @@ void main() {
         vec4 b = texelFetch(uBack, pixel, 0);
         if (b.a < 1.0) discard;
         outBack = vec4(b.rgb, b.a - 1.0);
-    } else if (texelFetch(uNextRange, pixel, 0).r <= -1.5) {
-        discard;
+    } else {
+        vec2 next = texelFetch(uNextRange, pixel, 0).rg;
+        if (next.r <= -1.5) discard;
+        gl_FragDepth = dualBackDepth(next);
     }
 }
