@@ -10,6 +10,8 @@
 #     and the program binary cache (STRATA_PROGRAM_CACHE=0);
 #  3. f2b, f2b2, dual, blend-sorted and abuffer at 1280x720 at both precisions, the naive probe
 #     beside them (issue 25);
+#  3b. dual on two single meshes (bunny-glass, fandisk-glass) with back_depth_test and
+#     atomic_range off and on, f2b beside them (with the bundle's scenes-data);
 #  4. builtin:orchard:10000 with --lod geometry and auto, twice (does the calibration choose
 #     right; is the model kept).
 # Everything lands in OUT (default gpu-diag); the summary is OUT/README.md, rewritten after each
@@ -31,7 +33,7 @@
 #   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, and 16 with
 #                 read_ahead=0: what reading each layer's count before the next costs)
 #   --tests-only  step 1 (and 2 with --group2) alone: no timings
-#   --bench-only  steps 3 and 4 alone: no tests
+#   --bench-only  steps 3, 3b and 4 alone: no tests
 #   --no-orchard  leave out step 4
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -63,7 +65,7 @@ while [[ $# -gt 0 ]]; do
         --tests-only) run_bench=0; shift ;;
         --bench-only) run_tests=0; skip_group2=1; shift ;;
         --no-orchard) run_orchard=0; shift ;;
-        -h|--help) sed -n '2,34p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,37p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac
@@ -246,6 +248,32 @@ EOF
     done
 done
 summary+=("")
+
+# 3b. dual on single meshes, where the object skipper cannot leave out the peeled back layers:
+# back_depth_test and atomic_range off and on (docs/gpu-h200-session5.md), f2b beside them. The
+# scenes' model paths point at ../shared; here they point into the bundle.
+if [[ -d $bundle/scenes-data ]]; then
+    summary+=("## 3b. dual on meshes at $size (GPU ms: dual, its peel, f2b)" ""
+              "| scene | atomic_range | back_depth_test | dual | dual peel | f2b |" "|---|---:|---:|---:|---:|---:|")
+    for scene in bunny-glass fandisk-glass; do
+        sed "s#\.\./\.\./shared/scenes-data#$bundle/scenes-data#" "$root/scenes/$scene.json" >"$out/$scene.json"
+        for cfg in "0 0" "0 1" "1 0" "1 1"; do
+            read -r atomic back <<<"$cfg"
+            name="mesh-$scene-atomic$atomic-back$back"
+            timeout --kill-after=10 60 "$strata" bench "$out/$scene.json" --lod geometry --size "$size" \
+                --modes f2b,dual --set dual.atomic_range=$atomic --set dual.back_depth_test=$back \
+                --json "$out/$name.json" >"$out/$name.txt" 2>&1
+            row=$(python3 -c "
+import json
+m = {x['id']: x for x in json.load(open('$out/$name.json'))['modes']}
+print('%.2f | %.2f | %.2f' % (m['dual']['ms_median'], m['dual']['pass_ms_median'].get('dual peel', 0),
+      m['f2b']['ms_median']))" 2>/dev/null || echo "failed | - | -")
+            summary+=("| $scene | $atomic | $back | $row |")
+            readme
+        done
+    done
+    summary+=("")
+fi
 ((run_orchard)) || finish
 
 # 4. LOD: does --lod auto choose right on this device.
