@@ -30,8 +30,9 @@
 #                 at ULPS (STRATA_DEBUG_DEPTH_TIE_ULPS; group 1; default 0, left out: the default
 #                 tolerance is 1024 since docs/gpu-h100-session4.md)
 #   --layers LIST the layer counts of step 3 (default 8,16,32)
-#   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, and 16 with
-#                 read_ahead=0: what reading each layer's count before the next costs)
+#   --settings S  step 3's settings, ';'-separated (default: precision 32 and 16, 16 with
+#                 read_ahead=0: what reading each layer's count before the next costs, and 16
+#                 with atomic_range=1: dual's range by atomics, docs/gpu-h200-session5.md)
 #   --tests-only  step 1 (and 2 with --group2) alone: no timings
 #   --bench-only  steps 3, 3b and 4 alone: no tests
 #   --no-orchard  leave out step 4
@@ -46,7 +47,7 @@ skip_group2=1
 repeat=1
 ties=0
 peel_layers=8,16,32
-peel_settings="precision=32;precision=16;precision=16 read_ahead=0"
+peel_settings="precision=32;precision=16;precision=16 read_ahead=0;precision=16 atomic_range=1"
 run_tests=1
 run_bench=1
 run_orchard=1
@@ -65,7 +66,7 @@ while [[ $# -gt 0 ]]; do
         --tests-only) run_bench=0; shift ;;
         --bench-only) run_tests=0; skip_group2=1; shift ;;
         --no-orchard) run_orchard=0; shift ;;
-        -h|--help) sed -n '2,37p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,38p' "$0"; exit 0 ;;
         -*) echo "gpu_diag.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
         *) out=$1; shift ;;
     esac

@@ -245,6 +245,18 @@ TEST_CASE("lod units: every technique that bounds objects takes a unit stand-in'
                                 << r.result.stats.objectDrawsSkipped << ", passes " << r.result.stats.passes);
         CHECK(meanAbs < 1e-3);
     }
+    // dual's atomic_range counts the fragments in a pass of its own, where the stand-ins' wrapped
+    // variant discards the empty texels before the count: the same total, image and captures.
+    {
+        const test::Rendered blend = test::renderWith(*fx.gpu, camera, {128, 128}, "dual", withStandIns);
+        const test::Rendered atomic = test::renderWith(*fx.gpu, camera, {128, 128},
+                                                       *test::makeTechnique("dual", {"atomic_range=1"}), withStandIns);
+        REQUIRE(blend.result.fragmentsTotal.has_value());
+        REQUIRE(atomic.result.fragmentsTotal.has_value());
+        CHECK(*atomic.result.fragmentsTotal == *blend.result.fragmentsTotal);
+        CHECK(atomic.result.stats.fragmentsCaptured == blend.result.stats.fragmentsCaptured);
+        CHECK(difference(blend.image, atomic.image, fx.gpu->scene().background).first < 1e-5);
+    }
     // screendoor-object-sw samples the meshes, not the stand-ins: every part is still there, so
     // its image with the stand-ins is its image without them.
     const Image sampled = test::renderWith(*fx.gpu, camera, {128, 128}, "screendoor-object-sw").image;

@@ -44,7 +44,8 @@ public:
         if (settings_.atomicRange) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         loop.setTotal(initialise(frame));
         if (loop.total() > 0) {
-            if (settings_.backDepthTest) writeBackDepth(frame, 0);
+            // atomic_range: the init's pack wrote it.
+            if (settings_.backDepthTest && !settings_.atomicRange) writeBackDepth(frame, 0);
             clearAccumulation(frontAccum_.id(), rgb() ? frontAccumFilter_.id() : 0);
             clearAccumulation(backAccum_.id(), rgb() ? backAccumFilter_.id() : 0);
             PeelLoopOptions options;
@@ -98,8 +99,11 @@ private:
             gl::Defines atomic = withColorModel({}, model);
             atomic["STRATA_DUAL_ATOMIC_RANGE"] = "";
             p.peelAtomic = buildSceneProgram("oit/peeling/dual_peel.frag.glsl", atomic);
-            if (!packProgram_)
-                packProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_range_pack.frag.glsl"});
+        }
+        if (settings_.atomicRange && !packProgram_) {
+            packProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_range_pack.frag.glsl"});
+            initAtomicProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl", {{"STRATA_DUAL_ATOMIC_RANGE", ""}});
+            countProgram_ = buildSceneProgram("oit/peeling/f2b_count.frag.glsl");
         }
         if (initProgram_.program) return;
         initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
@@ -193,6 +197,7 @@ private:
     }
 
     std::uint64_t initialise(const FrameContext& frame) {
+        if (settings_.atomicRange) return initialiseByAtomics(frame);
         gl::ScopedPass pass(frame.timer, "dual init");
         bindPeelTargets(frame, 0, false);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
@@ -202,6 +207,41 @@ private:
         glDisable(GL_BLEND);
         ++stats_.passes;
         const std::uint64_t total = gl::queryResult(samples_);
+        return total;
+    }
+
+    // atomic_range: the count (f2b_count.frag.glsl), then the first range by atomics into
+    // nextNearest_/nextFarthest_[0], packed into minMax_[0] (with the back depth). The init's
+    // MAX blend of every fragment was a fifth to a third of dual's frame on an H200 once the
+    // peels used atomics (docs/gpu-h200-session5.md).
+    std::uint64_t initialiseByAtomics(const FrameContext& frame) {
+        std::uint64_t total = 0;
+        {
+            gl::ScopedPass pass(frame.timer, "dual count");
+            bindPeelTargets(frame, 0, false);
+            glDisable(GL_BLEND);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+            skipper_.draw(frame, countProgram_, stats_);
+            glEndQuery(GL_SAMPLES_PASSED);
+            ++stats_.passes;
+            total = gl::queryResult(samples_);
+        }
+        if (total == 0) {
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            return 0;
+        }
+        {
+            gl::ScopedPass pass(frame.timer, "dual init");
+            // Still the count's framebuffer and state: the opaque depth, nothing written.
+            glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[0].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+            glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[0].id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                               GL_R32I);
+            skipper_.draw(frame, initAtomicProgram_, stats_);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            ++stats_.passes;
+        }
+        packRange(frame, 0);
         return total;
     }
 
@@ -365,7 +405,9 @@ private:
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     SceneProgram initProgram_;
-    gl::Program packProgram_;       // atomic_range
+    // atomic_range's: the range pack, the init by atomics and the count before it.
+    gl::Program packProgram_;
+    SceneProgram initAtomicProgram_, countProgram_;
     gl::Program backDepthProgram_;  // back_depth_test
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;                   // the init pass's count
@@ -389,7 +431,8 @@ namespace strata {
 TechniqueEntry dualEntry() {
     TechniqueInfo info{"dual", "peeling", true, false,
                        "2*ceil(D/2)+3 (init and its back depth + ceil(D/2) x (peel, blend) + composite); one fewer "
-                       "with back_depth_test off, ceil(D/2) more (range packs) with atomic_range",
+                       "with back_depth_test off; with atomic_range 3*ceil(D/2)+4 (count, init, range packs after "
+                       "it and each peel)",
                        "w*h*52 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
                        "(8 each) + the back depth (4); w*h*84 B at 32 (RGBA32F, 16 each); + four more RGBA targets in "
                        "a scene with coloured filters, + 16 with atomic_range; Table 1: 6 words",
