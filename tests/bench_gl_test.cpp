@@ -77,6 +77,32 @@ TEST_CASE("bench JSON has every contract field, finite, and counts every fragmen
     CHECK(report.coplanarityProbability == 0.0);
 }
 
+TEST_CASE("bench --wall times the same frames untimed: a wall time per technique, null without") {
+    test::glContext();
+    GpuScene scene(makeLayersScene(4));
+    BenchOptions options;
+    options.sceneName = "builtin:layers:4";
+    options.modes = {"abuffer", "f2b", "dual"};
+    options.size = {24, 16};
+    options.frames = 2;
+    options.warmupFrames = 1;
+    const BenchReport timedOnly = runBench(scene, options);
+    options.wallFrames = true;
+    const BenchReport both = runBench(scene, options);
+    const nlohmann::json without = benchToJson(timedOnly), with = benchToJson(both);
+    REQUIRE(with["modes"].size() == 3);
+    for (std::size_t i = 0; i < 3; ++i) {
+        CAPTURE(with["modes"][i]["id"].get<std::string>());
+        CHECK(without["modes"][i]["wall_ms_median"].is_null());
+        requireNumber(with["modes"][i], "wall_ms_median");
+        CHECK(with["modes"][i]["wall_ms_median"].get<double>() > 0.0);
+        // The untimed frames add nothing to the timed ones' counts: the same fragments captured.
+        CHECK(with["modes"][i]["fragments_captured"] == without["modes"][i]["fragments_captured"]);
+    }
+    CHECK(benchToTable(both).find("wall ms") != std::string::npos);
+    CHECK(benchToTable(timedOnly).find("wall ms") == std::string::npos);
+}
+
 TEST_CASE("bench reports coplanarity where surfaces coincide") {
     test::glContext();
     GpuScene scene(makeCoplanarScene(3));

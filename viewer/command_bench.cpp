@@ -35,6 +35,7 @@ struct BenchArgs {
     LodArgs lod;
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
     int referenceSupersample = 1;
+    bool wall = false;
 };
 
 void run(const BenchArgs& a) {
@@ -56,7 +57,10 @@ void run(const BenchArgs& a) {
     options.zoom = a.zoom.fixedZoom();
     options.zoomFilter = a.zoom.filter();
     options.referenceSupersample = a.referenceSupersample;
+    options.wallFrames = a.wall;
     options.budget = a.zoom.budget();
+    if (options.wallFrames && options.budget)
+        throw std::invalid_argument("--wall times fixed frames; a --frame-budget-ms run chooses each frame's zoom and bound");
     if (options.budget) {
         options.zoomController = a.zoom.controllerKind();
         options.levers = a.zoom.levers(a.lod.options().mode);
@@ -181,6 +185,9 @@ void registerBenchCommand(CLI::App& app) {
                     "reference's own included, is then compared with an antialiased frame (1..4)")
         ->check(CLI::Range(1, 4))
         ->capture_default_str();
+    cmd->add_flag("--wall", args->wall,
+                  "draw each technique's frames once more without pass timers or the fragment count, timed by the "
+                  "wall clock to a glFinish as the peers time theirs (a 'wall ms' table, JSON wall_ms_median)");
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

@@ -314,6 +314,19 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             }
         }
         if (report.interrupted) break;
+        if (options.wallFrames && !options.budget) {
+            // The same frames, as the peers time theirs: no pass timers, no fragment count,
+            // wall clock to a glFinish (FrameRenderer::render ends with one).
+            FrameOptions untimed = frameOptions;
+            untimed.timePasses = false;
+            untimed.countFragments = false;
+            std::vector<double> wall;
+            for (int f = 0; f < options.frames && !interruptSignal(); ++f) {
+                if (options.lod) untimed.standIns = options.lod(cameras[f], options.size, 1, 0.0).standIns;
+                wall.push_back(renderer.render(scene, cameras[f], options.size, technique, untimed).cpuMs);
+            }
+            if (!wall.empty()) mode.wallMsMedian = percentile(wall, 0.5);
+        }
         if (options.firstFrame) options.firstFrame(id, first.first, first.second);
         // A fixed camera needs no more reference renders: free the reference's buffers now.
         if (isReference && !options.cameraPath) reference.technique.reset();

@@ -68,6 +68,12 @@ struct BenchOptions {
     // pixel loses on this scene, the floor under every other row's loss
     // (scripts/aliasing_floor.sh, docs/results.md "the scene graph at scale").
     int referenceSupersample = 1;
+    // After each technique's timed frames, draw the same frames again without the per-pass timer
+    // queries and the fragment count, each timed by the wall clock to a glFinish: how the peers
+    // time themselves (../shared/tools/peers). On llvmpipe the pass timers drain the pipeline at
+    // every pass edge, which the passes' summed GPU time pays for (docs/results.md, "Two clocks").
+    // Not with a budget: its frames differ by what the controller chose.
+    bool wallFrames = false;
     std::optional<ZoomBudget> budget;
     ZoomControllerKind zoomController = ZoomControllerKind::Reactive;
     // Per-object level of detail (lod/, which sits above core): called before each technique
@@ -102,6 +108,7 @@ struct BenchMode {
     bool rgbTransmittance = false;  // TechniqueInfo::rgbTransmittance
     double msMedian = 0, msP95 = 0;          // GPU ms of the technique's passes (opaque pass excluded)
     double cpuMsMedian = 0;                  // CPU wall ms of the whole frame
+    double wallMsMedian = -1;                // BenchOptions::wallFrames: the untimed frames' wall ms (-1: none)
     double threadCpuMsMedian = 0;            // CPU ms of the rendering thread (FrameResult::threadCpuMs)
     double drawCallsMedian = 0;              // GL draws of scene objects per frame (all passes)
     double lodMsMedian = 0;                  // CPU ms of the frame's LOD step (BenchOptions::lod), 0 without
@@ -172,6 +179,12 @@ struct BenchReport {
     int zoom = 1;
     std::string zoomFilter = "nearest";
     int referenceSupersample = 1;
+    // After each technique's timed frames, draw the same frames again without the per-pass timer
+    // queries and the fragment count, each timed by the wall clock to a glFinish: how the peers
+    // time themselves (../shared/tools/peers). On llvmpipe the pass timers drain the pipeline at
+    // every pass edge, which the passes' summed GPU time pays for (docs/results.md, "Two clocks").
+    // Not with a budget: its frames differ by what the controller chose.
+    bool wallFrames = false;
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
     std::string budgetLevers;          // "zoom", "lod" or "zoom,lod" under a budget

@@ -2,6 +2,7 @@
 // table for people, and CSV for plots.
 #include "bench/bench.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -46,6 +47,7 @@ nlohmann::json benchToJson(const BenchReport& r) {
             {"id", m.id}, {"family", m.family}, {"reference", m.reference}, {"robust", m.robust}, {"handles_coplanarity", m.handlesCoplanarity},
             {"rgb_transmittance", m.rgbTransmittance},
             {"ms_median", finite(m.msMedian)}, {"ms_p95", finite(m.msP95)}, {"cpu_ms_median", finite(m.cpuMsMedian)},
+            {"wall_ms_median", m.wallMsMedian >= 0.0 ? nlohmann::json(m.wallMsMedian) : nlohmann::json(nullptr)},
             {"thread_cpu_ms_median", finite(m.threadCpuMsMedian)}, {"draw_calls_median", finite(m.drawCallsMedian)},
             {"lod_ms_median", finite(m.lodMsMedian)},
             {"opaque_ms_median", finite(m.opaqueMsMedian)}, {"pass_ms_median", passes},
@@ -164,6 +166,18 @@ std::string benchToTable(const BenchReport& r) {
                       (unsigned long long)m.fragmentsCaptured, m.robustnessRatio, m.rmse, m.psnr, m.maxAbsError,
                       overFloor.c_str(), m.overflowed ? "  OVERFLOW" : (m.regrows ? "  (grew)" : ""));
         out << line;
+    }
+    if (std::any_of(r.modes.begin(), r.modes.end(), [](const BenchMode& m) { return m.wallMsMedian >= 0.0; })) {
+        // --wall: the same frames untimed, as the peers time theirs; the whole frame (opaque pass
+        // included) to a glFinish.
+        out << "\nwall clock, the same frames without pass timers or fragment count (as the peers time theirs):\n";
+        std::snprintf(line, sizeof line, "%-16s %9s %9s\n", "mode", "wall ms", "cpu ms");
+        out << line;
+        for (const auto& m : r.modes) {
+            if (m.wallMsMedian < 0.0) continue;
+            std::snprintf(line, sizeof line, "%-16s %9.2f %9.2f\n", m.id.c_str(), m.wallMsMedian, m.cpuMsMedian);
+            out << line;
+        }
     }
     if (r.zoom > 1 || r.budget) {
         out << "\n";
