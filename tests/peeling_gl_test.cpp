@@ -81,6 +81,15 @@ TEST_CASE("bytes follow the formulas at precision 32: f2b 40, f2b2 32, dual 84 B
     CHECK(bytes("f2b") == pixels * 40);
     CHECK(bytes("f2b2") == pixels * 32);
     CHECK(bytes("dual") == pixels * 84);  // 80 + the back depth buffer
+    // Each dual setting's memory counts while it is on: the back depth 4 B, the atomic range's
+    // two pairs of R32I images 16 B.
+    const auto dualBytes = [&](std::vector<std::string> settings) {
+        settings.push_back("precision=32");
+        return test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique("dual", settings)).result.stats.bytes;
+    };
+    CHECK(dualBytes({"back_depth_test=0"}) == pixels * 80);
+    CHECK(dualBytes({"atomic_range=1"}) == pixels * 100);
+    CHECK(dualBytes({"atomic_range=1", "back_depth_test=0"}) == pixels * 96);
 }
 
 TEST_CASE("coplanar copies: f2b, f2b2 and dual capture one fragment of K") {

@@ -321,11 +321,16 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             untimed.timePasses = false;
             untimed.countFragments = false;
             std::vector<double> wall;
-            for (int f = 0; f < options.frames && !interruptSignal(); ++f) {
+            for (int f = 0; f < options.frames; ++f) {
+                if (interruptSignal()) {
+                    report.interrupted = true;  // as for the timed frames: no row
+                    break;
+                }
                 if (options.lod) untimed.standIns = options.lod(cameras[f], options.size, 1, 0.0).standIns;
                 wall.push_back(renderer.render(scene, cameras[f], options.size, technique, untimed).cpuMs);
             }
-            if (!wall.empty()) mode.wallMsMedian = percentile(wall, 0.5);
+            if (report.interrupted) break;
+            mode.wallMsMedian = percentile(wall, 0.5);
         }
         if (options.firstFrame) options.firstFrame(id, first.first, first.second);
         // A fixed camera needs no more reference renders: free the reference's buffers now.

@@ -179,12 +179,6 @@ struct BenchReport {
     int zoom = 1;
     std::string zoomFilter = "nearest";
     int referenceSupersample = 1;
-    // After each technique's timed frames, draw the same frames again without the per-pass timer
-    // queries and the fragment count, each timed by the wall clock to a glFinish: how the peers
-    // time themselves (../shared/tools/peers). On llvmpipe the pass timers drain the pipeline at
-    // every pass edge, which the passes' summed GPU time pays for (docs/results.md, "Two clocks").
-    // Not with a budget: its frames differ by what the controller chose.
-    bool wallFrames = false;
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
     std::string budgetLevers;          // "zoom", "lod" or "zoom,lod" under a budget

@@ -3,12 +3,14 @@
 // the hardware depth test only against the opaque depth); each peel pass then extracts the
 // front and the back layer at once and finds the next range from the fragments strictly
 // between them, and a full-screen pass blends the front layer under the front accumulation and
-// the back layer over the back accumulation. ceil(D/2) peel passes: the peel pass counts the
-// fragments strictly inside the range, and when there are none the next pass is not issued.
+// the back layer over the back accumulation. ceil(D/2) peel passes: the blend pass's last step
+// asks whether any fragment lies strictly inside the next range, and when none does the next
+// pass is not issued.
 // Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
-// With atomic_range the peel pass finds the next range by image atomics instead of the RG32F
-// MAX blend, and a full-screen pass after it writes the range in the same form
-// (dual_range_pack.frag.glsl), so everything after the peel reads what it read before.
+// With atomic_range the init and the peel passes find the next range by image atomics instead
+// of the RG32F MAX blend, and a full-screen pass after each writes the range in the same form
+// (dual_range_pack.frag.glsl), so everything after them reads what it read before; the total
+// then comes from a counting pass before the init (f2b_count.frag.glsl).
 // With back_depth_test (the default) a peel pass tests against the back of its range instead of
 // the opaque depth (which lies behind it), so the back layers peeled already are rejected
 // before they are shaded; the shader still decides every fragment near the back
@@ -146,7 +148,11 @@ private:
             for (auto& t : nextFarthest_) t = {};
             backDepth_ = {};
         }
+        // Each setting's memory is held only while it is on (the bytes count it so).
         if (settings_.backDepthTest && !backDepth_) backDepth_ = gl::createTexture2D(GL_DEPTH_COMPONENT32F, size.x, size.y);
+        if (!settings_.backDepthTest) backDepth_ = {};
+        if (!settings_.atomicRange)
+            for (int i = 0; i < 2; ++i) nextNearest_[i] = {}, nextFarthest_[i] = {};
         if (settings_.atomicRange && !nextNearest_[0]) {
             // Empty: every depth's bits lie above -1 and below INT_MAX. Each pack resets what it read.
             const GLint none[2] = {-1, 0x7fffffff};
@@ -410,7 +416,7 @@ private:
     SceneProgram initAtomicProgram_, countProgram_;
     gl::Program backDepthProgram_;  // back_depth_test
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
-    gl::Query samples_;                   // the init pass's count
+    gl::Query samples_;                   // the total: the init's count, or atomic_range's count pass's
     std::vector<PassQueries> passQueries_;  // each pass's, by pass
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
@@ -434,9 +440,11 @@ TechniqueEntry dualEntry() {
                        "with back_depth_test off; with atomic_range 3*ceil(D/2)+4 (count, init, range packs after "
                        "it and each peel)",
                        "w*h*52 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
-                       "(8 each) + the back depth (4); w*h*84 B at 32 (RGBA32F, 16 each); + four more RGBA targets in "
-                       "a scene with coloured filters, + 16 with atomic_range; Table 1: 6 words",
-                       "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth"};
+                       "(8 each) + the back depth (4, none with back_depth_test off); w*h*84 B at 32 (RGBA32F, 16 "
+                       "each); + four more RGBA targets in a scene with coloured filters, + 16 with atomic_range; "
+                       "Table 1: 6 words",
+                       "dual depth peeling: nearest and farthest layer per pass, MAX-blended min-max depth (or by "
+                       "image atomics: atomic_range)"};
     info.rgbTransmittance = true;
     return techniqueEntry<peeling::DualPeeling>(info);
 }

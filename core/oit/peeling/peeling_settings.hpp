@@ -48,7 +48,7 @@ struct DualSettings : PeelingSettings {
                 "into an RG32F target; the fragments inside the range are then discarded, so only the two "
                 "layers' reach the blending units, for one more full-screen pass a peel"));
             f.push_back(flagSetting<DualSettings>(
-                &DualSettings::backDepthTest, "back_depth_test", SettingChange::Nothing,
+                &DualSettings::backDepthTest, "back_depth_test", SettingChange::Reallocate,
                 "reject the fragments behind the range (the back layers peeled already, and all at a "
                 "finished pixel) by the depth test, before they are shaded: the back of each range goes to "
                 "a depth buffer, written by the blend's last step (or atomic_range's pack)"));
