@@ -154,13 +154,12 @@ private:
         if (!settings_.atomicRange)
             for (int i = 0; i < 2; ++i) nextNearest_[i] = {}, nextFarthest_[i] = {};
         if (settings_.atomicRange && !nextNearest_[0]) {
-            // Empty: every depth's bits lie above -1 and below INT_MAX. Each pack resets what it read.
-            const GLint none[2] = {-1, 0x7fffffff};
+            // Empty (dual_range_images.glsl); each pack resets what it read.
             for (int i = 0; i < 2; ++i) {
                 nextNearest_[i] = gl::createTexture2D(GL_R32I, size.x, size.y);
                 nextFarthest_[i] = gl::createTexture2D(GL_R32I, size.x, size.y);
-                glClearTexImage(nextNearest_[i].id(), 0, GL_RED_INTEGER, GL_INT, &none[0]);
-                glClearTexImage(nextFarthest_[i].id(), 0, GL_RED_INTEGER, GL_INT, &none[1]);
+                glClearTexImage(nextNearest_[i].id(), 0, GL_RED_INTEGER, GL_INT, &gpu::DUAL_NO_NEAREST);
+                glClearTexImage(nextFarthest_[i].id(), 0, GL_RED_INTEGER, GL_INT, &gpu::DUAL_NO_FARTHEST);
             }
         }
     }
@@ -240,9 +239,7 @@ private:
         {
             gl::ScopedPass pass(frame.timer, "dual init");
             // Still the count's framebuffer and state: the opaque depth, nothing written.
-            glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[0].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
-            glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[0].id(), 0, GL_FALSE, 0, GL_READ_WRITE,
-                               GL_R32I);
+            bindRangeImages(0);
             skipper_.draw(frame, initAtomicProgram_, stats_);
             glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
             ++stats_.passes;
@@ -257,15 +254,17 @@ private:
         gl::ScopedPass pass(frame.timer, "dual peel");
         bindPeelTargets(frame, cur, true);
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
-        if (settings_.atomicRange) {
-            glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
-            glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE,
-                               GL_R32I);
-        }
+        if (settings_.atomicRange) bindRangeImages(cur);
         skipper_.draw(frame, settings_.atomicRange ? programs_->peelAtomic : programs_->peel, stats_);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
+    }
+
+    // atomic_range: side `side` of the ping-pong's range images (dual_range_images.glsl).
+    void bindRangeImages(int side) const {
+        glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[side].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+        glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[side].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
     }
 
     // atomic_range: the range the peel left in nextNearest_/nextFarthest_[cur], written to
@@ -277,8 +276,7 @@ private:
         glNamedFramebufferTexture(packFbo_.id(), GL_COLOR_ATTACHMENT0, minMax_[cur].id(), 0);
         glNamedFramebufferTexture(packFbo_.id(), GL_DEPTH_ATTACHMENT, settings_.backDepthTest ? backDepth_.id() : 0, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, packFbo_.id());
-        glBindImageTexture(gpu::BIND_DUAL_NEXT_NEAREST, nextNearest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
-        glBindImageTexture(gpu::BIND_DUAL_NEXT_FARTHEST, nextFarthest_[cur].id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+        bindRangeImages(cur);
         drawFullscreenDepth(frame, packProgram_.id());  // every texel, depth written whatever it held
         glDisable(GL_DEPTH_TEST);
         ++stats_.passes;

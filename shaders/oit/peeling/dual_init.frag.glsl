@@ -11,14 +11,11 @@
 #include "peel_bindings.h"
 
 #ifdef STRATA_DUAL_ATOMIC_RANGE
+#include "dual_range_images.glsl"
 layout(early_fragment_tests) in;  // the opaque depth test before the atomics
-layout(binding = BIND_DUAL_NEXT_NEAREST, r32i) uniform iimage2D uNextNearest;
-layout(binding = BIND_DUAL_NEXT_FARTHEST, r32i) uniform iimage2D uNextFarthest;
 
 void main() {
-    const int bits = floatBitsToInt(abs(gl_FragCoord.z));  // abs: -0 would order below every depth
-    imageAtomicMax(uNextNearest, ivec2(gl_FragCoord.xy), bits);
-    imageAtomicMin(uNextFarthest, ivec2(gl_FragCoord.xy), bits);
+    addToNextRange(gl_FragCoord.z);
     discard;
 }
 #else

@@ -22,8 +22,7 @@
 // the opaque surfaces would run this shader. They lie outside every range (the init pass tests
 // them), so testing early saves work; a wrapped variant discards before the atomics too.
 layout(early_fragment_tests) in;
-layout(binding = BIND_DUAL_NEXT_NEAREST, r32i) uniform iimage2D uNextNearest;
-layout(binding = BIND_DUAL_NEXT_FARTHEST, r32i) uniform iimage2D uNextFarthest;
+#include "dual_range_images.glsl"
 #else
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
 #endif
@@ -54,9 +53,7 @@ void main() {
 #endif
     if (z < nearest && z > farthest) {
 #ifdef STRATA_DUAL_ATOMIC_RANGE
-        const int bits = floatBitsToInt(abs(z));  // abs: -0 would order below every depth
-        imageAtomicMax(uNextNearest, ivec2(gl_FragCoord.xy), bits);
-        imageAtomicMin(uNextFarthest, ivec2(gl_FragCoord.xy), bits);
+        addToNextRange(z);
         discard;
 #else
         outMinMax = vec2(z, -z);

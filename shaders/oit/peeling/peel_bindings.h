@@ -15,6 +15,9 @@ GPU_CONST uint BIND_BUCKET_COLORS = 1u;    // bun: image unit of the per-slot co
 // and farthest depth bits (dual_peel.frag.glsl, dual_range_pack.frag.glsl).
 GPU_CONST uint BIND_DUAL_NEXT_NEAREST = 0u;
 GPU_CONST uint BIND_DUAL_NEXT_FARTHEST = 1u;
+// Their empty values: below and above every depth's bits (dual_range_images.glsl).
+GPU_CONST int DUAL_NO_NEAREST = -1;
+GPU_CONST int DUAL_NO_FARTHEST = 0x7fffffff;
 // f2b's and dual's STRATA_RGB_TRANSMITTANCE builds: what the (front) layer, the (front)
 // accumulation, and dual's back layer and back accumulation let through per channel (units the
 // coplanarity variants below use for their own targets).
