@@ -111,8 +111,7 @@ void run(const BenchArgs& a) {
         // merged slices (unless --impostor-merged-slices already takes them within any bound).
         if (options.budget && options.levers.lod && !planned.mergedSlices) planned.levelBasePx = planned.maxErrorPx;
         const std::size_t modes = options.modes.empty() ? techniqueRegistry().size() : options.modes.size();
-        // --wall draws each technique's frames once more.
-        planned.plannedFrames = (long long)modes * (options.frames * (options.wallFrames ? 2 : 1) + options.warmupFrames);
+        planned.plannedFrames = (long long)modes * (options.frames + options.warmupFrames);
         lodController.emplace(gpu, planned, &std::cerr);
         lodController->select(defaultCamera(gpu.scene(), gpu.objects()), options.size, 0);  // bakes before timing
         options.lod = [&](const Camera& camera, glm::ivec2 size, int frames, double maxErrorPx) {

@@ -214,7 +214,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             controller = std::make_unique<BudgetGovernor>(*options.budget, levers, options.zoomController, model);
         }
         mode.zoom = options.budget ? 0 : options.zoom;
-        std::vector<double> gpu, cpu, threadCpu, drawCalls, opaque, frame, frameSpan, enlarge, lodMs;
+        std::vector<double> gpu, cpu, threadCpu, drawCalls, opaque, frame, frameSpan, enlarge, lodMs, wall;
         std::map<std::string, std::vector<double>> perPass;
         std::vector<std::string> passOrder;
         ErrorAccumulator error;
@@ -312,26 +312,17 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             } else {
                 error.add(image, reference.image);
             }
-        }
-        if (report.interrupted) break;
-        if (options.wallFrames && !options.budget) {
-            // The same frames, as the peers time theirs: no pass timers, no fragment count,
-            // wall clock to a glFinish (FrameRenderer::render ends with one).
-            FrameOptions untimed = frameOptions;
-            untimed.timePasses = false;
-            untimed.countFragments = false;
-            std::vector<double> wall;
-            for (int f = 0; f < options.frames; ++f) {
-                if (interruptSignal()) {
-                    report.interrupted = true;  // as for the timed frames: no row
-                    break;
-                }
-                if (options.lod) untimed.standIns = options.lod(cameras[f], options.size, 1, 0.0).standIns;
+            if (options.wallFrames && !options.budget) {
+                // The same frame again (its stand-ins too), as the peers time theirs: no pass
+                // timers, no fragment count, wall clock to a glFinish (render ends with one).
+                FrameOptions untimed = frameOptions;
+                untimed.timePasses = false;
+                untimed.countFragments = false;
                 wall.push_back(renderer.render(scene, cameras[f], options.size, technique, untimed).cpuMs);
             }
-            if (report.interrupted) break;
-            mode.wallMsMedian = percentile(wall, 0.5);
         }
+        if (report.interrupted) break;
+        if (!wall.empty()) mode.wallMsMedian = percentile(wall, 0.5);
         if (options.firstFrame) options.firstFrame(id, first.first, first.second);
         // A fixed camera needs no more reference renders: free the reference's buffers now.
         if (isReference && !options.cameraPath) reference.technique.reset();

@@ -68,8 +68,8 @@ struct BenchOptions {
     // pixel loses on this scene, the floor under every other row's loss
     // (scripts/aliasing_floor.sh, docs/results.md "the scene graph at scale").
     int referenceSupersample = 1;
-    // After each technique's timed frames, draw the same frames again without the per-pass timer
-    // queries and the fragment count, each timed by the wall clock to a glFinish: how the peers
+    // After each timed frame, draw the same frame again (its stand-ins too) without the per-pass
+    // timer queries and the fragment count, timed by the wall clock to a glFinish: how the peers
     // time themselves (../shared/tools/peers). On llvmpipe the pass timers drain the pipeline at
     // every pass edge, which the passes' summed GPU time pays for (docs/results.md, "Two clocks").
     // Not with a budget: its frames differ by what the controller chose.
