@@ -25,11 +25,13 @@ struct Device {
     // what that part really costs over the preview's figure.
     std::vector<double> lodPixelMs{0.0, 0.0, 0.0, 0.0};
     double lodPixelTruth = 1.0;
+    // Time every level really takes beyond what the preview says (geometry it undercounts).
+    double unseenMs = 0.0;
     double coverage = 1.0;
     double zoomMs(int zoom) const { return cost.predict(zoomPixels(display, zoom), 0.0); }
     double ms(int zoom, int level) const {
         const std::size_t k = std::size_t(level);
-        return zoomMs(zoom) + lodMs[k] - lodPixelMs[k] + lodPixelTruth * lodPixelMs[k] / double(zoom * zoom);
+        return zoomMs(zoom) + lodMs[k] + unseenMs - lodPixelMs[k] + lodPixelTruth * lodPixelMs[k] / double(zoom * zoom);
     }
     GovernorLoad load(int floor = 1) const {
         GovernorLoad l;
@@ -214,10 +216,10 @@ TEST_CASE("budget governor: both levers lose less than either alone, for both po
         CHECK(b.choices.back().lossPx < l.choices.back().lossPx);
         // Frames over the band's edge: predictive none; reactive one, the first at (1, 0) (68.9 ms,
         // over twice the target: judged at once). Before a change of zoom has measured the pixel
-        // share, reactive takes the LOD preview's fixed 30 ms as the only part no zoom shrinks
-        // (share 1 - 30 / 68.864 = 0.564, truly 0.535): (2, 0) is estimated at 39.7 ms (no fit)
-        // and (2, 1) at 27.7, which fits. With the share assumed whole, (2, 0) was estimated at
-        // 17.2 ms and two more frames went over at its 41.2.
+        // share, reactive takes the LOD preview's fixed 30 ms and the zoom model's fixed 2 as the
+        // part no zoom shrinks (share 36.864 / 68.864 = 0.535, the device's own): (2, 0) is
+        // estimated at 41.2 ms (no fit) and (2, 1) at 29.2, which fits. With the share assumed
+        // whole, (2, 0) was estimated at 17.2 ms and two more frames went over at its 41.2.
         int over = 0;
         for (double t : b.ms) over += t > 33.0;
         CHECK(over == (kind == ZoomControllerKind::Predictive ? 0 : 1));
@@ -317,4 +319,54 @@ TEST_CASE("budget governor: the reactive prior pixel share, of the time at zoom 
     CHECK(priorPixelShare(NAN, 5.0, 1.0) == 1.0);
     CHECK(priorPixelShare(20.0, NAN, 1.0) == 1.0);
     CHECK(priorPixelShare(20.0, 5.0, 0.0) == 1.0);
+}
+
+TEST_CASE("budget governor: reactive with a calibrated zoom model does not promise the zoom what the preview missed") {
+    // The field's frames near the eye: every LOD level takes 15 ms more than its preview says
+    // (geometry it undercounts), and the technique's own pixels are few (2 ms + 4 ms per
+    // million pixels: 5.686 ms at zoom 1). Budget 30 ms, band edge 33; (1, 0) takes 50.686.
+    //  - Without a zoom model, the 20.686 ms beyond the preview's 30 count as pixels (share
+    //    0.408): (2, 1) is estimated at 23.2 ms and drawn at 35.9, over the band.
+    //  - With the device's model only its 3.686 ms of pixels shrink with the zoom, and what
+    //    neither model explains is taken as fixed (share 0.073, the device's own): (2, 1) is
+    //    estimated at 35.9 (no fit) and (2, 2) at 27.9, as drawn, within the band.
+    Device d;
+    d.cost = ZoomCostModel{2.0, 4.0, 0.0};
+    d.unseenMs = 15.0;
+    auto firstChange = [&](const ZoomCostModel& model) {
+        BudgetGovernor governor(budgetOf(30), {true, true}, ZoomControllerKind::Reactive, model);
+        const Run run = drive(governor, d, 24);
+        int over = 0;  // after the first two frames, which end the hold as a run over the band
+        for (std::size_t f = 2; f < run.ms.size(); ++f) over += run.ms[f] > 33.0;
+        return std::make_pair(run, over);
+    };
+    const auto [withModel, overWithModel] = firstChange(d.cost);
+    CHECK(withModel.choices[1].zoom == 1);  // two frames at (1, 0), over the band
+    CHECK(withModel.choices[2].zoom == 2);
+    CHECK(withModel.choices[2].lodLevel == 2);
+    CHECK(withModel.ms[2] == doctest::Approx(27.9216));
+    CHECK(overWithModel == 0);
+    const auto [without, overWithout] = firstChange(ZoomCostModel{});
+    CHECK(without.choices[2].zoom == 2);
+    CHECK(without.choices[2].lodLevel == 1);
+    CHECK(without.ms[2] == doctest::Approx(35.9216));
+    CHECK(overWithout == 2);  // until two frames over the band end the hold again
+}
+
+TEST_CASE("budget governor: reactive learns what LOD's pixels really cost from a change of zoom") {
+    // The predictive test's device: the preview says 20 of level 0's 30 ms scale with pixels (12,
+    // 6 and 3 of the others'), the device spends three times that (level 0 at zoom 1: 2 + 36.864
+    // + 10 + 60 = 108.864 ms). With the device's zoom model, the first change of zoom alone shows
+    // the factor: the frames drawn, less the model's pixels, less the preview's pixel part times
+    // 3, leave exactly the preview's fixed part.
+    Device d;
+    d.lodPixelMs = {20.0, 12.0, 6.0, 3.0};
+    d.lodPixelTruth = 3.0;
+    d.lodMs = {30.0, 30.0, 30.0, 30.0};  // LOD saves nothing: the first change is the zoom's
+    BudgetGovernor governor(budgetOf(90), {true, true}, ZoomControllerKind::Reactive, d.cost);
+    CHECK(governor.lodPixelScale() == 1.0);
+    const Run run = drive(governor, d, 12);
+    REQUIRE(run.choices[2].zoom == 2);
+    REQUIRE(run.choices[2].lodLevel == 0);
+    CHECK(governor.lodPixelScale() == doctest::Approx(3.0));
 }

@@ -27,10 +27,6 @@ ZoomChoices zoomChoicesFrom(const ViewOptions& options) {
     return c;
 }
 
-const ZoomCostModel* ZoomDriver::model() const {
-    return controller_ && controller_->kind() == ZoomControllerKind::Predictive ? &model_ : nullptr;
-}
-
 void ZoomDriver::rebuild(glm::ivec2 displaySize, Technique* technique) {
     controller_.reset();
     built_ = choices_;
@@ -41,7 +37,9 @@ void ZoomDriver::rebuild(glm::ivec2 displaySize, Technique* technique) {
     budget.targetMs = std::max(0.1, double(choices_.targetMs));
     budget.maxZoom = std::clamp(choices_.maxZoom, 1, 16);
     const ZoomControllerKind kind = choices_.controller == 1 ? ZoomControllerKind::Reactive : ZoomControllerKind::Predictive;
-    if (kind == ZoomControllerKind::Predictive) {
+    const BudgetLevers levers{choices_.levers != 1, choices_.levers != 0};
+    model_ = ZoomCostModel{};
+    if (budgetNeedsCalibration(kind, levers)) {
         // A few frames of builtin:layers at this size; the window waits for them, so say so.
         const ZoomCalibration c = calibrateZoomCost(*technique, displaySize, budget.maxZoom, [](const std::string& line) {
             std::printf("%s\n", line.c_str());
@@ -57,7 +55,6 @@ void ZoomDriver::rebuild(glm::ivec2 displaySize, Technique* technique) {
     } else {
         status_.clear();
     }
-    const BudgetLevers levers{choices_.levers != 1, choices_.levers != 0};
     controller_ = std::make_unique<BudgetGovernor>(budget, levers, kind, model_);
 }
 

@@ -58,8 +58,6 @@ public:
     // The LOD error bound the budget set for the last frame; 0 where it steers no bound.
     double lodBoundPx() const { return lodBoundPx_; }
     double lossPx() const { return lossPx_; }
-    // The predictive controller's calibrated model, when one is in use.
-    const ZoomCostModel* model() const;
     const std::string& status() const { return status_; }
     // One line on stdout: "zoom: Z (controller[, levers]), frame T ms GPU[, predicted P ms][, lod bound B px]".
     void printFigures() const;

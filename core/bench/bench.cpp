@@ -208,7 +208,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         if (options.budget) unconstrainedTechnique = createConfiguredTechnique(id, options.settings);
         if (options.budget) {
             ZoomCostModel model;
-            if (options.zoomController == ZoomControllerKind::Predictive)
+            if (budgetNeedsCalibration(options.zoomController, levers))
                 model = calibrateZoomCost(*technique, options.size, options.budget->maxZoom, options.progress).model;
             mode.calibratedModel = model;
             controller = std::make_unique<BudgetGovernor>(*options.budget, levers, options.zoomController, model);

@@ -152,7 +152,7 @@ struct BenchMode {
     std::vector<double> frameLodBoundPx, frameLossPx;
     BudgetHits budgetHits;
     std::vector<BudgetExcursion> excursions;
-    ZoomCostModel calibratedModel;                            // predictive: what calibration fitted
+    ZoomCostModel calibratedModel;                            // what calibration fitted (budgetNeedsCalibration)
     // Under BenchOptions::lod: the most objects drawn as impostors in one frame, and the most
     // impostor memory one frame used.
     int impostorObjects = 0;

@@ -22,12 +22,15 @@
 //    or a view that changed it). A bias that grows with the bound is not learnt.
 //  - reactive: from the measured median of the last `holdFrames` frames at the current state:
 //    over budget it moves to a lossier state (more zoom, a larger bound, or both), under it to a
-//    less lossy one, each estimated from the measured time (zoom: the learned pixel share, and
-//    before a change of zoom has measured it, the share LOD's preview leaves to pixels; LOD: the
-//    selection's predicted difference), and never within the band. A frame over twice the
-//    target is judged at once instead of after the hold, and two frames in a row over the band
-//    on their median. Relief (under the band) waits the hold and eases each lever by one step
-//    at most.
+//    less lossy one, and never within the band. Each state is estimated as the measured time
+//    plus the models' difference between the two states: the zoom model's pixels and fragments
+//    and LOD's selection (its pixel and side parts times a factor learnt from each change of
+//    zoom alone); the rest of the frame is taken as fixed. Without a calibrated zoom model (the
+//    tests' devices may have none), a share of the time scales with the pixels instead: learnt
+//    from a change of zoom alone, and before one, all but LOD's preview of its geometry. A frame
+//    over twice the target is judged at once instead of after the hold, and two frames in a row
+//    over the band on their median. Relief (under the band) waits the hold and eases each lever
+//    by one step at most.
 // With the zoom lever alone it is today's zoom controller (frame/zoom_controller.hpp), unchanged.
 #include "frame/zoom_controller.hpp"
 
@@ -99,6 +102,12 @@ struct LossScales {
 // parts) is taken as the only part no zoom shrinks. In [0.02, 1]; 1 where nothing is known.
 double priorPixelShare(double ms, double fixedMs, double pixelRatio);
 
+// Whether a governor of this kind and levers needs the zoom cost calibrated on the device
+// (frame/zoom_calibration.hpp) before its first frame: the predictive policy always; the
+// reactive one with both levers, for its pixel share before a change of zoom has measured it.
+// The zoom lever alone under the reactive policy is today's zoom controller, which needs none.
+bool budgetNeedsCalibration(ZoomControllerKind kind, BudgetLevers levers);
+
 // The farthest a display pixel lies from the sample it shows when a zoom-z frame is enlarged by
 // replication: a block corner from the block's sample, (z - 1) / 2 along each axis.
 double zoomLossPx(int zoom);
@@ -119,8 +128,8 @@ public:
     const GovernorChoice& last() const { return last_; }
     // The state's loss for a load (the rule's; public for tests and the panel).
     double loss(const GovernorLoad& load, int zoom, int level) const;
-    // Predictive: the factor on LOD's predicted pixel and side parts learnt from the frames
-    // drawn (1 until they spread it). The LOD cost model's rates come from calibration draws,
+    // The factor on LOD's predicted pixel and side parts learnt from the frames drawn (1 until
+    // they spread it; reactive: until a change of zoom alone, with a calibrated zoom model). The LOD cost model's rates come from calibration draws,
     // not this scene's stand-ins; on builtin:orchard:1000 its pixel part came out about 30 %
     // low. The factor also takes in any per-pixel bias of the zoom model (it too shrinks with
     // the zoom): totals across zooms stay right, but that part is then scaled per LOD level.
@@ -134,6 +143,11 @@ private:
     int lowestZoom(const GovernorLoad& load) const;
     int highestZoom(const GovernorLoad& load) const;
     int highestLevel(const GovernorLoad& load) const;
+    // Whether the zoom cost model was calibrated (budgetNeedsCalibration); tests may pass none.
+    bool modelCalibrated() const;
+    // Reactive: the technique's time that scales with the pixels at a zoom, under the zoom model,
+    // with the last frame's fragments (drawn at the current zoom) scaled to that zoom's pixels.
+    double techniqueSizeMs(glm::ivec2 display, int zoom) const;
     // Reactive: the time at (zoom, level) of a frame measured `ms` at the current state.
     double reactiveEstimate(const GovernorLoad& load, double ms, int zoom, int level) const;
     void changeState(int zoom, int level, bool controlled);
@@ -156,6 +170,7 @@ private:
     double beforeMs_;
     double pixelShare_ = 1.0;  // of the time at zoom 1, what scales with pixels
     bool shareLearned_ = false;  // pixelShare_ measured (a change of zoom alone), not assumed
+    double fragments_ = 0.0;     // transparent fragments of the last frame at the current state
     // Predictive: LOD's pixel part as drawn over as previewed (lodMs), fitted to the frames.
     void learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost);
     // LOD's size-dependent part at zoom z: its pixel part / z^2 and its side part / z.
