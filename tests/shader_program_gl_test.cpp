@@ -83,6 +83,25 @@ TEST_CASE("lines after an include and after injected defines keep their numbers"
     gl::takeErrors();
 }
 
+TEST_CASE("#extension lines in an include move above the code, and the lines after keep their numbers") {
+    test::glContext();
+    // GLSL takes #extension only before the first non-preprocessor token; here it follows a
+    // declaration (as an include's does after a scene prelude). The preprocessor moves it to just
+    // after #version, so the file compiles, and the error two lines below it is still on line 6.
+    ScratchShaders s({{"main.frag.glsl",
+                       "#version 450 core\nout vec4 c;\n#include \"ext.glsl\"\nvoid main() {\n  c = vec4(ext());\n  bogus;\n}\n"},
+                      {"ext.glsl", "float ext() { return 1.0; }\n#extension GL_ARB_shader_ballot : enable\n"},
+                      {"good.frag.glsl", "#version 450 core\nout vec4 c;\n#include \"ext.glsl\"\nvoid main() { c = vec4(ext()); }\n"}});
+    const gl::PreprocessedSource pre = gl::preprocessShader(s.root / "good.frag.glsl", {{"VALUE", "1"}}, s.root);
+    CHECK(pre.text.rfind("#version 450 core\n#extension GL_ARB_shader_ballot : enable\n#define VALUE 1\n", 0) == 0);
+    CHECK(errorOf({"good.frag.glsl"}).empty());
+    const std::string e = errorOf({"main.frag.glsl"});
+    INFO(e);
+    CHECK(e.find("main.frag.glsl:6:") != std::string::npos);
+    CHECK(e.find("#extension") == std::string::npos);
+    gl::takeErrors();
+}
+
 TEST_CASE("a missing file, an include cycle and an unknown stage are errors") {
     test::glContext();
     ScratchShaders s({{"a.frag.glsl", "#version 450 core\n#include \"b.glsl\"\nvoid main() {}\n"},

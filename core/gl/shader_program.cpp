@@ -34,6 +34,10 @@ struct Preprocessor {
     fs::path root;
     PreprocessedSource out;
     std::set<std::string> including;  // guards against include cycles
+    // Where #extension lines go: right after #version, before the defines and any prelude. GLSL
+    // allows them only before the first non-preprocessor token, so one in a scene shader or an
+    // include (after the scene prelude's declarations) is moved there. npos: no #version yet.
+    std::size_t extensionAt = std::string::npos;
 
     int fileIndex(const std::string& name) {
         out.files.push_back(name);
@@ -57,6 +61,7 @@ struct Preprocessor {
         int lineNumber = 0;
         bool versionSeen = !top;
         static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
+        static const std::regex extensionRe(R"(^\s*#\s*extension\s.*$)");
         if (!top) out.text += "#line 1 " + std::to_string(index) + "\n";
         while (std::getline(lines, line)) {
             ++lineNumber;
@@ -64,9 +69,17 @@ struct Preprocessor {
             if (!versionSeen && line.rfind("#version", 0) == 0) {
                 versionSeen = true;
                 out.text += line + "\n";
+                extensionAt = out.text.size();
                 for (const auto& [name, value] : defines) out.text += "#define " + name + " " + value + "\n";
                 if (!wrap.prelude.empty()) expand(root / wrap.prelude, displayName(file) + " (prelude)", false, {});
                 out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
+                continue;
+            }
+            if (extensionAt != std::string::npos && std::regex_match(line, extensionRe)) {
+                const std::string hoisted = line + "\n";
+                out.text.insert(extensionAt, hoisted);
+                extensionAt += hoisted.size();
+                out.text += "\n";  // keeps the line numbers that follow
                 continue;
             }
             if (std::regex_match(line, m, includeRe)) {

@@ -6,6 +6,7 @@
 #include "surface.glsl"
 #include "oit/abuffer_storage.glsl"
 #include "oit/fragment_color.glsl"
+#include "oit/claim_node.glsl"
 #include "buffer_bindings.h"
 #include "tail_store.glsl"
 
@@ -21,7 +22,7 @@ void main() {
     StoredColor fragmentColor = storedSurfaceColor();
     vec4 c = fragmentColor.scalar;
     uvec2 words = fragmentColor.words;
-    uint index = atomicCounterIncrement(uNodeCount);
+    uint index = claimNode(uNodeCount);
     if (index >= uCapacity) { tailAdd(c); return; }
 #ifdef VOLUME
     uint primitiveBits = uint(gl_PrimitiveID) | volumeFlags();
