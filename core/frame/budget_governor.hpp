@@ -96,15 +96,16 @@ struct LossScales {
     double lod = 1.0;
 };
 
-// Reactive, before a change of zoom alone has measured it: the share of the frame time at zoom 1
-// that scales with pixels, from a frame of `ms` drawn at a zoom whose pixels are `pixelRatio` of
-// zoom 1's, of which `fixedMs` (LOD's preview: its predicted time less its pixel and quad-side
-// parts) is taken as the only part no zoom shrinks. In [0.02, 1]; 1 where nothing is known.
+// Reactive without a calibrated zoom model, before a change of zoom alone has measured it: the
+// share of the frame time at zoom 1 that scales with pixels, from a frame of `ms` drawn at a zoom
+// whose pixels are `pixelRatio` of zoom 1's, of which `fixedMs` (LOD's preview: its predicted
+// time less its pixel and quad-side parts) is taken as the only part no zoom shrinks. In
+// [0.02, 1]; 1 where nothing is known.
 double priorPixelShare(double ms, double fixedMs, double pixelRatio);
 
 // Whether a governor of this kind and levers needs the zoom cost calibrated on the device
 // (frame/zoom_calibration.hpp) before its first frame: the predictive policy always; the
-// reactive one with both levers, for its pixel share before a change of zoom has measured it.
+// reactive one with both levers, whose estimates of the states are the models' differences.
 // The zoom lever alone under the reactive policy is today's zoom controller, which needs none.
 bool budgetNeedsCalibration(ZoomControllerKind kind, BudgetLevers levers);
 
@@ -129,9 +130,9 @@ public:
     // The state's loss for a load (the rule's; public for tests and the panel).
     double loss(const GovernorLoad& load, int zoom, int level) const;
     // The factor on LOD's predicted pixel and side parts learnt from the frames drawn (1 until
-    // they spread it; reactive: until a change of zoom alone, with a calibrated zoom model). The LOD cost model's rates come from calibration draws,
-    // not this scene's stand-ins; on builtin:orchard:1000 its pixel part came out about 30 %
-    // low. The factor also takes in any per-pixel bias of the zoom model (it too shrinks with
+    // they spread it; reactive: until a change of zoom alone, with a calibrated zoom model). The
+    // LOD cost model's rates come from calibration draws, not this scene's stand-ins; on
+    // builtin:orchard:1000 its pixel part came out about 30 % low. The factor also takes in any per-pixel bias of the zoom model (it too shrinks with
     // the zoom): totals across zooms stay right, but that part is then scaled per LOD level.
     double lodPixelScale() const { return lodPixelScale_; }
 

@@ -5,7 +5,7 @@
 #include "surface.glsl"
 #include "abuffer_storage.glsl"
 #include "fragment_color.glsl"
-#include "oit/claim_node.glsl"
+#include "oit/subgroup_counter.glsl"
 
 #ifdef VOLUME
 #include "oit/volume/volume_store.glsl"
@@ -19,7 +19,7 @@ void main() {
     // The colour first: its texture fetches need derivatives, which a fragment that has left
     // by the branch below no longer helps compute (oit/fragment_color.glsl).
     uvec2 words = storedSurfaceColor().words;
-    uint index = claimNode(uNodeCount);
+    uint index = subgroupCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
 #ifdef VOLUME
     uint primitiveBits = uint(gl_PrimitiveID) | volumeFlags();

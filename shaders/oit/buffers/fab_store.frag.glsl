@@ -7,6 +7,7 @@
 #include "entry.glsl"
 #include "oit/fragment_color.glsl"
 #include "tail_store.glsl"
+#include "oit/subgroup_counter.glsl"
 
 layout(early_fragment_tests) in;
 layout(binding = BIND_PIXEL_COUNTS, r32ui) uniform coherent uimage2D uCounts;
@@ -24,10 +25,10 @@ void main() {
     if (slot < uCapacity) {
         uint index = (uint(pixel.y) * uWidth + uint(pixel.x)) * uCapacity + slot;
         entries[index] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words);
-        atomicCounterIncrement(uStored);
+        subgroupCounterIncrement(uStored);
         tailNone();
     } else {
-        atomicCounterIncrement(uOverflowed);
+        subgroupCounterIncrement(uOverflowed);
         tailAdd(c);
     }
 }

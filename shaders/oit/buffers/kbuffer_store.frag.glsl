@@ -17,6 +17,7 @@
 #include "entry.glsl"
 #include "oit/fragment_color.glsl"
 #include "tail_store.glsl"
+#include "oit/subgroup_counter.glsl"
 
 layout(early_fragment_tests) in;
 layout(std430, binding = BIND_DEPTH_KEYS) coherent buffer DepthKeys { uint depthKeys[]; };
@@ -33,14 +34,14 @@ void main() {
     uint first = (uint(pixel.y) * uWidth + uint(pixel.x)) * uCapacity;
     uint key = floatBitsToUint(gl_FragCoord.z);
     if (uPass == 0) {
-        atomicCounterIncrement(uInserted);
+        subgroupCounterIncrement(uInserted);
         uint carried = key;
         for (uint i = 0u; i < uCapacity; ++i) {
             uint previous = atomicMax(depthKeys[first + i], carried);
             if (previous == 0u) { carried = 0u; break; }  // took an empty slot
             carried = min(previous, carried);             // the displaced (or refused) key moves on
         }
-        if (carried != 0u) atomicCounterIncrement(uDropped);
+        if (carried != 0u) subgroupCounterIncrement(uDropped);
         return;
     }
     StoredColor fragmentColor = storedSurfaceColor();

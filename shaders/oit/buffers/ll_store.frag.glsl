@@ -6,7 +6,7 @@
 #include "surface.glsl"
 #include "oit/abuffer_storage.glsl"
 #include "oit/fragment_color.glsl"
-#include "oit/claim_node.glsl"
+#include "oit/subgroup_counter.glsl"
 #include "buffer_bindings.h"
 #include "tail_store.glsl"
 
@@ -22,7 +22,7 @@ void main() {
     StoredColor fragmentColor = storedSurfaceColor();
     vec4 c = fragmentColor.scalar;
     uvec2 words = fragmentColor.words;
-    uint index = claimNode(uNodeCount);
+    uint index = subgroupCounterIncrement(uNodeCount);
     if (index >= uCapacity) { tailAdd(c); return; }
 #ifdef VOLUME
     uint primitiveBits = uint(gl_PrimitiveID) | volumeFlags();

@@ -12,6 +12,7 @@
 #include "surface.glsl"
 #include "entry.glsl"
 #include "oit/fragment_color.glsl"
+#include "oit/subgroup_counter.glsl"
 
 layout(early_fragment_tests) in;
 layout(std430, binding = BIND_PIXEL_OFFSETS) coherent buffer PixelOffsets { uint offsets[]; };
@@ -31,6 +32,6 @@ void main() {
     // The colour before the per-fragment branch below (oit/fragment_color.glsl).
     uvec2 words = storedSurfaceColor().words;
     uint slot = atomicAdd(offsets[index], 1u) - uBase;
-    if (slot >= uCapacity) { atomicCounterIncrement(uDropped); return; }
+    if (slot >= uCapacity) { subgroupCounterIncrement(uDropped); return; }
     entries[slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words);
 }

@@ -4,6 +4,7 @@
 // per RGBA32F target, up to MAX_TARGETS targets. Every other channel gets -2, the neutral value
 // the targets are cleared to. Two fragments per bucket survive; the rest collide and are lost.
 #include "bun_bucket.glsl"
+#include "oit/subgroup_counter.glsl"
 
 #ifndef MAX_TARGETS
 #define MAX_TARGETS 8
@@ -14,7 +15,7 @@ layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uTotal;
 layout(location = 0) out vec4 outBuckets[MAX_TARGETS];
 
 void main() {
-    atomicCounterIncrement(uTotal);
+    subgroupCounterIncrement(uTotal);
     float z = gl_FragCoord.z;
     int bucket = bucketOf(ivec2(gl_FragCoord.xy), z);
     int target = bucket / 2;

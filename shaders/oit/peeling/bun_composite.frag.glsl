@@ -5,6 +5,7 @@
 #include "bindings.h"
 #include "peel_bindings.h"
 #include "oit/transmittance.glsl"
+#include "oit/subgroup_counter.glsl"
 
 layout(binding = BIND_OPAQUE_COLOR) uniform sampler2D uOpaqueColor;
 layout(binding = BIND_PEEL_LAYER) uniform sampler2DArray uBucketDepths;
@@ -31,7 +32,7 @@ void main() {
             color += transmittance * c.a * c.rgb;
             transmittance *= 1.0 - c.a;
 #endif
-            atomicCounterIncrement(uCaptured);
+            subgroupCounterIncrement(uCaptured);
         }
     }
     outColor = vec4(color + transmittance * texelFetch(uOpaqueColor, pixel, 0).rgb, 1.0);

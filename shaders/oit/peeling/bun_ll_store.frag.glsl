@@ -9,7 +9,7 @@
 #include "bun_bucket.glsl"
 #include "oit/abuffer_storage.glsl"
 #include "oit/fragment_color.glsl"
-#include "oit/claim_node.glsl"
+#include "oit/subgroup_counter.glsl"
 
 layout(early_fragment_tests) in;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uNodeCount;
@@ -17,7 +17,7 @@ uniform uint uCapacity;
 
 void main() {
     uvec2 words = storedSurfaceColor().words;  // before the branch: oit/fragment_color.glsl
-    uint index = claimNode(uNodeCount);
+    uint index = subgroupCounterIncrement(uNodeCount);
     if (index >= uCapacity) return;
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     uint head = imageAtomicExchange(uHeads, ivec3(pixel, bucketOf(pixel, gl_FragCoord.z)), index + 1u);

@@ -7,6 +7,7 @@
 // Needs surface.glsl (uObjectId) before it.
 #include "layer_storage.glsl"
 #include "oit/fragment_color.glsl"
+#include "oit/subgroup_counter.glsl"
 
 #if defined(LAYER_LIST)
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uFrontCount;
@@ -23,10 +24,10 @@ void storeLayerFragment(ivec2 pixel, int side, uvec2 words) {
 #if defined(LAYER_LIST)
     uint index;
     if (side == 0) {
-        index = atomicCounterIncrement(uFrontCount);
+        index = subgroupCounterIncrement(uFrontCount);
         if (index >= uFrontLimit) return;
     } else {
-        uint fromEnd = atomicCounterIncrement(uBackCount);
+        uint fromEnd = subgroupCounterIncrement(uBackCount);
         if (fromEnd >= uBackLimit) return;
         index = uCapacity - 1u - fromEnd;
     }
@@ -36,9 +37,9 @@ void storeLayerFragment(ivec2 pixel, int side, uvec2 words) {
     uint slot = imageAtomicAdd(uCounts, sidePixel(pixel, side), 1u);
     if (slot < uCapacity) {
         entries[firstEntry(pixel, side) + slot] = makeEntry(gl_FragCoord.z, uObjectId, uint(gl_PrimitiveID), words);
-        atomicCounterIncrement(uStored);
+        subgroupCounterIncrement(uStored);
     } else {
-        atomicCounterIncrement(uOverflowed);
+        subgroupCounterIncrement(uOverflowed);
     }
 #else
     // Claimed slots always form a prefix: a fragment tries slot i only after finding 0..i-1
@@ -50,10 +51,10 @@ void storeLayerFragment(ivec2 pixel, int side, uvec2 words) {
             entries[first + i].primitiveId = uint(gl_PrimitiveID);
             entries[first + i].colorRG = words.x;
             entries[first + i].colorBA = words.y;
-            atomicCounterIncrement(uStored);
+            subgroupCounterIncrement(uStored);
             return;
         }
     }
-    atomicCounterIncrement(uOverflowed);
+    subgroupCounterIncrement(uOverflowed);
 #endif
 }

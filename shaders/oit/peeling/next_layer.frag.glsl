@@ -7,6 +7,7 @@
 // early tests: the discard must come first.
 #include "surface.glsl"
 #include "oit/fragment_color.glsl"
+#include "oit/subgroup_counter.glsl"
 
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
 layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uTotal;
@@ -14,6 +15,6 @@ layout(location = 0) out uvec4 outAnchor;  // layer_bindings.h: BIND_ANCHOR
 
 void main() {
     if (gl_FragCoord.z <= texelFetch(uOpaqueDepth, ivec2(gl_FragCoord.xy), 0).r) discard;
-    atomicCounterIncrement(uTotal);
+    subgroupCounterIncrement(uTotal);
     outAnchor = uvec4(storedSurfaceColor().words, uObjectId + 1u, uint(gl_PrimitiveID));
 }
