@@ -87,10 +87,11 @@ TEST_CASE("#extension lines in an include move above the code, and the lines aft
     test::glContext();
     // GLSL takes #extension only before the first non-preprocessor token; here it follows a
     // declaration (as an include's does after a scene prelude). The preprocessor moves it to just
-    // after #version, so the file compiles, and the error two lines below it is still on line 6.
+    // after #version, so the file compiles, and an error below it in the same file (line 4 of
+    // ext.glsl, with BROKEN defined) and one after the include (line 6 of main) keep their numbers.
     ScratchShaders s({{"main.frag.glsl",
                        "#version 450 core\nout vec4 c;\n#include \"ext.glsl\"\nvoid main() {\n  c = vec4(ext());\n  bogus;\n}\n"},
-                      {"ext.glsl", "float ext() { return 1.0; }\n#extension GL_ARB_shader_ballot : enable\n"},
+                      {"ext.glsl", "float ext() { return 1.0; }\n#extension GL_ARB_shader_ballot : enable\n#ifdef BROKEN\nbogus;\n#endif\n"},
                       {"good.frag.glsl", "#version 450 core\nout vec4 c;\n#include \"ext.glsl\"\nvoid main() { c = vec4(ext()); }\n"}});
     const gl::PreprocessedSource pre = gl::preprocessShader(s.root / "good.frag.glsl", {{"VALUE", "1"}}, s.root);
     CHECK(pre.text.rfind("#version 450 core\n#extension GL_ARB_shader_ballot : enable\n#define VALUE 1\n", 0) == 0);
@@ -99,6 +100,9 @@ TEST_CASE("#extension lines in an include move above the code, and the lines aft
     INFO(e);
     CHECK(e.find("main.frag.glsl:6:") != std::string::npos);
     CHECK(e.find("#extension") == std::string::npos);
+    const std::string inInclude = errorOf({"good.frag.glsl"}, {{"BROKEN", ""}});
+    INFO(inInclude);
+    CHECK(inInclude.find("ext.glsl:4:") != std::string::npos);
     gl::takeErrors();
 }
 

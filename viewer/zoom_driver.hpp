@@ -3,8 +3,9 @@
 // next frame draws at, and under a budget which LOD error bound, fixed or picked per frame by
 // the budget governor (frame/budget_governor.hpp: the least loss predicted or measured to fit),
 // the zoom raised during fast head turns in immersive mode, and the last frames' zoom, bound,
-// predicted and measured time for the panel's plots. The predictive policy's zoom model is
-// calibrated (frame/zoom_calibration.hpp) for the current technique and window size when it is
+// predicted and measured time for the panel's plots. The zoom model is calibrated
+// (frame/zoom_calibration.hpp) for the current technique and window size, for the predictive
+// policy and for the reactive one with both levers (budgetNeedsCalibration), when the policy is
 // chosen and whenever either changes.
 #include "frame_history.hpp"
 

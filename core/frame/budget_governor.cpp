@@ -25,6 +25,9 @@ constexpr int kOverFramesToAct = 2;
 constexpr double kPixelFitMemory = 0.9;
 constexpr double kPixelFitSpread = 0.05;
 constexpr double kPixelScaleMin = 0.5, kPixelScaleMax = 4.0;
+// Reactive: the least change of LOD's size part, as a share of the frame, a change of zoom learns
+// the factor from.
+constexpr double kLeastLodChange = 0.05;
 
 }  // namespace
 
@@ -167,10 +170,10 @@ GovernorChoice BudgetGovernor::choosePredictive(const GovernorLoad& load) {
 
 bool BudgetGovernor::modelCalibrated() const { return model_.msPerMegapixel > 0.0 || model_.msPerMegafragment > 0.0; }
 
-double BudgetGovernor::techniqueSizeMs(glm::ivec2 display, int zoom) const {
-    // The last frame's fragments, drawn at the current zoom, scale with the pixels.
-    const double fragments = fragments_ * zoomPixels(display, zoom) / std::max(zoomPixels(display, zoom_), 1.0);
-    return model_.predict(zoomPixels(display, zoom), fragments) - model_.fixedMs;
+double BudgetGovernor::techniqueSizeMs(glm::ivec2 display, int zoom, double fragments, int fragmentsZoom) const {
+    // Fragments drawn at one zoom scale with the pixels to another.
+    const double scaled = fragments * zoomPixels(display, zoom) / std::max(zoomPixels(display, fragmentsZoom), 1.0);
+    return model_.predict(zoomPixels(display, zoom), scaled) - model_.fixedMs;
 }
 
 double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int zoom, int level) const {
@@ -182,8 +185,8 @@ double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int
         // zoom drawn). The rest of the frame, what neither model explains included, is fixed, as
         // the predictive policy's learnt offset takes it: on the field's sweep, frames near the
         // eye drew 43-47 ms at 2 px whether at zoom 1 or 2.
-        return ms + techniqueSizeMs(display, zoom) - techniqueSizeMs(display, zoom_) + lodMs(load, level, zoom) -
-               lodMs(load, level_, zoom_);
+        return ms + techniqueSizeMs(display, zoom, fragments_, zoom_) - techniqueSizeMs(display, zoom_, fragments_, zoom_) +
+               lodMs(load, level, zoom) - lodMs(load, level_, zoom_);
     }
     double scaled = ms;
     if (display.x > 0 && zoom != zoom_) {
@@ -206,6 +209,7 @@ void BudgetGovernor::changeState(int zoom, int level, bool controlled) {
     beforeZoom_ = zoom_;
     beforeLevel_ = level_;
     beforeMs_ = controlled && !recent_.empty() ? medianMs(recent_) : kNaN;
+    beforeFragments_ = fragments_;
     lastWasStepDown_ = zoom < zoom_ || level < level_;
     zoom_ = zoom;
     level_ = level;
@@ -269,8 +273,13 @@ void BudgetGovernor::observe(const FrameCost& cost) {
         // preview's 18 ms of stand-in pixels at 2 px: the factor's floor, 0.5, is then learnt).
         const LodLevelPreview& at = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
         const double lodChange = lodSizePart(at, beforeZoom_) - lodSizePart(at, zoom_);
-        const double rest = beforeMs_ - now - (techniqueSizeMs(display, beforeZoom_) - techniqueSizeMs(display, zoom_));
-        if (std::abs(lodChange) > kTie) lodPixelScale_ = std::clamp(rest / lodChange, kPixelScaleMin, kPixelScaleMax);
+        const double rest = beforeMs_ - now -
+                            (techniqueSizeMs(display, beforeZoom_, beforeFragments_, beforeZoom_) -
+                             techniqueSizeMs(display, zoom_, fragments_, zoom_));
+        // Only a change that moves LOD's part by a visible share of the frame says how large it
+        // is: a smaller one is the frames' noise divided by almost nothing.
+        if (std::abs(lodChange) >= kLeastLodChange * now)
+            lodPixelScale_ = std::clamp(rest / lodChange, kPixelScaleMin, kPixelScaleMax);
     } else if (zoomAloneChanged) {
         const double p1 = zoomPixels(display, 1);
         const double pb = zoomPixels(display, beforeZoom_) / p1, pn = zoomPixels(display, zoom_) / p1;

@@ -147,8 +147,8 @@ private:
     // Whether the zoom cost model was calibrated (budgetNeedsCalibration); tests may pass none.
     bool modelCalibrated() const;
     // Reactive: the technique's time that scales with the pixels at a zoom, under the zoom model,
-    // with the last frame's fragments (drawn at the current zoom) scaled to that zoom's pixels.
-    double techniqueSizeMs(glm::ivec2 display, int zoom) const;
+    // with `fragments` (drawn at `fragmentsZoom`) scaled to that zoom's pixels.
+    double techniqueSizeMs(glm::ivec2 display, int zoom, double fragments, int fragmentsZoom) const;
     // Reactive: the time at (zoom, level) of a frame measured `ms` at the current state.
     double reactiveEstimate(const GovernorLoad& load, double ms, int zoom, int level) const;
     void changeState(int zoom, int level, bool controlled);
@@ -171,7 +171,8 @@ private:
     double beforeMs_;
     double pixelShare_ = 1.0;  // of the time at zoom 1, what scales with pixels
     bool shareLearned_ = false;  // pixelShare_ measured (a change of zoom alone), not assumed
-    double fragments_ = 0.0;     // transparent fragments of the last frame at the current state
+    double fragments_ = 0.0;        // transparent fragments of the last frame at the current state
+    double beforeFragments_ = 0.0;  // and of the last frame before the last change
     // Predictive: LOD's pixel part as drawn over as previewed (lodMs), fitted to the frames.
     void learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost);
     // LOD's size-dependent part at zoom z: its pixel part / z^2 and its side part / z.

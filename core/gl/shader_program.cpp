@@ -36,7 +36,9 @@ struct Preprocessor {
     std::set<std::string> including;  // guards against include cycles
     // Where #extension lines go: right after #version, before the defines and any prelude. GLSL
     // allows them only before the first non-preprocessor token, so one in a scene shader or an
-    // include (after the scene prelude's declarations) is moved there. npos: no #version yet.
+    // include (after the scene prelude's declarations) is moved there, unconditionally: one
+    // inside an #if is moved out of it, so use `enable`, which an absent extension only warns
+    // about, and test the extension's own macro. npos: no #version yet.
     std::size_t extensionAt = std::string::npos;
 
     int fileIndex(const std::string& name) {
@@ -61,7 +63,7 @@ struct Preprocessor {
         int lineNumber = 0;
         bool versionSeen = !top;
         static const std::regex includeRe(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
-        static const std::regex extensionRe(R"(^\s*#\s*extension\s.*$)");
+        static const std::regex extensionRe(R"(^\s*#\s*extension\s[^\n]*$)");  // [^\n]: CRLF files too
         if (!top) out.text += "#line 1 " + std::to_string(index) + "\n";
         while (std::getline(lines, line)) {
             ++lineNumber;

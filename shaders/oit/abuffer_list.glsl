@@ -15,6 +15,12 @@ void compositeFragment(uint i, inout vec3 color, inout Transmittance transmittan
     compositePacked(packedColor.x, packedColor.y, color, transmittance);
 }
 
+void compositeFragmentInFront(uint i, inout vec3 color, inout Transmittance transmittance) {
+    const uvec2 packedColor = nodeColor(i);
+    compositePackedInFront(packedColor.x, packedColor.y, color, transmittance);
+}
+#define LIST_WALK_IN_ORDER  // ordered_composite.glsl: a list already in depth order composites as walked
+
 // Links hold index + 1 with 0 ending the list, so "link - 1" ends at 0xFFFFFFFF.
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirstNode; i != 0xFFFFFFFFu; i = nodeNext(i) - 1u)
 #include "ordered_composite.glsl"

@@ -79,7 +79,42 @@ void compositeLongList(inout vec3 color, inout Transmittance transmittance) {
     }
 }
 
+#ifdef LIST_WALK_IN_ORDER
+// Where the fragments already run one way in depth as FOR_EACH_FRAGMENT visits them, each a layer
+// of its own (no two consecutive ones within the tie tolerance), the total order is the walk's or
+// its reverse and every layer holds one fragment: they composite as they are walked, nearest
+// first with compositeFragment or farthest first with compositeFragmentInFront (which the
+// includer defines), and nothing is held in arrays or sorted. A list stored in the order its
+// objects were drawn runs so wherever they were drawn by depth (Strata draws nearest first).
+// Returns false, having composited nothing, where the fragments do not run one way.
+bool compositeIfWalkInOrder(inout vec3 color, inout Transmittance transmittance) {
+    float previous = 0.0;
+    int direction = 0;  // 1: each fragment farther than the last (nearest first); -1: nearer
+    bool first = true;
+    FOR_EACH_FRAGMENT(i) {
+        const float key = orderKey(i);
+        if (!first) {
+            if (sameLayer(previous, key)) return false;
+            const int step = key < previous ? 1 : -1;
+            if (direction == 0) direction = step;
+            else if (step != direction) return false;
+        }
+        previous = key;
+        first = false;
+    }
+    if (direction >= 0) {
+        FOR_EACH_FRAGMENT(i) compositeFragment(i, color, transmittance);
+    } else {
+        FOR_EACH_FRAGMENT(i) compositeFragmentInFront(i, color, transmittance);
+    }
+    return true;
+}
+#endif
+
 void compositeInDepthOrder(inout vec3 color, inout Transmittance transmittance) {
+#ifdef LIST_WALK_IN_ORDER
+    if (compositeIfWalkInOrder(color, transmittance)) return;
+#endif
     // Keys stay in registers beside the indices: the sort reads memory only on an exact key
     // tie, and the layer pass only inside a layer of two or more (coincident surfaces).
     uint local[LOCAL_CAPACITY];

@@ -61,4 +61,21 @@ void compositePacked(uint word0, uint word1, inout vec3 color, inout Transmittan
     color += transmittance * ba.y * vec3(rg, ba.x);
     transmittance *= 1.0 - ba.y;
 }
+
+// The same fragment composited IN FRONT of what `color` and `transmittance` hold (back to front):
+// the composite of a list walked farthest first ends where compositePacked's, nearest first, does.
+void compositePackedInFront(uint word0, uint word1, inout vec3 color, inout Transmittance transmittance) {
+#ifdef STRATA_RGB_TRANSMITTANCE
+    if ((word1 & kColoredFilter) != 0u) {
+        const vec3 t = unpackUnorm3x10(word1);
+        color = unpackRgb9e5(word0) + t * color;
+        transmittance *= t;
+        return;
+    }
+#endif
+    vec2 rg = unpackHalf2x16(word0);
+    vec2 ba = unpackHalf2x16(word1);
+    color = ba.y * vec3(rg, ba.x) + (1.0 - ba.y) * color;
+    transmittance *= 1.0 - ba.y;
+}
 #endif

@@ -11,6 +11,8 @@
 // pass by pass"). Helper invocations take no part: their atomics have no effect, so one may not
 // lead. Any control flow: the ballot sees only the invocations that reach the call.
 // The #extension lines move to the top of the shader (gl/shader_program.cpp).
+#ifndef STRATA_SUBGROUP_COUNTER_GLSL
+#define STRATA_SUBGROUP_COUNTER_GLSL
 #extension GL_ARB_shader_ballot : enable
 #extension GL_ARB_gpu_shader_int64 : enable
 #extension GL_ARB_shader_atomic_counter_ops : enable
@@ -28,4 +30,5 @@ uint subgroupCounterIncrement(atomic_uint counter) {
 }
 #else
 uint subgroupCounterIncrement(atomic_uint counter) { return atomicCounterIncrement(counter); }
+#endif
 #endif
