@@ -55,6 +55,11 @@ void compositeFragment(uint e, inout vec3 color, inout Transmittance transmittan
     compositePacked(entries[e].colorRG, entries[e].colorBA, color, transmittance);
 }
 
+void compositeFragmentInFront(uint e, inout vec3 color, inout Transmittance transmittance) {
+    compositePackedInFront(entries[e].colorRG, entries[e].colorBA, color, transmittance);
+}
+#define LIST_WALK_IN_ORDER  // ordered_composite.glsl: a range already in depth order composites as read
+
 #define FOR_EACH_FRAGMENT(i) for (uint i = gFirst; i < gEnd; ++i)
 #include "oit/ordered_composite.glsl"
 
