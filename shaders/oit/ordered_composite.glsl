@@ -105,7 +105,12 @@ bool compositeIfWalkInOrder(inout vec3 color, inout Transmittance transmittance)
     if (direction >= 0) {
         FOR_EACH_FRAGMENT(i) compositeFragment(i, color, transmittance);
     } else {
-        FOR_EACH_FRAGMENT(i) compositeFragmentInFront(i, color, transmittance);
+        // In front of each other, and all of them behind what the caller already holds.
+        vec3 listColor = vec3(0.0);
+        Transmittance listTransmittance = Transmittance(1.0);
+        FOR_EACH_FRAGMENT(i) compositeFragmentInFront(i, listColor, listTransmittance);
+        color += transmittance * listColor;
+        transmittance *= listTransmittance;
     }
     return true;
 }
