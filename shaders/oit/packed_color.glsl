@@ -1,5 +1,5 @@
 // A stored fragment's colour in two words, the layout of the A-buffer's nodes and the buffers'
-// entries, and its front-to-back "under" composite.
+// entries, and its composites: behind what is held (front to back) or in front of it.
 //  - Scalar (the default): half2 (r, g) and half2 (b, alpha), colour not premultiplied.
 //  - STRATA_RGB_TRANSMITTANCE adds a coloured filter's layout, flagged by bit 31 of word 1 (the
 //    scalar layout's alpha, a half in [0, 1], never sets it): the premultiplied colour in RGB9E5
@@ -48,34 +48,37 @@ vec3 unpackUnorm3x10(uint word) {
 }
 #endif
 
-void compositePacked(uint word0, uint word1, inout vec3 color, inout Transmittance transmittance) {
+// A stored fragment's premultiplied colour and what it lets through (its transmittance).
+void unpackFragment(uint word0, uint word1, out vec3 premultiplied, out Transmittance passes) {
 #ifdef STRATA_RGB_TRANSMITTANCE
     if ((word1 & kColoredFilter) != 0u) {
-        color += transmittance * unpackRgb9e5(word0);
-        transmittance *= unpackUnorm3x10(word1);
+        premultiplied = unpackRgb9e5(word0);
+        passes = unpackUnorm3x10(word1);
         return;
     }
 #endif
     vec2 rg = unpackHalf2x16(word0);
     vec2 ba = unpackHalf2x16(word1);
-    color += transmittance * ba.y * vec3(rg, ba.x);
-    transmittance *= 1.0 - ba.y;
+    premultiplied = ba.y * vec3(rg, ba.x);
+    passes = Transmittance(1.0 - ba.y);
+}
+
+// The fragment composited behind what `color` and `transmittance` hold (front to back).
+void compositePacked(uint word0, uint word1, inout vec3 color, inout Transmittance transmittance) {
+    vec3 c;
+    Transmittance t;
+    unpackFragment(word0, word1, c, t);
+    color += transmittance * c;
+    transmittance *= t;
 }
 
 // The same fragment composited IN FRONT of what `color` and `transmittance` hold (back to front):
 // the composite of a list walked farthest first ends where compositePacked's, nearest first, does.
 void compositePackedInFront(uint word0, uint word1, inout vec3 color, inout Transmittance transmittance) {
-#ifdef STRATA_RGB_TRANSMITTANCE
-    if ((word1 & kColoredFilter) != 0u) {
-        const vec3 t = unpackUnorm3x10(word1);
-        color = unpackRgb9e5(word0) + t * color;
-        transmittance *= t;
-        return;
-    }
-#endif
-    vec2 rg = unpackHalf2x16(word0);
-    vec2 ba = unpackHalf2x16(word1);
-    color = ba.y * vec3(rg, ba.x) + (1.0 - ba.y) * color;
-    transmittance *= 1.0 - ba.y;
+    vec3 c;
+    Transmittance t;
+    unpackFragment(word0, word1, c, t);
+    color = c + t * color;
+    transmittance *= t;
 }
 #endif
