@@ -285,6 +285,10 @@ std::vector<ProgramCase> programCases() {
                                                       {"uLayer", tex(BIND_PEEL_LAYER)},
                                                       {"uAnchor", tex(BIND_ANCHOR)}};
     const std::map<std::string, Binding> anchor = {{"uAnchor", tex(BIND_ANCHOR)}};
+    // dual's blend: the layers and the next range, and the pass's counts (dual_peeling.cpp).
+    const std::map<std::string, Binding> dualBlend = {
+        {"uFront", tex(BIND_PEEL_LAYER)},  {"uBack", tex(BIND_PEEL_BACK)},     {"uNextRange", tex(BIND_PEEL_PREVIOUS)},
+        {"uFrontLayers", kCounters},       {"uBackLayers", kCounters},         {"uInteriorLeft", kCounters}};
     const std::map<std::string, Binding> layerListCounters = {{"uFrontCount", kCounters}, {"uBackCount", kCounters}};
     const std::map<std::string, Binding> layerCounters = {{"uStored", kCounters}, {"uOverflowed", kCounters}};
     const std::map<std::string, Binding> fabLayer = {{"uCounts", image(BIND_PIXEL_COUNTS)},
@@ -348,8 +352,10 @@ std::vector<ProgramCase> programCases() {
          {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uAccum", tex(BIND_PEEL_ACCUM)}}},
         {{scene, "oit/peeling/dual_init.frag.glsl"}, {}, {}},
         {{scene, "oit/peeling/dual_peel.frag.glsl"}, {}, {{"uMinMax", tex(BIND_PEEL_PREVIOUS)}}},
-        {{full, "oit/peeling/dual_blend.frag.glsl"}, {},
-         {{"uFront", tex(BIND_PEEL_LAYER)}, {"uBack", tex(BIND_PEEL_BACK)}, {"uNextRange", tex(BIND_PEEL_PREVIOUS)}}},
+        {{full, "oit/peeling/dual_blend.frag.glsl"}, {}, dualBlend},
+        {{full, "oit/peeling/dual_blend.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}},
+         with(dualBlend, {{"uFrontFilter", tex(BIND_PEEL_LAYER_FILTER)}, {"uBackFilter", tex(BIND_PEEL_BACK_FILTER)},
+                          {"uFrontAccumFilter", tex(BIND_PEEL_ACCUM_FILTER)}, {"uBackAccum", tex(BIND_PEEL_BACK_ACCUM)}})},
         {{full, "oit/peeling/peel_composite.frag.glsl"}, {{"DUAL", ""}},
          {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uAccum", tex(BIND_PEEL_ACCUM)},
           {"uBackAccum", tex(BIND_PEEL_BACK_ACCUM)}}},

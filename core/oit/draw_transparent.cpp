@@ -21,23 +21,25 @@ std::uint64_t drawTransparent(const FrameContext& frame, const SceneProgram& pro
     return order.size();
 }
 
-void drawFullscreen(const FrameContext& frame, GLuint program) {
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
+void drawFullscreenAsSet(const FrameContext& frame, GLuint program) {
     glUseProgram(program);
     glBindVertexArray(frame.targets.emptyVertexArray());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void drawFullscreen(const FrameContext& frame, GLuint program) {
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    drawFullscreenAsSet(frame, program);
+}
+
 void drawFullscreenDepth(const FrameContext& frame, GLuint program) {
     glViewport(0, 0, frame.size.x, frame.size.y);
     glDisable(GL_BLEND);
-    glUseProgram(program);
-    glBindVertexArray(frame.targets.emptyVertexArray());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    drawFullscreenAsSet(frame, program);
     glDepthMask(GL_FALSE);
 }
 

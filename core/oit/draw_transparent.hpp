@@ -20,6 +20,8 @@ void drawFullscreen(const FrameContext& frame, GLuint program);
 // A full-screen draw that writes depth (GL_ALWAYS, depth writes on, left off after) into the
 // bound framebuffer: a per-pixel depth bound a following geometry pass tests against.
 void drawFullscreenDepth(const FrameContext& frame, GLuint program);
+// A full-screen triangle under the depth and blend state the caller set (both above set theirs).
+void drawFullscreenAsSet(const FrameContext& frame, GLuint program);
 
 // Sets the uniforms of shaders/oit/ordered_composite.glsl (the tie rule of
 // render/depth_order.hpp) on a resolve program: the camera's n / (f - n) and the scene's

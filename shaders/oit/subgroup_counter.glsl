@@ -1,5 +1,6 @@
 // atomicCounterIncrement with one atomic per subgroup: the per-fragment counters of the store and
-// count passes (the list stores' node counter; fab's, kbuffer's and the capture passes' tallies).
+// count passes (the list stores' node counter; fab's, kbuffer's and the capture passes' tallies),
+// and a tally of the invocations for which a condition holds (subgroupCounterCount).
 // It returns what atomicCounterIncrement would: a value no other invocation gets, below the
 // counter's final value, which is the number of invocations that called it. A pool too small
 // still counts what it missed.
@@ -18,9 +19,12 @@
 #extension GL_ARB_shader_atomic_counter_ops : enable
 
 #if defined(GL_ARB_shader_ballot) && defined(GL_ARB_gpu_shader_int64) && defined(GL_ARB_shader_atomic_counter_ops)
+// The lowest lane set in a ballot (64 lanes at most); `lanes` must not be empty.
+uint lowestLane(uvec2 lanes) { return lanes.x != 0u ? uint(findLSB(lanes.x)) : 32u + uint(findLSB(lanes.y)); }
+
 uint subgroupCounterIncrement(atomic_uint counter) {
     const uvec2 lanes = unpackUint2x32(ballotARB(!gl_HelperInvocation));
-    const uint leader = lanes.x != 0u ? uint(findLSB(lanes.x)) : 32u + uint(findLSB(lanes.y));
+    const uint leader = lowestLane(lanes);
     uint base = 0u;
     if (gl_SubGroupInvocationARB == leader)
         base = atomicCounterAddARB(counter, uint(bitCount(lanes.x) + bitCount(lanes.y)));
@@ -28,7 +32,19 @@ uint subgroupCounterIncrement(atomic_uint counter) {
     const uvec2 below = unpackUint2x32(packUint2x32(lanes) & gl_SubGroupLtMaskARB);
     return base + uint(bitCount(below.x) + bitCount(below.y));
 }
+
+// Adds the number of the subgroup's invocations whose `counted` is true, with one atomic (none
+// when no invocation counts): a tally where nobody needs an index (dual's blend counts its layers
+// this way). The lowest invocation that counts adds for all.
+void subgroupCounterCount(atomic_uint counter, bool counted) {
+    const uvec2 hits = unpackUint2x32(ballotARB(counted && !gl_HelperInvocation));
+    if ((hits.x | hits.y) != 0u && gl_SubGroupInvocationARB == lowestLane(hits))
+        atomicCounterAddARB(counter, uint(bitCount(hits.x) + bitCount(hits.y)));
+}
 #else
 uint subgroupCounterIncrement(atomic_uint counter) { return atomicCounterIncrement(counter); }
+void subgroupCounterCount(atomic_uint counter, bool counted) {
+    if (counted) atomicCounterIncrement(counter);
+}
 #endif
 #endif

@@ -3,9 +3,9 @@
 // the hardware depth test only against the opaque depth); each peel pass then extracts the
 // front and the back layer at once and finds the next range from the fragments strictly
 // between them, and a full-screen pass blends the front layer under the front accumulation and
-// the back layer over the back accumulation. ceil(D/2) peel passes: the blend pass's last step
-// asks whether any fragment lies strictly inside the next range, and when none does the next
-// pass is not issued.
+// the back layer over the back accumulation. ceil(D/2) peel passes: the blend also counts the
+// layers and whether any fragment lies strictly inside the next range, and when none does the
+// next pass is not issued.
 // Coincident fragments at the nearest (farthest) depth merge by MAX: not coplanarity-aware.
 // With atomic_range the init and the peel passes find the next range by image atomics instead
 // of the RG32F MAX blend, and a full-screen pass after each writes the range in the same form
@@ -14,13 +14,14 @@
 // With back_depth_test (the default) a peel pass tests against the back of its range instead of
 // the opaque depth (which lies behind it), so the back layers peeled already are rejected
 // before they are shaded; the shader still decides every fragment near the back
-// (dual_back_depth.glsl). A full-screen pass writes it after the init; after a peel the blend's
-// last step (or atomic_range's pack) writes it on the way.
+// (dual_back_depth.glsl). A full-screen pass writes it after the init; after a peel the blend
+// (or atomic_range's pack) writes it on the way.
 // In a scene with coloured filters (oit/color_model.hpp) the layers carry their filters and both
 // accumulations what they let through per channel, in four more targets (dual_blend.frag.glsl).
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "oit/buffers/buffer_support.hpp"
 #include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
@@ -67,9 +68,9 @@ public:
                     peel(frame, cur);
                     // The back depth for the next peel: the pack writes it, or else the blend.
                     if (settings_.atomicRange) packRange(frame, cur);
-                    blend(frame, cur, passQueries(pass));
+                    blend(frame, cur, passCounts(pass));
                 },
-                [&](int pass) { return collect(passQueries(pass)); });
+                [&](int pass) { return collect(passCounts(pass)); });
             composite(frame);
         }
         loop.finish();
@@ -296,34 +297,26 @@ private:
         ++stats_.passes;
     }
 
-    // A pass's three queries: the front and back layers' fragments, and whether any pixel has
-    // fragments left strictly inside the next range. One set per pass: several may be in flight.
-    struct PassQueries {
-        gl::Query frontLayers, backLayers, interiorLeft;
-    };
-    const PassQueries& passQueries(int pass) {
-        while (passQueries_.size() <= std::size_t(pass))
-            passQueries_.push_back({gl::createQuery(GL_SAMPLES_PASSED), gl::createQuery(GL_SAMPLES_PASSED),
-                                    gl::createQuery(GL_ANY_SAMPLES_PASSED)});
-        return passQueries_[std::size_t(pass)];
+    // A pass's counts (dual_blend.frag.glsl): its front and back layers' fragments, and the
+    // pixels with fragments left strictly inside the next range. One buffer per pass: several
+    // may be in flight.
+    buffers::Counters& passCounts(int pass) {
+        while (passCounts_.size() <= std::size_t(pass)) passCounts_.emplace_back();
+        return passCounts_[std::size_t(pass)];
     }
 
-    // Blends the layers just peeled, counting their fragments and what is left strictly inside
-    // the next range (minMax_[cur]) into `queries`. Three full-screen draws under occlusion
-    // queries (dual_blend.frag.glsl): counting with atomics instead cost half of this pass on
-    // llvmpipe.
-    void blend(const FrameContext& frame, int cur, const PassQueries& queries) {
+    // Blends the layers just peeled and counts them and what is left strictly inside the next
+    // range (minMax_[cur]) into `counts`: one full-screen draw (dual_blend.frag.glsl). It was
+    // three, each under an occlusion query, at 0.3 ms a draw at 256x256 on llvmpipe; counting
+    // with an atomic per fragment had cost more, one per subgroup costs less.
+    void blend(const FrameContext& frame, int cur, buffers::Counters& counts) {
         gl::ScopedPass pass(frame.timer, "dual blend");
-        // No memory barrier: the peel rendered what this pass samples, which GL orders itself
-        // (barriers are for image and buffer stores; on llvmpipe one is a full finish).
-        // back_depth_test without atomic_range: step 2 writes the next peel's back depth.
+        // No memory barrier before it: the peel rendered what this pass samples, which GL orders
+        // itself (barriers are for image and buffer stores; on llvmpipe one is a full finish).
+        // back_depth_test without atomic_range: the blend writes the next peel's back depth at
+        // every pixel, 1 where nothing is left.
         const bool writesBackDepth = settings_.backDepthTest && !settings_.atomicRange;
         glNamedFramebufferTexture(blendFbo_.id(), GL_DEPTH_ATTACHMENT, writesBackDepth ? backDepth_.id() : 0, 0);
-        if (writesBackDepth) {
-            // A pixel with nothing left keeps 1 (dual_blend.frag.glsl, step 2).
-            const float nearPlane = 1.0f;
-            glClearTexImage(backDepth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, &nearPlane);
-        }
         glBindFramebuffer(GL_FRAMEBUFFER, blendFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
         glEnable(GL_BLEND);
@@ -337,6 +330,8 @@ private:
             glBindTextureUnit(gpu::BIND_PEEL_BACK_FILTER, backFilter_.id());
             glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, frontAccumFilter_.id());
             glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM, backAccum_.id());
+            // The draw reads the accumulation texels it writes (ARB_texture_barrier).
+            glTextureBarrier();
         } else {
             glBlendFuncSeparatei(0, GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);                  // under
             glBlendFuncSeparatei(1, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
@@ -344,46 +339,31 @@ private:
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, front_.id());
         glBindTextureUnit(gpu::BIND_PEEL_BACK, back_.id());
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[cur].id());
-        const GLuint program = programs_->blend.id();
-        const GLint step = glGetUniformLocation(program, "uStep");
-        auto drawStep = [&](int s, bool front, bool back, GLenum target, GLuint query) {
-            glColorMaski(0, front, front, front, front);
-            glColorMaski(1, back, back, back, back);
-            if (rgb()) {
-                glColorMaski(2, front, front, front, front);
-                glColorMaski(3, back, back, back, back);
-                // Steps 0 and 1 read the accumulation texels they write (ARB_texture_barrier).
-                glTextureBarrier();
-            }
-            glProgramUniform1i(program, step, s);
-            glBeginQuery(target, query);
-            if (s == 2 && writesBackDepth) {
-                drawFullscreenDepth(frame, program);  // GL_ALWAYS: the query counts as without it
-                glDisable(GL_DEPTH_TEST);
-            } else {
-                drawFullscreen(frame, program);
-            }
-            glEndQuery(target);
-        };
-        drawStep(0, true, false, GL_SAMPLES_PASSED, queries.frontLayers.id());
-        drawStep(1, false, true, GL_SAMPLES_PASSED, queries.backLayers.id());
-        drawStep(2, false, false, GL_ANY_SAMPLES_PASSED, queries.interiorLeft.id());
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        counts.reset();
+        counts.bind();
+        if (writesBackDepth) {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            glDepthMask(GL_TRUE);
+        } else {
+            glDisable(GL_DEPTH_TEST);
+        }
+        drawFullscreenAsSet(frame, programs_->blend.id());
+        glDepthMask(GL_FALSE);
+        glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
+        // collect() reads the counts with glGetNamedBufferSubData.
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         ++stats_.passes;
     }
 
     // What a pass's blend counted (waits for it).
-    static PeelStep collect(const PassQueries& queries) {
-        GLuint64 front = 0, back = 0;
-        GLuint left = 0;
-        glGetQueryObjectui64v(queries.frontLayers.id(), GL_QUERY_RESULT, &front);
-        glGetQueryObjectui64v(queries.backLayers.id(), GL_QUERY_RESULT, &back);
-        glGetQueryObjectuiv(queries.interiorLeft.id(), GL_QUERY_RESULT, &left);
+    static PeelStep collect(const buffers::Counters& counts) {
+        const auto c = counts.read();
+        const std::uint64_t taken = std::uint64_t(c[0]) + c[1];
         // A pass that captured nothing had an empty range everywhere, so nothing is left
-        // whatever the interior query says (PeelLoop's guard against a driver that skips the
-        // masked draw).
-        return PeelStep{front + back, front + back, 0, left != 0};
+        // whatever the interior count says (PeelLoop's guard).
+        return PeelStep{taken, taken, 0, c[2] != 0};
     }
 
     void composite(const FrameContext& frame) {
@@ -415,7 +395,7 @@ private:
     gl::Program backDepthProgram_;  // back_depth_test
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;                   // the total: the init's count, or atomic_range's count pass's
-    std::vector<PassQueries> passQueries_;  // each pass's, by pass
+    std::vector<buffers::Counters> passCounts_;  // each pass's blend's counts, by pass
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
     // The RGB build's: what the layers and the accumulations let through, per channel.

@@ -10,7 +10,7 @@
 // peel (`layer`, kept or not). It ends when an iteration takes nothing (a guard: a range with
 // fragments has a layer), when what was taken reaches what remained (nothing lies behind: D
 // layers cost exactly D iterations, no empty pass to find out), or when the iteration itself
-// knows nothing is left (`more`, e.g. dual's interior query). Coincident fragments a strict test
+// knows nothing is left (`more`, e.g. dual's interior count). Coincident fragments a strict test
 // never peels make `remaining` an overestimate; the loop then ends on the iteration that finds
 // nothing, as an exact count would have.
 #include "oit/technique.hpp"
