@@ -14,8 +14,9 @@
 // With back_depth_test (the default) a peel pass tests against the back of its range instead of
 // the opaque depth (which lies behind it), so the back layers peeled already are rejected
 // before they are shaded; the shader still decides every fragment near the back
-// (dual_back_depth.glsl). A full-screen pass writes it after the init; after a peel the blend
-// (or atomic_range's pack) writes it on the way.
+// (dual_back_depth.glsl). Each blend (or atomic_range's pack) writes it on the way. The first
+// peel tests against the opaque depth, as the init did: nothing lies behind the first range's
+// back, so a depth pass to test against it would reject nothing.
 // In a scene with coloured filters (oit/color_model.hpp) the layers carry their filters and both
 // accumulations what they let through per channel, in four more targets (dual_blend.frag.glsl).
 #include "oit/technique.hpp"
@@ -47,8 +48,6 @@ public:
         if (settings_.atomicRange) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         loop.setTotal(initialise(frame));
         if (loop.total() > 0) {
-            // atomic_range: the init's pack wrote it.
-            if (settings_.backDepthTest && !settings_.atomicRange) writeBackDepth(frame, 0);
             clearAccumulation(frontAccum_.id(), rgb() ? frontAccumFilter_.id() : 0);
             clearAccumulation(backAccum_.id(), rgb() ? backAccumFilter_.id() : 0);
             PeelLoopOptions options;
@@ -65,7 +64,8 @@ public:
                 options,
                 [&](int pass) {
                     const int cur = (pass + 1) % 2;
-                    peel(frame, cur);
+                    // The back depth is there after a blend, or after atomic_range's packs.
+                    peel(frame, cur, settings_.backDepthTest && (pass > 0 || settings_.atomicRange));
                     // The back depth for the next peel: the pack writes it, or else the blend.
                     if (settings_.atomicRange) packRange(frame, cur);
                     blend(frame, cur, passCounts(pass));
@@ -110,7 +110,6 @@ private:
         }
         if (initProgram_.program) return;
         initProgram_ = buildSceneProgram("oit/peeling/dual_init.frag.glsl");
-        backDepthProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/dual_back_depth.frag.glsl"});
         samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
@@ -166,8 +165,9 @@ private:
     }
 
     // The peel framebuffer is re-attached on every use: it shares the frame's opaque depth,
-    // whose texture the frame targets replace when the size changes.
-    void bindPeelTargets(const FrameContext& frame, int cur, bool withLayers) {
+    // whose texture the frame targets replace when the size changes. `backTest`: a peel tests
+    // against the back of its range, which lies in front of the opaque depth.
+    void bindPeelTargets(const FrameContext& frame, int cur, bool withLayers, bool backTest = false) {
         if (!peelFbo_) peelFbo_ = gl::Framebuffer::create();
         GLuint fbo = peelFbo_.id();
         // atomic_range: a peel pass leaves the range in images; packRange writes minMax_[cur].
@@ -178,9 +178,6 @@ private:
         const bool filters = withLayers && rgb();
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT3, filters ? frontFilter_.id() : 0, 0);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT4, filters ? backFilter_.id() : 0, 0);
-        // A peel tests against the back of its range (back_depth_test), which lies in front of
-        // the opaque depth; the init pass against the opaque depth.
-        const bool backTest = withLayers && settings_.backDepthTest;
         glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, backTest ? backDepth_.id() : frame.targets.depth(), 0);
         const GLenum five[5] = {rangeTarget ? GLenum(GL_COLOR_ATTACHMENT0) : GLenum(GL_NONE), GL_COLOR_ATTACHMENT1,
                                 GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
@@ -250,10 +247,10 @@ private:
     }
 
     // Peels the front and back layers using minMax_[1 - cur]; the next range goes to
-    // minMax_[cur].
-    void peel(const FrameContext& frame, int cur) {
+    // minMax_[cur]. `backTest`: against the back depth of minMax_[1 - cur] (back_depth_test).
+    void peel(const FrameContext& frame, int cur, bool backTest) {
         gl::ScopedPass pass(frame.timer, "dual peel");
-        bindPeelTargets(frame, cur, true);
+        bindPeelTargets(frame, cur, true, backTest);
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[1 - cur].id());
         if (settings_.atomicRange) bindRangeImages(cur);
         skipper_.draw(frame, settings_.atomicRange ? programs_->peelAtomic : programs_->peel, stats_);
@@ -279,20 +276,6 @@ private:
         glBindFramebuffer(GL_FRAMEBUFFER, packFbo_.id());
         bindRangeImages(cur);
         drawFullscreenDepth(frame, packProgram_.id());  // every texel, depth written whatever it held
-        glDisable(GL_DEPTH_TEST);
-        ++stats_.passes;
-    }
-
-    // back_depth_test: the back of the range in minMax_[cur] to the depth buffer the next peel
-    // tests. After the init; after a peel the pack or the blend writes it.
-    void writeBackDepth(const FrameContext& frame, int cur) {
-        gl::ScopedPass pass(frame.timer, "dual back depth");
-        if (!depthFbo_) depthFbo_ = gl::Framebuffer::create();
-        glNamedFramebufferTexture(depthFbo_.id(), GL_DEPTH_ATTACHMENT, backDepth_.id(), 0);
-        glNamedFramebufferDrawBuffer(depthFbo_.id(), GL_NONE);
-        glBindFramebuffer(GL_FRAMEBUFFER, depthFbo_.id());
-        glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[cur].id());
-        drawFullscreenDepth(frame, backDepthProgram_.id());
         glDisable(GL_DEPTH_TEST);
         ++stats_.passes;
     }
@@ -392,7 +375,6 @@ private:
     // atomic_range's: the range pack, the init by atomics and the count before it.
     gl::Program packProgram_;
     SceneProgram initAtomicProgram_, countProgram_;
-    gl::Program backDepthProgram_;  // back_depth_test
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;                   // the total: the init's count, or atomic_range's count pass's
     std::vector<buffers::Counters> passCounts_;  // each pass's blend's counts, by pass
@@ -403,7 +385,7 @@ private:
     // atomic_range: the next range's nearest and farthest depth bits, per side of the ping-pong.
     gl::Texture nextNearest_[2], nextFarthest_[2];
     gl::Texture backDepth_;  // back_depth_test: the back of the range the next peel tests against
-    gl::Framebuffer peelFbo_, blendFbo_, packFbo_, depthFbo_;
+    gl::Framebuffer peelFbo_, blendFbo_, packFbo_;
     ObjectSkipper skipper_;
 };
 
@@ -414,9 +396,8 @@ namespace strata {
 
 TechniqueEntry dualEntry() {
     TechniqueInfo info{"dual", "peeling", true, false,
-                       "2*ceil(D/2)+3 (init and its back depth + ceil(D/2) x (peel, blend) + composite); one fewer "
-                       "with back_depth_test off; with atomic_range 3*ceil(D/2)+4 (count, init, range packs after "
-                       "it and each peel)",
+                       "2*ceil(D/2)+2 (init + ceil(D/2) x (peel, blend) + composite); with atomic_range "
+                       "3*ceil(D/2)+4 (count, init, range packs after it and each peel)",
                        "w*h*52 B at precision=16: 2 RG32F min-max (8 each) + 2 layers + 2 accumulations RGBA16F "
                        "(8 each) + the back depth (4, none with back_depth_test off); w*h*84 B at 32 (RGBA32F, 16 "
                        "each); + four more RGBA targets in a scene with coloured filters, + 16 with atomic_range; "
