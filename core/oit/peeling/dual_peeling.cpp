@@ -22,7 +22,7 @@
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
-#include "oit/buffers/buffer_support.hpp"
+#include "gl/pass_counters.hpp"
 #include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/object_skipper.hpp"
@@ -281,9 +281,9 @@ private:
     }
 
     // A pass's counts (dual_blend.frag.glsl): its front and back layers' fragments, and the
-    // pixels with fragments left strictly inside the next range. One buffer per pass: several
-    // may be in flight.
-    buffers::Counters& passCounts(int pass) {
+    // pixels with fragments left strictly inside the next range. One buffer and fence per pass:
+    // several may be in flight, and reading one waits for its pass only (gl/pass_counters.hpp).
+    gl::PassCounters& passCounts(int pass) {
         while (passCounts_.size() <= std::size_t(pass)) passCounts_.emplace_back();
         return passCounts_[std::size_t(pass)];
     }
@@ -292,7 +292,7 @@ private:
     // range (minMax_[cur]) into `counts`: one full-screen draw (dual_blend.frag.glsl). It was
     // three, each under an occlusion query, at 0.3 ms a draw at 256x256 on llvmpipe; counting
     // with an atomic per fragment had cost more, one per subgroup costs less.
-    void blend(const FrameContext& frame, int cur, buffers::Counters& counts) {
+    void blend(const FrameContext& frame, int cur, gl::PassCounters& counts) {
         gl::ScopedPass pass(frame.timer, "dual blend");
         // No memory barrier before it: the peel rendered what this pass samples, which GL orders
         // itself (barriers are for image and buffer stores; on llvmpipe one is a full finish).
@@ -323,7 +323,7 @@ private:
         glBindTextureUnit(gpu::BIND_PEEL_BACK, back_.id());
         glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, minMax_[cur].id());
         counts.reset();
-        counts.bind();
+        counts.bind(gpu::BIND_COUNTERS);
         if (writesBackDepth) {
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_ALWAYS);
@@ -335,13 +335,12 @@ private:
         glDepthMask(GL_FALSE);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
-        // collect() reads the counts with glGetNamedBufferSubData.
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        counts.fence();
         ++stats_.passes;
     }
 
     // What a pass's blend counted (waits for it).
-    static PeelStep collect(const buffers::Counters& counts) {
+    static PeelStep collect(gl::PassCounters& counts) {
         const auto c = counts.read();
         const std::uint64_t taken = std::uint64_t(c[0]) + c[1];
         // A pass that captured nothing had an empty range everywhere, so nothing is left
@@ -377,7 +376,7 @@ private:
     SceneProgram initAtomicProgram_, countProgram_;
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;                   // the total: the init's count, or atomic_range's count pass's
-    std::vector<buffers::Counters> passCounts_;  // each pass's blend's counts, by pass
+    std::vector<gl::PassCounters> passCounts_;  // each pass's blend's counts, by pass
     glm::ivec2 size_{0, 0};
     gl::Texture minMax_[2], front_, back_, frontAccum_, backAccum_;
     // The RGB build's: what the layers and the accumulations let through, per channel.

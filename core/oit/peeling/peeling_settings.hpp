@@ -53,7 +53,7 @@ struct DualSettings : PeelingSettings {
                 &DualSettings::backDepthTest, "back_depth_test", SettingChange::Reallocate,
                 "reject the fragments behind the range (the back layers peeled already, and all at a "
                 "finished pixel) by the depth test, before they are shaded: the back of each range goes to "
-                "a depth buffer, written by the blend's last step (or atomic_range's pack)"));
+                "a depth buffer, written by the blend (or atomic_range's pack); the first peel tests the opaque depth"));
             return f;
         }()};
         return s;
