@@ -116,6 +116,13 @@ FrameResult FrameRenderer::render(const GpuScene& scene, const Camera& camera, g
         orderRunsNearestFirst(frame.transparentOrder, sameRun, nearest);
     }
     if (options.reverseSubmission) std::reverse(frame.transparentOrder.begin(), frame.transparentOrder.end());
+    // Where the transparent objects can draw: the full-screen passes that only act there scissor to it.
+    PixelRect area;
+    for (int o : frame.transparentOrder) {
+        area = area.unite(pixelsReached(frame.viewProjection, frame.boundsOf(o), size));
+        if (area.size == size) break;  // the whole frame
+    }
+    frame.transparentArea = area;
 
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.opaqueFramebuffer());

@@ -27,6 +27,17 @@ void drawFullscreenAsSet(const FrameContext& frame, GLuint program) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+TransparentAreaScissor::TransparentAreaScissor(const FrameContext& frame) : on_(frame.transparentArea.has_value()) {
+    if (!on_) return;
+    const PixelRect& area = *frame.transparentArea;
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
+}
+
+TransparentAreaScissor::~TransparentAreaScissor() {
+    if (on_) glDisable(GL_SCISSOR_TEST);
+}
+
 void drawFullscreen(const FrameContext& frame, GLuint program) {
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);

@@ -23,6 +23,21 @@ void drawFullscreenDepth(const FrameContext& frame, GLuint program);
 // A full-screen triangle under the depth and blend state the caller set (both above set theirs).
 void drawFullscreenAsSet(const FrameContext& frame, GLuint program);
 
+// Scissors the draws in its scope to the frame's transparent area (FrameContext::transparentArea),
+// for the full-screen passes that change nothing where no transparent fragment lies: a layer's
+// blend, a composite over the opaque colour the output already holds. On a view where the glass
+// covers a tenth of the screen they shade a tenth of the pixels. The scissor test is off after.
+class TransparentAreaScissor {
+public:
+    explicit TransparentAreaScissor(const FrameContext& frame);
+    ~TransparentAreaScissor();
+    TransparentAreaScissor(const TransparentAreaScissor&) = delete;
+    TransparentAreaScissor& operator=(const TransparentAreaScissor&) = delete;
+
+private:
+    bool on_ = false;
+};
+
 // Sets the uniforms of shaders/oit/ordered_composite.glsl (the tie rule of
 // render/depth_order.hpp) on a resolve program: the camera's n / (f - n) and the scene's
 // relative tie tolerance.

@@ -7,6 +7,7 @@
 #include "gl/gpu_timer.hpp"
 #include "render/frame_targets.hpp"
 #include "render/gpu_scene.hpp"
+#include "render/screen_rect.hpp"
 #include "oit/settings.hpp"
 
 #include <glm/glm.hpp>
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +72,10 @@ struct FrameContext {
     // What draws in each object's place this frame (render/stand_in.hpp); null: every object
     // draws its own triangles.
     const StandIns* standIns = nullptr;
+    // Every pixel a transparent object can draw to this frame (the union of their bounding
+    // spheres on screen; FrameRenderer sets it). A full-screen pass that changes nothing where no
+    // transparent fragment lies is scissored to it (TransparentAreaScissor). Unset: the whole frame.
+    std::optional<PixelRect> transparentArea;
 
     // What draws in `object`'s place this frame, or null (its own triangles).
     const StandInDraw* standInOf(int object) const { return standIns ? (*standIns)[std::size_t(object)] : nullptr; }

@@ -76,6 +76,7 @@ public:
             gl::ScopedPass pass(frame.timer, "wboit composite");
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
             glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+            TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
             drawFullscreen(frame, compositeProgram_.id());
         }
         stats_.passes = 2;

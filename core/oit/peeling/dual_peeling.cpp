@@ -331,7 +331,12 @@ private:
         } else {
             glDisable(GL_DEPTH_TEST);
         }
-        drawFullscreenAsSet(frame, programs_->blend.id());
+        {
+            // Where nothing transparent lies nothing is blended or counted, and no peel tests
+            // the back depth there.
+            TransparentAreaScissor scissor(frame);
+            drawFullscreenAsSet(frame, programs_->blend.id());
+        }
         glDepthMask(GL_FALSE);
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_BLEND);
@@ -360,6 +365,7 @@ private:
             glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, frontAccumFilter_.id());
             glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM_FILTER, backAccumFilter_.id());
         }
+        TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
         drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }

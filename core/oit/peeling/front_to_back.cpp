@@ -211,7 +211,10 @@ private:
         if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_LAYER_FILTER, layerFilter_.id());
         underBlending();
         glBeginQuery(GL_SAMPLES_PASSED, samples.id());
-        drawFullscreen(frame, programs_->blend.id());
+        {
+            TransparentAreaScissor scissor(frame);  // no layer lies outside it
+            drawFullscreen(frame, programs_->blend.id());
+        }
         glEndQuery(GL_SAMPLES_PASSED);
         if (rgb()) glTextureBarrier();
         glDisable(GL_BLEND);
@@ -244,6 +247,7 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
         if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumFilter_.id());
+        TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
         drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }

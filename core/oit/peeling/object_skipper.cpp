@@ -1,6 +1,7 @@
 #include "oit/peeling/object_skipper.hpp"
 
 #include "oit/peeling/peel_bindings.h"
+#include "render/screen_rect.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -52,44 +53,17 @@ void ObjectSkipper::ensureReducedTarget(glm::ivec2 size) {
 }
 
 ObjectSkipper::ScreenBox ObjectSkipper::screenBox(const FrameContext& frame, const Bounds& b) const {
-    // Inflated so that round-off between this projection and the rasterized geometry (a flat
-    // quad has a flat box) never puts the geometry outside the box's depth range or rectangle.
-    glm::vec3 extent = b.max - b.min;
-    float pad = 1e-4f * glm::length(extent) + 1e-6f * (1.0f + glm::length(b.center()));
-    glm::vec3 lo = b.min - pad, hi = b.max + pad;
+    const ScreenProjection p = projectBox(frame.viewProjection, b);
     ScreenBox box;
-    glm::vec2 pmin(1e30f), pmax(-1e30f);
-    float dmin = 1e30f, dmax = -1e30f;
-    bool behindEye = false;
-    for (int i = 0; i < 8; ++i) {
-        glm::vec3 corner((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
-        glm::vec4 clip = frame.viewProjection * glm::vec4(corner, 1.0f);
-        if (!(clip.w > 1e-6f)) {
-            behindEye = true;
-            continue;
-        }
-        glm::vec3 ndc = glm::vec3(clip) / clip.w;
-        pmin = glm::min(pmin, glm::vec2(ndc));
-        pmax = glm::max(pmax, glm::vec2(ndc));
-        dmin = std::min(dmin, ndc.z);
-        dmax = std::max(dmax, ndc.z);
-    }
-    // Geometry is clipped to the near and far planes: its depths lie in [0, 1] (reversed-Z:
-    // 1 near). A box reaching behind the eye projects without bound: then the whole screen and
-    // the whole depth range, which never culls.
-    if (behindEye) {
-        box.rect = glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f);
-        box.farDepth = 0.0f;
-        box.nearDepth = 1.0f;
-        return box;
-    }
-    box.farDepth = std::clamp(dmin, 0.0f, 1.0f);
-    box.nearDepth = std::clamp(dmax, 0.0f, 1.0f);
+    // A box reaching behind the eye: the whole screen and the whole depth range, which never culls.
+    if (p.behindEye) return box;
+    box.farDepth = p.farDepth;
+    box.nearDepth = p.nearDepth;
     // Whole reduced pixels covering the rectangle, with one more on each side for round-off.
     const glm::vec2 reduced(reducedSize_);
     const glm::vec2 full(frame.size);
-    glm::vec2 t0 = glm::floor((pmin * 0.5f + 0.5f) * full / float(kBlock)) - 1.0f;
-    glm::vec2 t1 = glm::ceil((pmax * 0.5f + 0.5f) * full / float(kBlock)) + 1.0f;
+    glm::vec2 t0 = glm::floor((p.ndcMin * 0.5f + 0.5f) * full / float(kBlock)) - 1.0f;
+    glm::vec2 t1 = glm::ceil((p.ndcMax * 0.5f + 0.5f) * full / float(kBlock)) + 1.0f;
     t0 = glm::clamp(t0, glm::vec2(0.0f), reduced);
     t1 = glm::clamp(t1, glm::vec2(0.0f), reduced);
     box.rect = glm::vec4(t0 / reduced * 2.0f - 1.0f, t1 / reduced * 2.0f - 1.0f);

@@ -60,8 +60,8 @@ private:
         GLuint query;
     };
 
-    // An object's inflated bounding box on screen: its rectangle in NDC, snapped outwards to
-    // whole reduced pixels, and its window depth range (reversed-Z) clipped to [0, 1].
+    // An object's inflated bounding box on screen (render/screen_rect.hpp): its rectangle in NDC,
+    // snapped outwards to whole reduced pixels, and its window depth range (reversed-Z).
     struct ScreenBox {
         glm::vec4 rect{-1.0f, -1.0f, 1.0f, 1.0f};
         float farDepth = 0.0f, nearDepth = 1.0f;

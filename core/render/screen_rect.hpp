@@ -1,0 +1,37 @@
+#pragma once
+// Where world-space bounds land on screen: the normalized-device rectangle and depth range of a
+// box's eight corners under a view-projection (GL clip space, glClipControl ZERO_TO_ONE,
+// reversed-Z), and the pixel rectangle that holds it. Conservative: the box is inflated beyond
+// the round-off between this projection and the rasterized geometry, and a box reaching behind
+// the eye covers the whole screen and depth range (it projects without bound).
+#include "scene/scene.hpp"
+
+#include <glm/glm.hpp>
+
+namespace strata {
+
+struct ScreenProjection {
+    glm::vec2 ndcMin{-1.0f}, ndcMax{1.0f};
+    float farDepth = 0.0f, nearDepth = 1.0f;  // window depth, reversed-Z, within [0, 1]
+    bool behindEye = false;                    // the whole screen and depth range
+};
+
+ScreenProjection projectBox(const glm::mat4& viewProjection, const Bounds& box);
+
+// A rectangle of whole pixels: origin (lower left) and size; `size` 0 holds nothing.
+struct PixelRect {
+    glm::ivec2 origin{0, 0}, size{0, 0};
+    bool empty() const { return size.x <= 0 || size.y <= 0; }
+    PixelRect unite(const PixelRect& other) const;
+};
+
+// The pixels of a frame of `frameSize` that a projection covers, with one more on each side
+// for round-off, clipped to the frame.
+PixelRect pixelRect(const ScreenProjection& p, glm::ivec2 frameSize);
+
+// Every pixel an object with these world bounds can draw to: the pixel rectangle of the cube
+// around its bounding sphere (centre, half diagonal). The sphere, as for culling
+// (render/frustum.hpp): a stand-in's slice quads reach past its box within that sphere.
+PixelRect pixelsReached(const glm::mat4& viewProjection, const Bounds& bounds, glm::ivec2 frameSize);
+
+}  // namespace strata
