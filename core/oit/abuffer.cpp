@@ -88,14 +88,23 @@ private:
         gl::ScopedPass pass(frame.timer, info_.id + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER,
                           walk_ ? volume_->colorFramebuffer(frame) : frame.targets.outputFramebuffer());
+        const PixelRect area = resolveArea(frame, tile);
         glEnable(GL_SCISSOR_TEST);
-        glScissor(tile.origin.x, tile.origin.y, tile.size.x, tile.size.y);
+        glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         const GLuint program = programs()->resolve.id();
         setDepthOrderUniforms(frame, program);
         if (walk_) volume_->bind(frame, program);
         drawFullscreen(frame, program);
+    }
+
+    // The pixels of `tile` a resolve writes: those where transparent objects can lie (the output
+    // holds the opaque colour elsewhere), or the whole tile for abuffer-volume's walk, which
+    // writes a target of its own.
+    PixelRect resolveArea(const FrameContext& frame, const FragmentLists::Tile& tile) const {
+        const PixelRect whole{tile.origin, tile.size};
+        return walk_ || !frame.transparentArea ? whole : whole.intersect(*frame.transparentArea);
     }
 
     void resolveCompute(const FrameContext& frame, const FragmentLists::Tile& tile) {
@@ -106,11 +115,12 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         setDepthOrderUniforms(frame, program);
         if (walk_) volume_->bind(frame, program);
-        glProgramUniform4i(program, glGetUniformLocation(program, "uTile"), tile.origin.x, tile.origin.y, tile.size.x,
-                           tile.size.y);
+        const PixelRect area = resolveArea(frame, tile);
+        glProgramUniform4i(program, glGetUniformLocation(program, "uTile"), area.origin.x, area.origin.y, area.size.x,
+                           area.size.y);
         glUseProgram(program);
         constexpr int group = int(gpu::RESOLVE_GROUP_SIZE);
-        glDispatchCompute(GLuint((tile.size.x + group - 1) / group), GLuint((tile.size.y + group - 1) / group), 1);
+        glDispatchCompute(GLuint((area.size.x + group - 1) / group), GLuint((area.size.y + group - 1) / group), 1);
         // The output is read next as a texture or framebuffer attachment (blit, read-back).
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

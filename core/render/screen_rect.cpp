@@ -44,6 +44,13 @@ PixelRect PixelRect::unite(const PixelRect& other) const {
     return PixelRect{lo, hi - lo};
 }
 
+PixelRect PixelRect::intersect(const PixelRect& other) const {
+    const glm::ivec2 lo = glm::max(origin, other.origin);
+    const glm::ivec2 hi = glm::min(origin + size, other.origin + other.size);
+    if (hi.x <= lo.x || hi.y <= lo.y) return PixelRect{};
+    return PixelRect{lo, hi - lo};
+}
+
 PixelRect pixelRect(const ScreenProjection& p, glm::ivec2 frameSize) {
     const glm::vec2 full(frameSize);
     // The default projection (behind the eye) is [-1, 1]: the whole frame, margin clipped.

@@ -23,6 +23,7 @@ struct PixelRect {
     glm::ivec2 origin{0, 0}, size{0, 0};
     bool empty() const { return size.x <= 0 || size.y <= 0; }
     PixelRect unite(const PixelRect& other) const;
+    PixelRect intersect(const PixelRect& other) const;  // empty where they do not overlap
 };
 
 // The pixels of a frame of `frameSize` that a projection covers, with one more on each side

@@ -74,7 +74,12 @@ void BoundedBufferFrame::renderFrame(const FrameContext& frame, const std::strin
         setUniforms(program, frame, bounds.capacity);
         glProgramUniform1i(program, glGetUniformLocation(program, "uTail"), bounds.tail);
         setDepthOrderUniforms(frame, program);
-        glBindFramebuffer(GL_FRAMEBUFFER, prepareResolve(frame, program));
+        const GLuint target = prepareResolve(frame, program);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        // Into the output, which holds the opaque colour where nothing transparent lies: only
+        // where it can (a volume walk writes a target of its own, whole).
+        std::optional<TransparentAreaScissor> scissor;
+        if (target == frame.targets.outputFramebuffer()) scissor.emplace(frame);
         drawFullscreen(frame, program);
         ++stats.passes;
     }
