@@ -179,6 +179,7 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_LAYER, bucketDepths_.id());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, colors_.id());
+        TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
         drawFullscreen(frame, p);
         ++stats_.passes;
     }

@@ -295,6 +295,7 @@ private:
             glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, side_[0].accumPasses.id());
             glBindTextureUnit(gpu::BIND_PEEL_BACK_ACCUM_FILTER, side_[1].accumPasses.id());
         }
+        TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
         drawFullscreen(frame, programs_->composite.id());
         ++stats_.passes;
     }

@@ -177,6 +177,7 @@ private:
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         bindAccumulations();
+        TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
         drawFullscreen(frame, programs_->composite.id());
         ++stats.passes;
     }

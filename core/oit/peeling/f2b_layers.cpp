@@ -242,6 +242,7 @@ private:
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
         if (rgb()) glBindTextureUnit(gpu::BIND_PEEL_ACCUM_FILTER, accumPasses_.id());
+        TransparentAreaScissor scissor(frame);  // the output holds the opaque colour elsewhere
         drawFullscreen(frame, programs_->composite.id());
         ++stats.passes;
     }
