@@ -230,6 +230,7 @@ private:
         bindTextures();
         const GLuint program = programs_->check.id();
         Checked c;
+        TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         for (int side = 0; side < 2; ++side) {
             for (int minCount : {2, 1}) {
                 // Two or more: zero this side's two colour targets (and opacity targets) there.
@@ -274,6 +275,7 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
         bindTextures();
+        TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         // Each draw reads its own texel of its attachments; the RGB build's back draw, the
         // state its front draw wrote.
         for (int draw = 0; draw < (rgb() ? 2 : 1); ++draw) {

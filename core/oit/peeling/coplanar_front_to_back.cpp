@@ -279,6 +279,7 @@ private:
         glViewport(0, 0, frame.size.x, frame.size.y);
         bindTextures(frame);
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         drawFullscreen(frame, programs_->check.id());
         glEndQuery(GL_SAMPLES_PASSED);
         ++stats_.passes;
@@ -314,6 +315,7 @@ private:
         bindTextures(frame);
         glTextureBarrier();  // it reads its own texel of three (rgb: five) of its attachments
         glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
+        TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         drawFullscreen(frame, programs_->resolve.id());
         glEndQuery(GL_SAMPLES_PASSED);
         ++stats_.passes;

@@ -165,6 +165,7 @@ private:
             glBlendFuncSeparatei(1, GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // over
         }
         storage_.bindForResolve(programs_->resolve.id());
+        TransparentAreaScissor scissor(frame);  // nothing was stored outside it: a no-op there
         drawFullscreen(frame, programs_->resolve.id());
         glDisable(GL_BLEND);
         ++stats.passes;

@@ -226,6 +226,7 @@ private:
         glProgramUniform1i(program, glGetUniformLocation(program, "uAnyStored"), anyStored);
         glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[set].id());
         glBeginQuery(GL_SAMPLES_PASSED, anchors_.id());
+        TransparentAreaScissor scissor(frame);  // nothing was stored outside it: a no-op there
         drawFullscreen(frame, program);
         glEndQuery(GL_SAMPLES_PASSED);
         glDisable(GL_BLEND);
