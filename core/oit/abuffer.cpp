@@ -88,14 +88,14 @@ private:
         gl::ScopedPass pass(frame.timer, info_.id + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER,
                           walk_ ? volume_->colorFramebuffer(frame) : frame.targets.outputFramebuffer());
-        const PixelRect area = resolveArea(frame, tile);
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
         const GLuint program = programs()->resolve.id();
         setDepthOrderUniforms(frame, program);
         if (walk_) volume_->bind(frame, program);
+        glEnable(GL_SCISSOR_TEST);
+        const PixelRect area = resolveArea(frame, tile);
+        glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
         drawFullscreen(frame, program);
     }
 
@@ -104,7 +104,7 @@ private:
     // writes a target of its own.
     PixelRect resolveArea(const FrameContext& frame, const FragmentLists::Tile& tile) const {
         const PixelRect whole{tile.origin, tile.size};
-        return walk_ || !frame.transparentArea ? whole : whole.intersect(*frame.transparentArea);
+        return walk_ ? whole : transparentAreaWithin(frame, whole);
     }
 
     void resolveCompute(const FrameContext& frame, const FragmentLists::Tile& tile) {

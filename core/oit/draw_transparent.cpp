@@ -27,9 +27,14 @@ void drawFullscreenAsSet(const FrameContext& frame, GLuint program) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-TransparentAreaScissor::TransparentAreaScissor(const FrameContext& frame) : on_(frame.transparentArea.has_value()) {
+PixelRect transparentAreaWithin(const FrameContext& frame, const PixelRect& within) {
+    return frame.transparentArea ? within.intersect(*frame.transparentArea) : within;
+}
+
+TransparentAreaScissor::TransparentAreaScissor(const FrameContext& frame, std::optional<PixelRect> within)
+    : on_(frame.transparentArea.has_value() || within.has_value()) {
     if (!on_) return;
-    const PixelRect& area = *frame.transparentArea;
+    const PixelRect area = within ? transparentAreaWithin(frame, *within) : *frame.transparentArea;
     glEnable(GL_SCISSOR_TEST);
     glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
 }

@@ -5,6 +5,7 @@
 #include "oit/technique.hpp"
 #include "render/scene_program.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace strata {
@@ -23,13 +24,18 @@ void drawFullscreenDepth(const FrameContext& frame, GLuint program);
 // A full-screen triangle under the depth and blend state the caller set (both above set theirs).
 void drawFullscreenAsSet(const FrameContext& frame, GLuint program);
 
-// Scissors the draws in its scope to the frame's transparent area (FrameContext::transparentArea),
-// for the full-screen passes that change nothing where no transparent fragment lies: a layer's
-// blend, a composite over the opaque colour the output already holds. On a view where the glass
-// covers a tenth of the screen they shade a tenth of the pixels. The scissor test is off after.
+// The frame's transparent area (FrameContext::transparentArea) within `within` (a screen tile or
+// band); `within` itself where the area is unset.
+PixelRect transparentAreaWithin(const FrameContext& frame, const PixelRect& within);
+
+// Scissors the draws in its scope to the frame's transparent area, within a tile or band when
+// given, for the full-screen passes that change nothing where no transparent fragment lies: a
+// layer's blend, a composite over the opaque colour the output already holds, a resolve. On a
+// view where the glass covers a tenth of the screen they shade a tenth of the pixels. The
+// scissor test is off after.
 class TransparentAreaScissor {
 public:
-    explicit TransparentAreaScissor(const FrameContext& frame);
+    explicit TransparentAreaScissor(const FrameContext& frame, std::optional<PixelRect> within = std::nullopt);
     ~TransparentAreaScissor();
     TransparentAreaScissor(const TransparentAreaScissor&) = delete;
     TransparentAreaScissor& operator=(const TransparentAreaScissor&) = delete;

@@ -122,10 +122,7 @@ public:
                 setDepthOrderUniforms(frame, resolve);
                 // The band's pixels where transparent objects can lie: the output holds the opaque
                 // colour elsewhere (the next band's store sets its own scissor).
-                PixelRect area{{0, band.y0}, {frame.size.x, band.y1 - band.y0}};
-                if (frame.transparentArea) area = area.intersect(*frame.transparentArea);
-                glEnable(GL_SCISSOR_TEST);
-                glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
+                TransparentAreaScissor scissor(frame, PixelRect{{0, band.y0}, {frame.size.x, band.y1 - band.y0}});
                 drawFullscreen(frame, resolve);
                 ++stats_.passes;
             }

@@ -87,14 +87,11 @@ private:
     void composite(const FrameContext& frame, const FragmentLists::Tile& tile) {
         gl::ScopedPass pass(frame.timer, info_.id + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
-        // The tile's pixels where transparent objects can lie: the output holds the opaque colour
-        // elsewhere.
-        PixelRect area{tile.origin, tile.size};
-        if (frame.transparentArea) area = area.intersect(*frame.transparentArea);
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(area.origin.x, area.origin.y, area.size.x, area.size.y);
         glDisable(GL_BLEND);
         glBindTextureUnit(gpu::BIND_OPAQUE_COLOR, frame.targets.opaqueColor());
+        // The tile's pixels where transparent objects can lie: the output holds the opaque colour
+        // elsewhere.
+        TransparentAreaScissor scissor(frame, PixelRect{tile.origin, tile.size});
         drawFullscreen(frame, programs_->resolve.id());
     }
 

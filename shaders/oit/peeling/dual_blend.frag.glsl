@@ -10,7 +10,8 @@
 // A pixel without a front (back) layer writes the blend's neutral value, so every pixel runs
 // once and none is discarded. With back_depth_test (and no atomic_range, whose pack does it) the
 // host attaches the next peel's depth buffer with the depth test GL_ALWAYS and writes on: every
-// pixel writes the back of its next range, or 1 (the near plane) where the range is empty, so
+// pixel of the transparent area (the host's scissor; no peel draws outside it) writes the back
+// of its next range, or 1 (the near plane) where the range is empty, so
 // the next peel shades nothing there (dual_back_depth.glsl): most of what the test saves on a
 // mesh, whose pixels finish at different passes.
 // STRATA_RGB_TRANSMITTANCE (coloured filters): the layers hold premultiplied colours and their
