@@ -30,7 +30,7 @@ Image filled(int w, int h, glm::vec4 c) {
 
 }  // namespace
 
-TEST_CASE("error map: a technique against itself is exactly 0, on one texture and on two renders") {
+TEST_CASE("error map: a technique against itself is exactly 0 on one texture, within round-off on two renders") {
     test::Fixture f(makeBuiltinScene("cubes"));
     const glm::ivec2 size{48, 36};
     FrameRenderer a, b;
@@ -38,14 +38,22 @@ TEST_CASE("error map: a technique against itself is exactly 0, on one texture an
     a.render(*f.gpu, f.camera, size, ta.get());
     b.render(*f.gpu, f.camera, size, tb.get());
     ErrorMap map;
-    for (GLuint other : {a.targets().outputColor(), b.targets().outputColor()}) {
-        const ErrorMapStats s = map.compare(a.targets().outputColor(), other, size);
-        gl::checkGl("error map");
-        CHECK(s.rmse == 0.0);
-        CHECK(s.maxAbsError == 0.0);
-        CHECK(s.psnr == 100.0);
-        CHECK(s.pixels == std::size_t(48 * 36));
-    }
+    // Two renders: on a GPU the lists arrive in another order, and a list that arrives in depth
+    // order is composited front to back where a sorted one is composited back to front
+    // (ordered_composite.glsl), so a pixel may differ in its last bit. On an H200 the two
+    // differed by 5.96e-8 (one ulp below 1).
+    const ErrorMapStats two = map.compare(a.targets().outputColor(), b.targets().outputColor(), size);
+    gl::checkGl("error map");
+    CHECK(two.maxAbsError <= 1e-6);
+    CHECK(two.psnr >= 100.0 - 1e-9);  // PSNR is capped at 100 dB: 1e-6 is far above the cap
+    CHECK(two.pixels == std::size_t(48 * 36));
+    // One texture against itself: exactly 0, whatever the arithmetic.
+    const ErrorMapStats self = map.compare(a.targets().outputColor(), a.targets().outputColor(), size);
+    gl::checkGl("error map");
+    CHECK(self.rmse == 0.0);
+    CHECK(self.maxAbsError == 0.0);
+    CHECK(self.psnr == 100.0);
+    CHECK(self.pixels == std::size_t(48 * 36));
     // Where nothing differs the view is a dark grey (the reference's luminance, dimmed).
     const Image shown = readRgbaTexture(map.falseColor(), size);
     for (int y = 0; y < size.y; ++y)

@@ -16,14 +16,16 @@ PassCounters::~PassCounters() {
 }
 
 PassCounters::PassCounters(PassCounters&& other) noexcept
-    : buffer_(std::move(other.buffer_)),
+    : counters_(std::move(other.counters_)),
+      readback_(std::move(other.readback_)),
       mapped_(std::exchange(other.mapped_, nullptr)),
       fence_(std::exchange(other.fence_, nullptr)) {}
 
 PassCounters& PassCounters::operator=(PassCounters&& other) noexcept {
     if (this != &other) {
         if (fence_) glDeleteSync(fence_);
-        buffer_ = std::move(other.buffer_);
+        counters_ = std::move(other.counters_);
+        readback_ = std::move(other.readback_);
         mapped_ = std::exchange(other.mapped_, nullptr);
         fence_ = std::exchange(other.fence_, nullptr);
     }
@@ -31,25 +33,30 @@ PassCounters& PassCounters::operator=(PassCounters&& other) noexcept {
 }
 
 void PassCounters::reset() {
-    if (!buffer_) {
-        buffer_ = Buffer::create();
+    if (!counters_) {
+        // No mapping flags: the driver keeps it in GPU memory, where the atomics run.
+        counters_ = Buffer::create();
+        glNamedBufferStorage(counters_.id(), kBytes, nullptr, 0);
+        readback_ = Buffer::create();
         const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-        glNamedBufferStorage(buffer_.id(), kBytes, nullptr, flags);
-        mapped_ = static_cast<const volatile std::uint32_t*>(glMapNamedBufferRange(buffer_.id(), 0, kBytes, flags));
+        glNamedBufferStorage(readback_.id(), kBytes, nullptr, flags);
+        mapped_ = static_cast<const volatile std::uint32_t*>(glMapNamedBufferRange(readback_.id(), 0, kBytes, flags));
         if (!mapped_) throw std::runtime_error("could not map a pass's counter buffer");
     }
     if (fence_) {
         glDeleteSync(fence_);
         fence_ = nullptr;
     }
-    glClearNamedBufferSubData(buffer_.id(), GL_R32UI, 0, kBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+    glClearNamedBufferSubData(counters_.id(), GL_R32UI, 0, kBytes, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
 }
 
-void PassCounters::bind(GLuint binding) const { glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, binding, buffer_.id()); }
+void PassCounters::bind(GLuint binding) const { glBindBufferBase(GL_ATOMIC_COUNTER_BUFFER, binding, counters_.id()); }
 
 void PassCounters::fence() {
-    // Shader atomics are incoherent writes: the barrier makes them visible through the mapping.
-    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    // Shader atomics are incoherent writes: the barrier makes them visible to the copy. The
+    // copy's own writes reach the coherent mapping once the fence has signalled.
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glCopyNamedBufferSubData(counters_.id(), readback_.id(), 0, 0, kBytes);
     if (fence_) glDeleteSync(fence_);
     fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
