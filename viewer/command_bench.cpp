@@ -14,6 +14,7 @@
 #include "lod_options.hpp"
 #include "zoom_options.hpp"
 #include "settings_options.hpp"
+#include "oit/device_defaults.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -77,6 +78,11 @@ void run(const BenchArgs& a) {
     checkFrameSize(options.size);
     if (options.referenceSupersample > 1) checkFrameSize(options.size * options.referenceSupersample);
     GpuScene gpu(std::move(scene));
+    if (!autoMode) {
+        // Again, now that the device is known: its defaults first, the options over them.
+        const std::vector<std::string> ids = benchModeIds(options.modes);
+        options.settings = resolveSettingsForDevice(ids, settingsAssignments(a.settings), gl::currentDeviceInfo());
+    }
     if (autoMode) {
         // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
         // measured on this device at this size, two frames a configuration, then benched.

@@ -15,6 +15,7 @@
 #include "zoom_options.hpp"
 #include "frame/frame_renderer.hpp"
 #include "settings_options.hpp"
+#include "oit/device_defaults.hpp"
 
 #include <cstdio>
 #include <optional>
@@ -41,7 +42,7 @@ void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
     const int zoom = a.zoom.fixedZoom();
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
-    const SettingsById settings = resolveSettingsArgs({a.mode}, a.settings);
+    resolveSettingsArgs({a.mode}, a.settings);  // a bad --set fails before the scene loads
     const lod::LodOptions lodOptions = a.lod.options();
     // Images are written after the frame: refuse an unwritable destination before rendering.
     checkImageWritable(a.out);
@@ -54,6 +55,7 @@ void run(const RenderArgs& a) {
     gl::HeadlessContext context;
     checkFrameSize(size);  // before the scene is uploaded or a target allocated
     GpuScene gpu(std::move(scene));
+    const SettingsById settings = resolveSettingsForDevice({a.mode}, settingsAssignments(a.settings), gl::currentDeviceInfo());
     auto technique = createConfiguredTechnique(a.mode, settings);
     Camera camera = defaultCamera(gpu.scene(), gpu.objects());
     if (!a.cameraPath.empty()) {

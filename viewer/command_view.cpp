@@ -105,7 +105,8 @@ void registerViewCommand(CLI::App& app) {
         if (!findTechnique(options->splitWith)) createTechnique(options->splitWith);
         if (!inspect->empty()) options->inspect = parseInspectPixel(*inspect, s);
         // Against every technique: the panel can switch to any of them.
-        options->settings = resolveSettingsArgs(allTechniqueIds(), *settings);
+        resolveSettingsArgs(allTechniqueIds(), *settings);  // a bad --set fails before a window opens
+        options->settingAssignments = settingsAssignments(*settings);
         options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
         options->lod.options();     // and a bad impostor setting
@@ -117,7 +118,9 @@ void registerViewCommand(CLI::App& app) {
             options->mode = pick.id;
             std::vector<SettingAssignment> chosen;
             for (const std::string& a : pick.assignments) chosen.push_back({pick.id + "." + a, "--mode auto"});
-            options->settings = resolveSettingsArgs(allTechniqueIds(), *settings, chosen);
+            // As measured: no device default on top of the advisor's pick.
+            options->settingAssignments = chosen;
+            options->deviceDefaults = false;
         }
         options->width = s.x;
         options->height = s.y;

@@ -136,7 +136,7 @@ public:
         device_ = gl::currentDeviceInfo();
         base_ = defaultCamera(scene_.scene(), scene_.objects());
         firstPosition_ = toGlm(tracking_.firstSample().p);
-        technique_ = createConfiguredTechnique(options.mode, options.settings);
+        technique_ = createConfiguredTechnique(options.mode, viewSettings(options, device_));
         predictorNames_ = tracking::predictorNames();
         for (auto d : kDeflects) deflectionNames_.emplace_back(tracking::deflectName(d));
         choices_.predictor = indexOf(predictorNames_, options.predictor, "predictor");

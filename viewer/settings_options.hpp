@@ -17,8 +17,13 @@ struct SettingsArgs {
 
 void addSettingsOptions(CLI::App* command, SettingsArgs& args);
 
+// The options' assignments in the order they apply: the preset's, --set's, then `extra`. Throws
+// std::invalid_argument (one line) when the preset cannot be read.
+std::vector<SettingAssignment> settingsAssignments(const SettingsArgs& args, const std::vector<SettingAssignment>& extra = {});
+
 // Resolves the options against the techniques `ids`, then `extra` (which override them);
-// throws std::invalid_argument (one line).
+// throws std::invalid_argument (one line). Without a context: the device's defaults
+// (oit/device_defaults.hpp) are applied once one exists.
 SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const SettingsArgs& args,
                                  const std::vector<SettingAssignment>& extra = {});
 

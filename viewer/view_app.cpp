@@ -11,12 +11,14 @@
 #include "immersive.hpp"
 #include "open_scene.hpp"
 #include "panel.hpp"
+#include "settings_options.hpp"
 #include "split_view.hpp"
 #include "window_capture.hpp"
 #include "window_loop.hpp"
 
 #include "camera/camera_path.hpp"
 #include "gl/context.hpp"
+#include "oit/device_defaults.hpp"
 #include "render/texture_readback.hpp"
 #include "frame/frame_renderer.hpp"
 #include "scene/scene_source.hpp"
@@ -55,7 +57,7 @@ public:
           controls_(defaultCamera(scene_.scene(), scene_.objects()), scene_.bounds()) {
         device_ = gl::currentDeviceInfo();
         techniqueId_ = options.mode;
-        techniqueSettings_ = options.settings;
+        techniqueSettings_ = viewSettings(options, device_);
         technique_ = createConfiguredTechnique(techniqueId_, techniqueSettings_);
         settings_.technique = technique_->settings();
         settings_.view = options.view;
@@ -444,6 +446,11 @@ WindowModeFactory walkthroughMode(const ViewOptions& options, Scene scene) {
 }
 
 }  // namespace
+
+SettingsById viewSettings(const ViewOptions& options, const gl::DeviceInfo& device) {
+    return options.deviceDefaults ? resolveSettingsForDevice(allTechniqueIds(), options.settingAssignments, device)
+                                  : resolveSettings(allTechniqueIds(), options.settingAssignments);
+}
 
 int runViewer(const ViewOptions& options) {
     if (options.trace && !options.immersive) throw std::runtime_error("view: --trace is only used with --immersive");

@@ -5,6 +5,7 @@
 #include "lod_options.hpp"
 #include "zoom_options.hpp"
 
+#include "gl/context.hpp"
 #include "oit/technique_settings.hpp"
 
 #include <glm/glm.hpp>
@@ -23,7 +24,11 @@ struct ViewOptions {
     std::string splitWith = "f2b";                       // --split-with: B of the split view
     float splitAt = 0.5f;                                // --split-at: the divider, 0..1 of the width
     std::optional<glm::ivec2> inspect;                   // --inspect X,Y: window pixel, from the top-left
-    SettingsById settings;                               // every technique's, resolved from --set/--settings
+    // --settings and --set (or --mode auto's pick), resolved against every technique once the
+    // window's context shows the device: its defaults first (oit/device_defaults.hpp) unless
+    // deviceDefaults is off.
+    std::vector<SettingAssignment> settingAssignments;
+    bool deviceDefaults = true;
     std::optional<std::filesystem::path> playPath;       // --path: play a camera path
     std::optional<std::filesystem::path> recordPath;     // --record: record the camera to a path file
     bool immersive = false;
@@ -47,6 +52,9 @@ struct ViewOptions {
 // The panel's zoom choices the command line asks for.
 struct ZoomChoices;
 ZoomChoices zoomChoicesFrom(const ViewOptions& options);
+
+// Every technique's settings for the window on `device` (ViewOptions::settingAssignments).
+SettingsById viewSettings(const ViewOptions& options, const gl::DeviceInfo& device);
 
 // Runs the window loop (viewer/window_loop.hpp) in the walkthrough mode, or with `immersive` in
 // the head-tracked mode (viewer/immersive.hpp), until the window closes or the smoke test is

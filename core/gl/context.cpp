@@ -83,6 +83,10 @@ HeadlessContext::~HeadlessContext() {
     eglTerminate(display);
 }
 
+bool DeviceInfo::software() const {
+    return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+}
+
 DeviceInfo currentDeviceInfo() {
     auto str = [](GLenum e) {
         const auto* s = reinterpret_cast<const char*>(glGetString(e));

@@ -11,6 +11,10 @@ struct DeviceInfo {
     std::string vendor;
     std::string renderer;
     std::string version;
+
+    // A software rasterizer (Mesa's llvmpipe or softpipe): the CPU shades, blends and takes the
+    // atomics, so what is fast differs from a GPU's (gl/gpu_timer.cpp, oit/device_defaults.hpp).
+    bool software() const;
 };
 
 // Reads GL_VENDOR/RENDERER/VERSION of the current context.

@@ -1,5 +1,7 @@
 #include "gl/gpu_timer.hpp"
 
+#include "gl/context.hpp"
+
 #include <cassert>
 #include <string>
 
@@ -19,11 +21,7 @@ namespace {
 // framebuffer (the bench's fragment count, ~8 ms at 256x256 with 16 layers). So the stamp is
 // also flushed right away, alone in its scene.
 bool softwareRenderer() {
-    static const bool software = [] {
-        const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        std::string renderer = r ? r : "";
-        return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
-    }();
+    static const bool software = currentDeviceInfo().software();
     return software;
 }
 
