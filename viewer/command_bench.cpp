@@ -82,8 +82,7 @@ void run(const BenchArgs& a) {
         // Again, now that the device is known: its defaults first, the options over them.
         const std::vector<std::string> ids = benchModeIds(options.modes);
         options.settings = resolveSettingsForDevice(ids, settingsAssignments(a.settings), gl::currentDeviceInfo());
-    }
-    if (autoMode) {
+    } else {
         // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
         // measured on this device at this size, two frames a configuration, then benched.
         const AdvisorCandidate chosen = autoPick(gpu, options, options.progress);
