@@ -56,7 +56,10 @@ ObjectSkipper::ScreenBox ObjectSkipper::screenBox(const FrameContext& frame, con
     const ScreenProjection p = projectBox(frame.viewProjection, b);
     ScreenBox box;
     // A box reaching behind the eye: the whole screen and the whole depth range, which never culls.
-    if (p.behindEye) return box;
+    if (p.behindEye) {
+        box.blocks = PixelRect{{0, 0}, reducedSize_};
+        return box;
+    }
     box.farDepth = p.farDepth;
     box.nearDepth = p.nearDepth;
     // Whole reduced pixels covering the rectangle, with one more on each side for round-off.
@@ -68,6 +71,7 @@ ObjectSkipper::ScreenBox ObjectSkipper::screenBox(const FrameContext& frame, con
     t1 = glm::clamp(t1, glm::vec2(0.0f), reduced);
     box.rect = glm::vec4(t0 / reduced * 2.0f - 1.0f, t1 / reduced * 2.0f - 1.0f);
     box.empty = !(t1.x > t0.x && t1.y > t0.y);
+    if (!box.empty) box.blocks = PixelRect{glm::ivec2(t0), glm::ivec2(t1 - t0)};
     return box;
 }
 
@@ -82,12 +86,30 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     glDisable(GL_CULL_FACE);
     glBindVertexArray(emptyVao_.id());
 
-    // The bound's block maxima: one small pass instead of a full-resolution box per object.
+    const auto& objects = frame.scene.objects();
+    if (boxes_.empty()) {
+        boxes_.resize(objects.size());
+        queriedBlocks_ = PixelRect{};
+        for (int o : frame.transparentOrder) {
+            if (frame.boundsOf(o).empty()) continue;
+            boxes_[o] = screenBox(frame, frame.boundsOf(o));
+            if (!boxes_[o].empty) queriedBlocks_ = queriedBlocks_.unite(boxes_[o].blocks);
+        }
+    }
+
+    // The bound's block maxima: one small pass instead of a full-resolution box per object,
+    // over the blocks some object's rectangle covers (no query reads the others; on llvmpipe a
+    // block costs its 64 texel reads wherever it lies).
     glBindFramebuffer(GL_FRAMEBUFFER, reduceFbo_.id());
     glViewport(0, 0, reducedSize_.x, reducedSize_.y);
     glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, remaining);
     glUseProgram(reduceProgram_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (!queriedBlocks_.empty()) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(queriedBlocks_.origin.x, queriedBlocks_.origin.y, queriedBlocks_.size.x, queriedBlocks_.size.y);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDisable(GL_SCISSOR_TEST);
+    }
     // No memory barrier: the rectangles sample what was just rendered, which GL orders itself.
 
     // One rectangle per live object, under an occlusion query.
@@ -95,12 +117,6 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, reduced_.id());
     const GLuint program = rectProgram_.id();
     glUseProgram(program);
-    const auto& objects = frame.scene.objects();
-    if (boxes_.empty()) {
-        boxes_.resize(objects.size());
-        for (int o : frame.transparentOrder)
-            if (!frame.boundsOf(o).empty()) boxes_[o] = screenBox(frame, frame.boundsOf(o));
-    }
     int sideBits = 0;
     for (RemainingSide side : sides) sideBits |= side == RemainingSide::NotNearerThanR ? 1 : 2;
     glProgramUniform1i(program, sidesLocation_, sideBits);

@@ -18,6 +18,7 @@
 // query result was zero (with GL_QUERY_WAIT the GPU skips exactly those).
 #include "oit/technique.hpp"
 #include "render/scene_program.hpp"
+#include "render/screen_rect.hpp"
 
 #include <vector>
 
@@ -64,6 +65,7 @@ private:
     // snapped outwards to whole reduced pixels, and its window depth range (reversed-Z).
     struct ScreenBox {
         glm::vec4 rect{-1.0f, -1.0f, 1.0f, 1.0f};
+        PixelRect blocks;  // the same rectangle in reduced pixels: the blocks its query reads
         float farDepth = 0.0f, nearDepth = 1.0f;
         bool empty = false;
     };
@@ -77,6 +79,7 @@ private:
     bool enabled_ = false;
     std::vector<bool> culled_;
     std::vector<ScreenBox> boxes_;  // per object id, this frame
+    PixelRect queriedBlocks_;       // the union of boxes_' blocks: all the reduction must write
     std::vector<Pending> pending_;
     std::vector<Conditional> conditional_;
     std::vector<int> unconditional_;  // draw()'s scratch: the objects it draws without a condition
