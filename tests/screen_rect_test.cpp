@@ -29,6 +29,20 @@ TEST_CASE("a box's pixel rectangle: its corners' extent, one pixel more each sid
     CHECK(r.size == glm::ivec2(54, 54));
 }
 
+TEST_CASE("a box's rectangle in cells of 8 pixels, as the object skipper's reduced bound reads it") {
+    // Pixels 24.9 .. 75.1 (NDC +-0.5 and the inflation) lie in cells 3 .. 9 of 8 pixels; one more
+    // each side: 2 .. 10, 9 cells.
+    const Bounds box{{-1.0f, -1.0f, -3.0f}, {1.0f, 1.0f, -2.0f}};
+    const ScreenProjection p = projectBox(kViewProjection, box);
+    const PixelRect r = pixelRect(p, kFrame, 8);
+    CHECK(r.origin == glm::ivec2(2, 2));
+    CHECK(r.size == glm::ivec2(9, 9));
+    // A frame of 100 pixels has 13 cells, the last one partial: the whole frame is all 13.
+    const PixelRect all = pixelRect(ScreenProjection{}, kFrame, 8);
+    CHECK(all.origin == glm::ivec2(0, 0));
+    CHECK(all.size == glm::ivec2(13, 13));
+}
+
 TEST_CASE("the pixels an object reaches: the cube around its bounding sphere") {
     // A 2-unit cube centred 10 away: sphere radius sqrt(3), nearest face of the cube around it
     // at z = -10 + sqrt(3); half width sqrt(3) / (10 - sqrt(3)) = 0.2095 in NDC, 10.48 pixels.

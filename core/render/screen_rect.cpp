@@ -51,13 +51,14 @@ PixelRect PixelRect::intersect(const PixelRect& other) const {
     return PixelRect{lo, hi - lo};
 }
 
-PixelRect pixelRect(const ScreenProjection& p, glm::ivec2 frameSize) {
-    const glm::vec2 full(frameSize);
+PixelRect pixelRect(const ScreenProjection& p, glm::ivec2 frameSize, int cellSize) {
+    const glm::vec2 cellsPerNdc = glm::vec2(frameSize) / float(cellSize);
+    const glm::vec2 cells((frameSize + cellSize - 1) / cellSize);
     // The default projection (behind the eye) is [-1, 1]: the whole frame, margin clipped.
-    glm::vec2 lo = glm::floor((p.ndcMin * 0.5f + 0.5f) * full) - 1.0f;
-    glm::vec2 hi = glm::ceil((p.ndcMax * 0.5f + 0.5f) * full) + 1.0f;
-    lo = glm::clamp(lo, glm::vec2(0.0f), full);
-    hi = glm::clamp(hi, glm::vec2(0.0f), full);
+    glm::vec2 lo = glm::floor((p.ndcMin * 0.5f + 0.5f) * cellsPerNdc) - 1.0f;
+    glm::vec2 hi = glm::ceil((p.ndcMax * 0.5f + 0.5f) * cellsPerNdc) + 1.0f;
+    lo = glm::clamp(lo, glm::vec2(0.0f), cells);
+    hi = glm::clamp(hi, glm::vec2(0.0f), cells);
     if (!(hi.x > lo.x && hi.y > lo.y)) return PixelRect{};
     return PixelRect{glm::ivec2(lo), glm::ivec2(hi - lo)};
 }

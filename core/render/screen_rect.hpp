@@ -27,8 +27,10 @@ struct PixelRect {
 };
 
 // The pixels of a frame of `frameSize` that a projection covers, with one more on each side
-// for round-off, clipped to the frame.
-PixelRect pixelRect(const ScreenProjection& p, glm::ivec2 frameSize);
+// for round-off, clipped to the frame. With `cellSize` > 1, in cells of that many pixels a side
+// (the frame then has ceil(frameSize / cellSize) of them, as a reduced target): the cells that
+// hold those pixels, with one more cell on each side.
+PixelRect pixelRect(const ScreenProjection& p, glm::ivec2 frameSize, int cellSize = 1);
 
 // Every pixel an object with these world bounds can draw to: the pixel rectangle of the cube
 // around its bounding sphere (centre, half diagonal). The sphere, as for culling

@@ -55,23 +55,16 @@ void ObjectSkipper::ensureReducedTarget(glm::ivec2 size) {
 ObjectSkipper::ScreenBox ObjectSkipper::screenBox(const FrameContext& frame, const Bounds& b) const {
     const ScreenProjection p = projectBox(frame.viewProjection, b);
     ScreenBox box;
-    // A box reaching behind the eye: the whole screen and the whole depth range, which never culls.
-    if (p.behindEye) {
-        box.blocks = PixelRect{{0, 0}, reducedSize_};
-        return box;
-    }
+    // Whole reduced pixels covering the rectangle, with one more on each side for round-off (a
+    // box reaching behind the eye: all of them, and the whole depth range, which never culls).
+    box.blocks = pixelRect(p, frame.size, kBlock);
+    if (p.behindEye) return box;
     box.farDepth = p.farDepth;
     box.nearDepth = p.nearDepth;
-    // Whole reduced pixels covering the rectangle, with one more on each side for round-off.
+    box.empty = box.blocks.empty();
     const glm::vec2 reduced(reducedSize_);
-    const glm::vec2 full(frame.size);
-    glm::vec2 t0 = glm::floor((p.ndcMin * 0.5f + 0.5f) * full / float(kBlock)) - 1.0f;
-    glm::vec2 t1 = glm::ceil((p.ndcMax * 0.5f + 0.5f) * full / float(kBlock)) + 1.0f;
-    t0 = glm::clamp(t0, glm::vec2(0.0f), reduced);
-    t1 = glm::clamp(t1, glm::vec2(0.0f), reduced);
+    const glm::vec2 t0(box.blocks.origin), t1(box.blocks.origin + box.blocks.size);
     box.rect = glm::vec4(t0 / reduced * 2.0f - 1.0f, t1 / reduced * 2.0f - 1.0f);
-    box.empty = !(t1.x > t0.x && t1.y > t0.y);
-    if (!box.empty) box.blocks = PixelRect{glm::ivec2(t0), glm::ivec2(t1 - t0)};
     return box;
 }
 
