@@ -53,7 +53,8 @@ void run(const BenchArgs& a) {
     // Settings are checked against every mode before the scene loads or a frame renders.
     if (autoMode && (!a.settings.set.empty() || !a.settings.preset.empty()))
         throw std::invalid_argument("--modes auto chooses the settings itself; drop --set and --settings");
-    options.settings = resolveSettingsArgs(autoMode ? allTechniqueIds() : benchModeIds(options.modes), a.settings);
+    const std::vector<SettingAssignment> assignments = settingsAssignments(a.settings);
+    options.settings = resolveSettings(autoMode ? allTechniqueIds() : benchModeIds(options.modes), assignments);
     if (!a.cameraPath.empty()) options.cameraPath = CameraPath::read(a.cameraPath);
     options.zoom = a.zoom.fixedZoom();
     options.zoomFilter = a.zoom.filter();
@@ -80,16 +81,15 @@ void run(const BenchArgs& a) {
     GpuScene gpu(std::move(scene));
     if (!autoMode) {
         // Again, now that the device is known: its defaults first, the options over them.
-        const std::vector<std::string> ids = benchModeIds(options.modes);
-        options.settings = resolveSettingsForDevice(ids, settingsAssignments(a.settings), gl::currentDeviceInfo());
+        options.settings = resolveSettingsForDevice(benchModeIds(options.modes), assignments, gl::currentDeviceInfo());
     } else {
         // `--modes auto`: the advisor's pick (bench/advisor.hpp's rule with its default bound)
         // measured on this device at this size, two frames a configuration, then benched.
         const AdvisorCandidate chosen = autoPick(gpu, options, options.progress);
         options.modes = {chosen.id};
-        std::vector<SettingAssignment> assignments;
-        for (const std::string& s : chosen.assignments) assignments.push_back({chosen.id + "." + s, "--modes auto"});
-        options.settings = resolveSettings(benchModeIds(options.modes), assignments);
+        std::vector<SettingAssignment> picked;
+        for (const std::string& s : chosen.assignments) picked.push_back({chosen.id + "." + s, "--modes auto"});
+        options.settings = resolveSettings(benchModeIds(options.modes), picked);
     }
     // Every output (images as they are rendered, then JSON and CSV) appears only once the whole
     // run succeeded; the images folder is made last, after every input was checked.

@@ -42,7 +42,8 @@ void run(const RenderArgs& a) {
     glm::ivec2 size = parseSize(a.size);
     const int zoom = a.zoom.fixedZoom();
     if (!findTechnique(a.mode)) createTechnique(a.mode);  // throws the list of known ids
-    resolveSettingsArgs({a.mode}, a.settings);  // a bad --set fails before the scene loads
+    const std::vector<SettingAssignment> assignments = settingsAssignments(a.settings);
+    resolveSettings({a.mode}, assignments);  // a bad --set fails before the scene loads
     const lod::LodOptions lodOptions = a.lod.options();
     // Images are written after the frame: refuse an unwritable destination before rendering.
     checkImageWritable(a.out);
@@ -55,7 +56,7 @@ void run(const RenderArgs& a) {
     gl::HeadlessContext context;
     checkFrameSize(size);  // before the scene is uploaded or a target allocated
     GpuScene gpu(std::move(scene));
-    const SettingsById settings = resolveSettingsForDevice({a.mode}, settingsAssignments(a.settings), gl::currentDeviceInfo());
+    const SettingsById settings = resolveSettingsForDevice({a.mode}, assignments, gl::currentDeviceInfo());
     auto technique = createConfiguredTechnique(a.mode, settings);
     Camera camera = defaultCamera(gpu.scene(), gpu.objects());
     if (!a.cameraPath.empty()) {

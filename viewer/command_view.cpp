@@ -105,8 +105,8 @@ void registerViewCommand(CLI::App& app) {
         if (!findTechnique(options->splitWith)) createTechnique(options->splitWith);
         if (!inspect->empty()) options->inspect = parseInspectPixel(*inspect, s);
         // Against every technique: the panel can switch to any of them.
-        resolveSettingsArgs(allTechniqueIds(), *settings);  // a bad --set fails before a window opens
         options->settingAssignments = settingsAssignments(*settings);
+        resolveSettings(allTechniqueIds(), options->settingAssignments);  // a bad --set fails before a window opens
         options->view = *parseView(*view);  // checked by CLI::IsMember above
         options->zoom.fixedZoom();  // throws naming a bad --zoom before a window opens
         options->lod.options();     // and a bad impostor setting

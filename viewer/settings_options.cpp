@@ -14,17 +14,11 @@ void addSettingsOptions(CLI::App* command, SettingsArgs& args) {
                         "JSON preset of technique settings: {\"[id.]name\": value, ...}, applied before --set");
 }
 
-std::vector<SettingAssignment> settingsAssignments(const SettingsArgs& args, const std::vector<SettingAssignment>& extra) {
+std::vector<SettingAssignment> settingsAssignments(const SettingsArgs& args) {
     std::vector<SettingAssignment> assignments;
     if (!args.preset.empty()) assignments = readSettingsPreset(args.preset);
     for (auto& a : commandLineAssignments(args.set)) assignments.push_back(std::move(a));
-    assignments.insert(assignments.end(), extra.begin(), extra.end());
     return assignments;
-}
-
-SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const SettingsArgs& args,
-                                 const std::vector<SettingAssignment>& extra) {
-    return resolveSettings(ids, settingsAssignments(args, extra));
 }
 
 std::vector<std::string> allTechniqueIds() {

@@ -17,15 +17,11 @@ struct SettingsArgs {
 
 void addSettingsOptions(CLI::App* command, SettingsArgs& args);
 
-// The options' assignments in the order they apply: the preset's, --set's, then `extra`. Throws
-// std::invalid_argument (one line) when the preset cannot be read.
-std::vector<SettingAssignment> settingsAssignments(const SettingsArgs& args, const std::vector<SettingAssignment>& extra = {});
-
-// Resolves the options against the techniques `ids`, then `extra` (which override them);
-// throws std::invalid_argument (one line). Without a context: the device's defaults
-// (oit/device_defaults.hpp) are applied once one exists.
-SettingsById resolveSettingsArgs(const std::vector<std::string>& ids, const SettingsArgs& args,
-                                 const std::vector<SettingAssignment>& extra = {});
+// The options' assignments in the order they apply: the preset's, then --set's. Throws
+// std::invalid_argument (one line) when the preset cannot be read. Resolve them with
+// resolveSettings before a context exists (a bad one fails early), and again with
+// resolveSettingsForDevice (oit/device_defaults.hpp) once the device is known.
+std::vector<SettingAssignment> settingsAssignments(const SettingsArgs& args);
 
 // Every registered technique: the set a command that can switch techniques resolves against.
 std::vector<std::string> allTechniqueIds();
