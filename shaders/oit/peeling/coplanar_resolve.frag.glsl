@@ -10,7 +10,13 @@
 // glTextureBarrier). Pixels with
 // nothing counted are discarded: GL_SAMPLES_PASSED counts the pixels that captured one or more.
 // NEXT_FROM_DEPTH (f2b-3p): the next anchor is the depth pass's, not the count target's b.
+// BAND_OUT (f2b-3p): also writes the far edge of the state's layer as depth, what the band pass
+//   (coplanar_band.frag.glsl) writes, so only the first iteration needs that pass. Where this
+//   discards, the state and so the band stay as they were.
 #include "coplanar_layer.glsl"
+#ifdef BAND_OUT
+#include "layer_tie.glsl"
+#endif
 
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;
@@ -56,6 +62,9 @@ void main() {
     outAccum = colorTexel(accum);
     outLayer = colorTexel(layer);
     outState = state;
+#ifdef BAND_OUT
+    gl_FragDepth = hasAnchor(state.r) ? layerFarEdge(state.r) : 1.0;
+#endif
 #ifdef STRATA_RGB_TRANSMITTANCE
     outAccumPasses = passesTexel(accum);
     outLayerPasses = passesTexel(layer);
