@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -392,4 +393,54 @@ TEST_CASE("budget governor: reactive learns what LOD's pixels really cost from a
     REQUIRE(run.choices[2].zoom == 2);
     REQUIRE(run.choices[2].lodLevel == 0);
     CHECK(governor.lodPixelScale() == doctest::Approx(3.0));
+}
+
+TEST_CASE("budget governor: reactive acts on a load the LOD preview sees growing, before frames over the band") {
+    // Settled at (1, 2), 48.864 ms under a 50 ms budget (band edge 55). Then the view turns into
+    // a denser field: every LOD level costs 30 ms more (levels 60, 48, 40, 36), and over the next
+    // two frames 5 ms more each.
+    //  - Seen by LOD's preview, the reactive policy moves the measured time by the preview's
+    //    growth at the current state, from the measured frames' views to the coming one. The
+    //    turn: 78.864 ms at (1, 2), so it takes the least loss estimated to fit, (3, 2) at 46.099
+    //    ms (loss 1.0 + 0.3), before drawing it. Then, one frame into the new state's hold, the
+    //    views' growth (+10 against a median of +2.5) says 56.099, over the band: it steps again
+    //    before drawing that frame (to (4, 3), 50.304 ms: nothing fits, the fastest), where
+    //    waiting for two frames over the band drew 56.1 and then 61.1.
+    //  - Unseen by the preview (the same loads as geometry it misses), it draws the turn at (1, 2)
+    //    and waits for frames over the band, as before.
+    auto turn = [](bool seen) {
+        Device d;
+        d.lodLossPx = {0.0, 0.1, 0.3, 1.0};
+        BudgetGovernor governor(budgetOf(50), {true, true}, ZoomControllerKind::Reactive, d.cost);
+        const Run settled = drive(governor, d, 20);
+        REQUIRE(settled.choices.back().zoom == 1);
+        REQUIRE(settled.choices.back().lodLevel == 2);
+        Run run;
+        for (int g = 0; g <= 6; ++g) {
+            const double more = g == 0 ? 30.0 : g <= 2 ? 5.0 : 0.0;
+            if (seen) {
+                for (double& ms : d.lodMs) ms += more;
+            } else {
+                d.unseenMs += more;
+            }
+            const Run frame = drive(governor, d, 1);
+            run.choices.push_back(frame.choices.front());
+            run.ms.push_back(frame.ms.front());
+        }
+        return run;
+    };
+    const Run seen = turn(true);
+    CHECK(seen.choices[0].zoom == 3);
+    CHECK(seen.choices[0].lodLevel == 2);
+    CHECK(seen.ms[0] == doctest::Approx(46.0989));
+    CHECK(seen.choices[1].zoom == 3);  // +5: 51.099, within the band
+    CHECK(seen.choices[1].lodLevel == 2);
+    CHECK(seen.choices[2].zoom == 4);  // moved before drawing 56.099
+    CHECK(seen.choices[2].lodLevel == 3);
+    for (double ms : seen.ms) CHECK(ms <= 55.0);
+    const Run unseen = turn(false);
+    CHECK(unseen.choices[0].zoom == 1);
+    CHECK(unseen.choices[0].lodLevel == 2);
+    CHECK(unseen.ms[0] == doctest::Approx(78.864));
+    CHECK(std::count_if(unseen.ms.begin(), unseen.ms.end(), [](double ms) { return ms > 55.0; }) >= 2);
 }

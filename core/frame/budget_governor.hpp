@@ -30,12 +30,17 @@
 //    from a change of zoom alone, and before one, all but LOD's preview of its geometry. A frame
 //    over twice the target is judged at once instead of after the hold, and two frames in a row
 //    over the band on their median. Relief (under the band) waits the hold and eases each lever
-//    by one step at most.
+//    by one step at most. The frames were measured at their own views: the decision is taken in
+//    choose(), for the coming view, with the measured time moved by LOD's preview of the current
+//    state there against at the frames' views. A growth the preview sees wider than the band,
+//    taking the state over it, acts before the hold ends (on the field's sweep the load rose
+//    2-3x in six frames, and two frames over the band were drawn before each step).
 // With the zoom lever alone it is today's zoom controller (frame/zoom_controller.hpp), unchanged.
 #include "frame/zoom_controller.hpp"
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -152,6 +157,14 @@ private:
     // Reactive: the time at (zoom, level) of a frame measured `ms` at the current state.
     double reactiveEstimate(const GovernorLoad& load, double ms, int zoom, int level) const;
     void changeState(int zoom, int level, bool controlled);
+    // Reactive: over or under the band at `now` (ms, as the coming view loads the current
+    // state), moves to the least lossy state estimated to fit (over: the fastest if none does).
+    // `learnable`: the frames before the change may teach how the time splits (not a jump's).
+    void decide(const GovernorLoad& load, double now, bool learnable);
+    // Reactive: whether LOD's preview can say how a view loads the current state (there is a
+    // preview), and what it says (lodMs at the current state; 0 where it cannot).
+    bool seesViewChange(const GovernorLoad& load) const;
+    double viewMs(const GovernorLoad& load) const;
 
     ZoomBudget budget_;
     BudgetLevers levers_;
@@ -167,6 +180,13 @@ private:
     int sinceChange_ = 0, hold_ = 1;
     bool lastWasStepDown_ = false;
     std::deque<double> recent_;
+    std::deque<double> recentViewMs_;  // viewMs of each frame in recent_, at its own view
+    // The hold ended with the last frame observed: its time, and its view's viewMs.
+    struct Pending {
+        double ms = 0.0, viewMs = 0.0;
+        bool jump = false;
+    };
+    std::optional<Pending> pending_;
     int beforeZoom_ = 0, beforeLevel_ = 0;
     double beforeMs_;
     double pixelShare_ = 1.0;  // of the time at zoom 1, what scales with pixels
