@@ -35,11 +35,20 @@ TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const PassParam
     const int n = parameters.factor;
     TechniqueStats stats;
     GLuint64 kept = 0;
-    const std::vector<Tile> tiles = supersampleTiles(frame.size, n);
-    for (const Tile& tile : tiles) {
+    int drawnTiles = 0;
+    for (const Tile& tile : supersampleTiles(frame.size, n)) {
+        // Where no transparent object reaches, the output holds the opaque colour already: the
+        // fill, the draw and the averages run only inside the transparent area, and a tile
+        // outside it not at all.
+        std::optional<PixelRect> area;
+        if (frame.transparentArea) {
+            area = transparentAreaWithin(frame, PixelRect{tile.origin, tile.size});
+            if (area->empty()) continue;
+        }
+        ++drawnTiles;
         {
             gl::ScopedPass pass(frame.timer, std::string(parameters.name) + " draw");
-            target_.begin(frame, tile, n);
+            target_.begin(frame, tile, n, area);
             if (parameters.maskSide > 0) masks_.bind(parameters.maskSide, parameters.seed);
             FrameContext tileFrame = frame;
             tileFrame.viewProjection = tileClipTransform(frame.size, tile) * frame.viewProjection;
@@ -50,11 +59,11 @@ TechniqueStats ScreenDoorPass::render(const FrameContext& frame, const PassParam
             kept += tileKept;
         }
         gl::ScopedPass pass(frame.timer, std::string(parameters.name) + " box filter");
-        target_.resolve(frame, tile, n);
+        target_.resolve(frame, tile, n, area);
     }
     glDepthMask(GL_FALSE);
-    stats.tiles = int(tiles.size());
-    stats.passes = int(tiles.size()) * (1 + SupersampledTarget::passesPerTile(n));
+    stats.tiles = drawnTiles;
+    stats.passes = drawnTiles * (1 + SupersampledTarget::passesPerTile(n));
     stats.bytes = (parameters.maskSide > 0 ? masks_.bytes() : 0) + target_.bytes();
     // Samples that a mask kept and the z-buffer passed, in output pixels (n^2 samples each).
     stats.fragmentsCaptured = (kept + std::uint64_t(n) * n / 2) / (std::uint64_t(n) * n);

@@ -62,7 +62,19 @@ void SupersampledTarget::allocate(glm::ivec2 samples, int levels) {
     levels_ = levels;
 }
 
-void SupersampledTarget::begin(const FrameContext& frame, const Tile& tile, int factor) {
+namespace {
+
+// `area` (output pixels) in the coordinates of a level of the tile where each output pixel is
+// `scale` texels a side: the rectangle scissored there.
+void scissorTo(const Tile& tile, const PixelRect& area, int scale) {
+    glEnable(GL_SCISSOR_TEST);
+    const glm::ivec2 origin = (area.origin - tile.origin) * scale;
+    glScissor(origin.x, origin.y, area.size.x * scale, area.size.y * scale);
+}
+
+}  // namespace
+
+void SupersampledTarget::begin(const FrameContext& frame, const Tile& tile, int factor, std::optional<PixelRect> area) {
     if (!fill_) {
         fill_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/screendoor/supersample_fill.frag.glsl"});
         average_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/screendoor/box_average.frag.glsl"});
@@ -82,18 +94,22 @@ void SupersampledTarget::begin(const FrameContext& frame, const Tile& tile, int 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
+    if (area) scissorTo(tile, *area, factor);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     // Masked fragments are opaque: the nearest one a sample keeps wins, in any draw order.
     glDepthFunc(GL_GREATER);
     glDisable(GL_CULL_FACE);
 }
 
-void SupersampledTarget::resolve(const FrameContext& frame, const Tile& tile, int factor) {
+void SupersampledTarget::resolve(const FrameContext& frame, const Tile& tile, int factor, std::optional<PixelRect> area) {
+    const PixelRect part = area.value_or(PixelRect{tile.origin, tile.size});
     const int steps = std::countr_zero(unsigned(factor));
     if (steps == 0) {
-        glBlitNamedFramebuffer(samplesFbo_.id(), frame.targets.outputFramebuffer(), 0, 0, tile.size.x, tile.size.y,
-                               tile.origin.x, tile.origin.y, tile.origin.x + tile.size.x, tile.origin.y + tile.size.y,
-                               GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glDisable(GL_SCISSOR_TEST);
+        const glm::ivec2 from = part.origin - tile.origin;
+        glBlitNamedFramebuffer(samplesFbo_.id(), frame.targets.outputFramebuffer(), from.x, from.y, from.x + part.size.x,
+                               from.y + part.size.y, part.origin.x, part.origin.y, part.origin.x + part.size.x,
+                               part.origin.y + part.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         return;
     }
     const GLint originLocation = glGetUniformLocation(average_.id(), "uDestinationOrigin");
@@ -104,7 +120,8 @@ void SupersampledTarget::resolve(const FrameContext& frame, const Tile& tile, in
         glTextureParameteri(color_.id(), GL_TEXTURE_MAX_LEVEL, level);
         glBindTextureUnit(gpu::BIND_DOWNSAMPLE_SOURCE, color_.id());
         const bool last = level + 1 == steps;
-        const glm::ivec2 size = tile.size * (factor >> (level + 1));
+        const int scale = factor >> (level + 1);  // texels of this level a side per output pixel
+        const glm::ivec2 size = tile.size * scale;
         if (last) {
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
             glViewport(tile.origin.x, tile.origin.y, size.x, size.y);
@@ -115,8 +132,12 @@ void SupersampledTarget::resolve(const FrameContext& frame, const Tile& tile, in
             glViewport(0, 0, size.x, size.y);
             glProgramUniform2i(average_.id(), originLocation, 0, 0);
         }
+        // The last level writes the output in its own pixels, where the tile starts at its origin.
+        if (last) scissorTo(Tile{}, part, 1);
+        else scissorTo(tile, part, scale);
         drawFullscreen(frame, average_.id());
     }
+    glDisable(GL_SCISSOR_TEST);
     glTextureParameteri(color_.id(), GL_TEXTURE_BASE_LEVEL, 0);
     glTextureParameteri(color_.id(), GL_TEXTURE_MAX_LEVEL, 1000);
     glViewport(0, 0, frame.size.x, frame.size.y);

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace strata::screendoor {
@@ -35,10 +36,13 @@ class SupersampledTarget {
 public:
     // Allocates for `tile` at `factor` (a power of two), fills colour and depth from the frame's
     // opaque targets, and leaves its framebuffer bound with the viewport set and the depth test
-    // (GL_GREATER) writing: what a masked fragment needs.
-    void begin(const FrameContext& frame, const Tile& tile, int factor);
+    // (GL_GREATER) writing: what a masked fragment needs. Only `area` (output pixels within the
+    // tile; the whole tile by default) is filled, and the scissor is left on around its samples
+    // for the draw.
+    void begin(const FrameContext& frame, const Tile& tile, int factor, std::optional<PixelRect> area = {});
     // Averages 2x2 blocks log2(factor) times; the last average writes the tile of the output.
-    void resolve(const FrameContext& frame, const Tile& tile, int factor);
+    // Only `area` (as for begin) is averaged and written; the scissor is off afterwards.
+    void resolve(const FrameContext& frame, const Tile& tile, int factor, std::optional<PixelRect> area = {});
     // Full-screen passes per tile: the fill and the averages (a copy when factor is 1).
     static int passesPerTile(int factor);
     std::uint64_t bytes() const;
