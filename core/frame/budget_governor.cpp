@@ -214,44 +214,59 @@ void BudgetGovernor::changeState(int zoom, int level, bool controlled) {
     zoom_ = zoom;
     level_ = level;
     recent_.clear();
-    recentViewMs_.clear();
+    recentViews_.clear();
     pending_.reset();
     sinceChange_ = 0;
 }
 
-bool BudgetGovernor::seesViewChange(const GovernorLoad& load) const { return !load.lod.levels.empty(); }
+BudgetGovernor::ViewLoad BudgetGovernor::viewLoad(const GovernorLoad& load) const {
+    if (load.lod.levels.empty()) return {};
+    const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
+    return ViewLoad{l.predictedMs - l.pixelMs - l.sideMs, lodSizePart(l, zoom_), true};
+}
 
-double BudgetGovernor::viewMs(const GovernorLoad& load) const { return seesViewChange(load) ? lodMs(load, level_, zoom_) : 0.0; }
+double BudgetGovernor::viewChange(const ViewLoad& coming, const std::deque<ViewLoad>& measured) const {
+    // Nothing to compare where a view had no preview (LOD not steering that frame): none is assumed.
+    if (!coming.seen || measured.empty()) return 0.0;
+    std::deque<double> ms;
+    for (const ViewLoad& v : measured) {
+        if (!v.seen) return 0.0;
+        ms.push_back(viewMs(v));
+    }
+    const double change = viewMs(coming) - medianMs(ms);
+    return std::isfinite(change) ? change : 0.0;
+}
 
 GovernorChoice BudgetGovernor::chooseReactive(const GovernorLoad& load) {
+    // The frames were measured at their own views; this frame's view may load the current state
+    // more or less. LOD's preview of the current state, at this view against at theirs, says how
+    // much (the same models' difference the estimates of other states take, across views).
+    const double target = budget_.targetMs, overLimit = target * (1.0 + budget_.band);
+    bool decided = false;
+    if (pending_) {
+        // The hold ended with the last frame: judged at this view, before the floor below (the
+        // decision keeps to it), as when it was taken at the end of the frame.
+        const Pending p = std::move(*pending_);
+        pending_.reset();
+        // A change on a jump is not one to learn from (its "before" is one frame of a new load).
+        // Over only at this view: no relief that has to be undone.
+        decide(load, p.ms + viewChange(viewLoad(load), p.views), !p.jump, p.ms <= overLimit);
+        decided = true;
+    }
     const int zoom = std::clamp(zoom_, lowestZoom(load), highestZoom(load));
     const int level = std::clamp(level_, 0, highestLevel(load));
     // The head-speed floor (or a ladder that shrank) overrides: what was measured no longer applies.
     if (zoom != zoom_ || level != level_) changeState(zoom, level, false);
-    // The frames were measured at their own views; this frame's view may load the current state
-    // more or less. LOD's preview of the current state, at this view against theirs, says how
-    // much (the same models' difference the estimates of other states take, across views).
-    const double viewChange = [&] {
-        if (!seesViewChange(load)) return 0.0;
-        if (pending_) return viewMs(load) - pending_->viewMs;
-        return recentViewMs_.empty() ? 0.0 : viewMs(load) - medianMs(recentViewMs_);
-    }();
-    if (pending_) {
-        // The hold ended with the last frame: judged at this view.
-        const Pending p = *pending_;
-        pending_.reset();
-        // A change on a jump is not one to learn from (its "before" is one frame of a new load).
-        decide(load, p.ms + viewChange, !p.jump);
-    } else if (!recent_.empty()) {
+    const double change = viewChange(viewLoad(load), recentViews_);
+    if (!decided && !recent_.empty()) {
         // Before the hold ends, a load the preview sees growing past the band at this view: the
         // step a reactive policy would take after the frames over it, taken before them. Only a
         // growth wider than the band itself, so that the frames' noise alone never acts here.
-        const double target = budget_.targetMs;
-        const double estimate = medianMs(recent_) + viewChange;
         // Not one to learn from either: the frames before it were drawn at other views.
-        if (viewChange > budget_.band * target && estimate > target * (1.0 + budget_.band)) decide(load, estimate, false);
+        const double estimate = medianMs(recent_) + change;
+        if (change > budget_.band * target && estimate > overLimit) decide(load, estimate, false, true);
     }
-    const double predicted = recent_.empty() ? kNaN : medianMs(recent_) + viewChange;
+    const double predicted = recent_.empty() ? kNaN : medianMs(recent_) + viewChange(viewLoad(load), recentViews_);
     return GovernorChoice{zoom_, level_, predicted, loss(load, zoom_, level_)};
 }
 
@@ -272,10 +287,10 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     }
     if (cost.zoom != zoom_) return;  // not the frame this governor chose
     recent_.push_back(cost.ms);
-    recentViewMs_.push_back(viewMs(load));
+    recentViews_.push_back(viewLoad(load));
     fragments_ = double(cost.fragments);
     while (int(recent_.size()) > budget_.holdFrames) recent_.pop_front();
-    while (int(recentViewMs_.size()) > budget_.holdFrames) recentViewMs_.pop_front();
+    while (int(recentViews_.size()) > budget_.holdFrames) recentViews_.pop_front();
     // A frame over twice the target is no outlier to wait out (a cut, a turn into a dense view):
     // it is judged at once, on its own time.
     const bool jump = cost.ms > kJumpOverTarget * budget_.targetMs;
@@ -291,10 +306,9 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     const double now = jump      ? cost.ms
                        : overRun ? medianMs(std::deque<double>(recent_.end() - kOverFramesToAct, recent_.end()))
                                  : medianMs(recent_);
-    // The views those frames were drawn at, as LOD's preview loads the state there.
-    const double nowViewMs = jump      ? recentViewMs_.back()
-                             : overRun ? medianMs(std::deque<double>(recentViewMs_.end() - kOverFramesToAct, recentViewMs_.end()))
-                                       : medianMs(recentViewMs_);
+    // The views those frames were drawn at.
+    std::deque<ViewLoad> nowViews = recentViews_;
+    if (jump || overRun) nowViews.erase(nowViews.begin(), nowViews.end() - (jump ? 1 : kOverFramesToAct));
 
     // Learn from a change of zoom alone (the bound held), through the medians before and after:
     // with a calibrated zoom model, the factor on LOD's size part; without one, the pixel share
@@ -328,10 +342,10 @@ void BudgetGovernor::observe(const FrameCost& cost) {
     }
     if (!jump) beforeMs_ = kNaN;
     // The next choose() decides, with the view it is for.
-    pending_ = Pending{now, nowViewMs, jump};
+    pending_ = Pending{now, std::move(nowViews), jump};
 }
 
-void BudgetGovernor::decide(const GovernorLoad& load, double now, bool learnable) {
+void BudgetGovernor::decide(const GovernorLoad& load, double now, bool learnable, bool viewDriven) {
     const double target = budget_.targetMs;
     const bool over = now > target * (1.0 + budget_.band);
     const bool under = now < target * (1.0 - budget_.band);
@@ -370,7 +384,9 @@ void BudgetGovernor::decide(const GovernorLoad& load, double now, bool learnable
             }
         if (bestZoom != zoom_ || bestLevel != level_) {
             // A relief that had to be undone doubles the hold before the next one (up to 8x).
-            if (over && lastWasStepDown_ && sinceChange_ <= hold_) hold_ = std::min(hold_ * 2, budget_.holdFrames * 8);
+            // Not where only the coming view is over: the relief was no mistake, the load grew.
+            if (over && lastWasStepDown_ && sinceChange_ <= hold_ && !viewDriven)
+                hold_ = std::min(hold_ * 2, budget_.holdFrames * 8);
             changeState(bestZoom, bestLevel, learnable);
             return;
         }

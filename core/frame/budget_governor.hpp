@@ -31,10 +31,11 @@
 //    over twice the target is judged at once instead of after the hold, and two frames in a row
 //    over the band on their median. Relief (under the band) waits the hold and eases each lever
 //    by one step at most. The frames were measured at their own views: the decision is taken in
-//    choose(), for the coming view, with the measured time moved by LOD's preview of the current
-//    state there against at the frames' views. A growth the preview sees wider than the band,
-//    taking the state over it, acts before the hold ends (on the field's sweep the load rose
-//    2-3x in six frames, and two frames over the band were drawn before each step).
+//    choose(), for the coming view, with the measured time moved by the difference of LOD's
+//    preview of the current state between that view and the frames' views. A growth the
+//    preview sees wider than the band, taking the state over it, acts before the hold ends (on
+//    the field's sweep the load rose 2-3x in six frames, and two frames over the band were
+//    drawn before each step).
 // With the zoom lever alone it is today's zoom controller (frame/zoom_controller.hpp), unchanged.
 #include "frame/zoom_controller.hpp"
 
@@ -160,11 +161,21 @@ private:
     // Reactive: over or under the band at `now` (ms, as the coming view loads the current
     // state), moves to the least lossy state estimated to fit (over: the fastest if none does).
     // `learnable`: the frames before the change may teach how the time splits (not a jump's).
-    void decide(const GovernorLoad& load, double now, bool learnable);
-    // Reactive: whether LOD's preview can say how a view loads the current state (there is a
-    // preview), and what it says (lodMs at the current state; 0 where it cannot).
-    bool seesViewChange(const GovernorLoad& load) const;
-    double viewMs(const GovernorLoad& load) const;
+    // `viewDriven`: over only at the coming view (the frames were not), so a relief just before
+    // was no mistake and the hold is not backed off.
+    void decide(const GovernorLoad& load, double now, bool learnable, bool viewDriven);
+    // Reactive: LOD's preview of the current state at one frame's view, its fixed and size parts
+    // apart (seen: there was a preview), so that views are compared with the factor on the size
+    // part as it stands, not as it stood when each was drawn.
+    struct ViewLoad {
+        double fixedMs = 0.0, sizeMs = 0.0;
+        bool seen = false;
+    };
+    ViewLoad viewLoad(const GovernorLoad& load) const;
+    double viewMs(const ViewLoad& v) const { return v.fixedMs + lodPixelScale_ * v.sizeMs; }
+    // How much more the coming view loads the current state than the measured frames' views did
+    // (their median); 0 where any of them had no preview.
+    double viewChange(const ViewLoad& coming, const std::deque<ViewLoad>& measured) const;
 
     ZoomBudget budget_;
     BudgetLevers levers_;
@@ -180,10 +191,11 @@ private:
     int sinceChange_ = 0, hold_ = 1;
     bool lastWasStepDown_ = false;
     std::deque<double> recent_;
-    std::deque<double> recentViewMs_;  // viewMs of each frame in recent_, at its own view
-    // The hold ended with the last frame observed: its time, and its view's viewMs.
+    std::deque<ViewLoad> recentViews_;  // each frame's in recent_, at its own view
+    // The hold ended with the last frame observed: the time judged, and the frames' views.
     struct Pending {
-        double ms = 0.0, viewMs = 0.0;
+        double ms = 0.0;
+        std::deque<ViewLoad> views;
         bool jump = false;
     };
     std::optional<Pending> pending_;

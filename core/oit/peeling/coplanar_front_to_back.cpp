@@ -378,8 +378,9 @@ TechniqueEntry f2b2pEntry() {
 
 TechniqueEntry f2b3pEntry() {
     TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
-                       "2 + sum over layers of 5*ceil(C/2) (depth, band, tie-test count, shading, resolve per "
-                       "iteration); no coplanarity: 5D+2; Table 1: 3C(Zall)/2",
+                       "3 + sum over layers of 4*ceil(C/2) (depth, tie-test count, shading, resolve per "
+                       "iteration; the first also a band pass, later ones get it from the resolve); no "
+                       "coplanarity: 4D+3; Table 1: 3C(Zall)/2",
                        "w*h*72 B at precision=16: as f2b-2p + next-anchor and band depths (4 each); w*h*104 B "
                        "at 32; + four more RGBA targets in a scene with coloured filters",
                        "coplanarity-aware f2b with a depth pass, a tie-test counting pass and a shading pass "
