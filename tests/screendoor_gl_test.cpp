@@ -292,6 +292,40 @@ TEST_CASE("screen-door: a frame past one tile of samples renders in tiles that c
     }
 }
 
+TEST_CASE("screen-door: a tile the glass does not reach is not drawn, and shows the opaque colour") {
+    // The two-tile frame above (160 x 6 at n = 16: tiles of columns 0-127 and 128-159) with a
+    // 0.5 x 0.5 quad at NDC x 0.8 and depth 2, where a pixel is 0.31088 world units: 1.6083 px a
+    // side. The cube around its bounding sphere projects to columns 133-159, so the transparent
+    // area lies in the second tile only: the first is skipped (one tile drawn) and stays the
+    // white background exactly. The quad's opacity summed over the frame is alpha times its
+    // 2.5868 px^2, within 5 standard deviations of its ~660 samples (0.25 px^2).
+    const float alpha = 0.5f;
+    const glm::ivec2 size(160, 6);
+    const float depth = 2.0f;
+    Scene s = emptyTestScene();
+    const float halfWidth = depth * std::tan(glm::radians(50.0f) / 2.0f) * float(size.x) / float(size.y);
+    place(s, makeQuad(0.5f, 0.5f), transparentMaterial(glm::vec3(0.0f), alpha), at({0.8f * halfWidth, 0, -depth}));
+    test::Fixture f(std::move(s));
+    f.camera.nearPlane = 0.5f;
+    f.camera.farPlane = 200.0f;
+    for (const std::string id : kScreenDoorIds) {
+        CAPTURE(id);
+        auto technique = at16x16(id);
+        test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+        CHECK(r.result.stats.tiles == 1);
+        double opacity = 0.0;
+        for (int x = 0; x < size.x; ++x)
+            for (int y = 0; y < size.y; ++y) {
+                if (x < 128) {
+                    CAPTURE(x);
+                    CHECK(r.image.at(x, y).r == 1.0f);
+                }
+                opacity += 1.0 - r.image.at(x, y).r;
+            }
+        CHECK(std::abs(opacity - alpha * 2.5868) <= 0.25);
+    }
+}
+
 TEST_CASE("silhouette opacity: the object-space methods grow opaque toward the rim, the stipple stays flat") {
     // A black sphere of alpha 0.3 over white: a pixel's opacity is 1 - its value. Both surfaces
     // a ray crosses meet it at the same |N_z|. The image-space stipple keeps alpha of the samples
