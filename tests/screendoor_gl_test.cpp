@@ -256,24 +256,36 @@ TEST_CASE("screen-door: the same seed gives the same image bit for bit, another 
     }
 }
 
-TEST_CASE("screen-door: a frame past one tile of samples renders in tiles that cover it") {
-    // 160 x 6 pixels at n = 16 is 2560 samples wide, past the 2048 of one tile: two tiles of 128
-    // and 32 columns, each drawn through its own projection. A quad whose left edge projects to
-    // column 120 crosses the seam: columns left of the edge stay white exactly; every column
-    // right of it shows the quad at its alpha, within 5 standard deviations of one column's
-    // 6 * 256 samples (at most 4 per texel, as in the flat-quad test): 0.13 at alpha 0.5. A tile
-    // drawn through the whole frame's projection shows the edge at the wrong column.
-    const float alpha = 0.5f;
-    const glm::ivec2 size(160, 6);
+namespace {
+
+// Two tiles of samples: 160 x 6 pixels at n = 16 is 2560 samples wide, past the 2048 of one
+// tile, so tiles of 128 and 32 columns, each drawn through its own projection. A black quad of
+// `alpha` over white at depth 2, its centre `offset` world units right of NDC x `ndcX` (a pixel
+// is 0.31088 world units there). The clip planes are set by hand: fitted to a large quad's
+// sphere they would cut it off.
+const glm::ivec2 kTwoTiles(160, 6);
+test::Fixture twoTileScene(Mesh quad, float alpha, float ndcX, float offset = 0.0f) {
     const float depth = 2.0f;
+    const float halfWidth = depth * std::tan(glm::radians(50.0f) / 2.0f) * float(kTwoTiles.x) / float(kTwoTiles.y);
     Scene s = emptyTestScene();
-    const float halfWidth = depth * std::tan(glm::radians(50.0f) / 2.0f) * float(size.x) / float(size.y);
-    const float edge = 0.5f * halfWidth;  // NDC x = 0.5: column 120
-    place(s, makeGrid(100.0f, 8.0f), transparentMaterial(glm::vec3(0.0f), alpha), at({edge + 50.0f, 0, -depth}));
+    place(s, std::move(quad), transparentMaterial(glm::vec3(0.0f), alpha), at({ndcX * halfWidth + offset, 0, -depth}));
     test::Fixture f(std::move(s));
-    // Clip planes fitted to the quad's bounding sphere would cut the quad off: set them here.
     f.camera.nearPlane = 0.5f;
     f.camera.farPlane = 200.0f;
+    return f;
+}
+
+}  // namespace
+
+TEST_CASE("screen-door: a frame past one tile of samples renders in tiles that cover it") {
+    // The two-tile frame, with a 100 x 8 quad whose left edge projects to column 120 (NDC 0.5)
+    // across the seam: columns left of the edge stay white exactly; every column right of it
+    // shows the quad at its alpha, within 5 standard deviations of one column's 6 * 256 samples
+    // (at most 4 per texel, as in the flat-quad test): 0.13 at alpha 0.5. A tile drawn through
+    // the whole frame's projection shows the edge at the wrong column.
+    const float alpha = 0.5f;
+    const glm::ivec2 size = kTwoTiles;
+    test::Fixture f = twoTileScene(makeGrid(100.0f, 8.0f), alpha, 0.5f, 50.0f);
     for (const std::string id : kScreenDoorIds) {
         CAPTURE(id);
         auto technique = at16x16(id);
@@ -293,29 +305,21 @@ TEST_CASE("screen-door: a frame past one tile of samples renders in tiles that c
 }
 
 TEST_CASE("screen-door: a tile the glass does not reach is not drawn, and shows the opaque colour") {
-    // The two-tile frame above (160 x 6 at n = 16: tiles of columns 0-127 and 128-159) with a
-    // 0.5 x 0.5 quad at NDC x 0.8 and depth 2, where a pixel is 0.31088 world units: 1.6083 px a
-    // side. The cube around its bounding sphere projects to columns 133-159, so the transparent
-    // area lies in the second tile only: the first is skipped (one tile drawn) and stays the
-    // white background exactly. The quad's opacity summed over the frame is alpha times its
-    // 2.5868 px^2, within 5 standard deviations of its ~660 samples (0.25 px^2).
+    // The two-tile frame with a 0.5 x 0.5 quad at NDC x 0.8: 1.6083 px a side. The cube around
+    // its bounding sphere projects to columns 133-159, so the transparent area lies in the second
+    // tile only: the first is skipped (one tile drawn) and stays the white background exactly.
+    // The quad's opacity summed over the frame is alpha times its 2.5868 px^2, within 5 standard
+    // deviations of its ~660 samples (0.25 px^2).
     const float alpha = 0.5f;
-    const glm::ivec2 size(160, 6);
-    const float depth = 2.0f;
-    Scene s = emptyTestScene();
-    const float halfWidth = depth * std::tan(glm::radians(50.0f) / 2.0f) * float(size.x) / float(size.y);
-    place(s, makeQuad(0.5f, 0.5f), transparentMaterial(glm::vec3(0.0f), alpha), at({0.8f * halfWidth, 0, -depth}));
-    test::Fixture f(std::move(s));
-    f.camera.nearPlane = 0.5f;
-    f.camera.farPlane = 200.0f;
+    test::Fixture f = twoTileScene(makeQuad(0.5f, 0.5f), alpha, 0.8f);
     for (const std::string id : kScreenDoorIds) {
         CAPTURE(id);
         auto technique = at16x16(id);
-        test::Rendered r = test::renderWith(*f.gpu, f.camera, size, *technique);
+        test::Rendered r = test::renderWith(*f.gpu, f.camera, kTwoTiles, *technique);
         CHECK(r.result.stats.tiles == 1);
         double opacity = 0.0;
-        for (int x = 0; x < size.x; ++x)
-            for (int y = 0; y < size.y; ++y) {
+        for (int x = 0; x < kTwoTiles.x; ++x)
+            for (int y = 0; y < kTwoTiles.y; ++y) {
                 if (x < 128) {
                     CAPTURE(x);
                     CHECK(r.image.at(x, y).r == 1.0f);
