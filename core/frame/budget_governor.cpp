@@ -91,10 +91,16 @@ int BudgetGovernor::highestLevel(const GovernorLoad& load) const {
     return levers_.lod && !load.lod.levels.empty() ? int(load.lod.levels.size()) - 1 : 0;
 }
 
+const LodLevelPreview& BudgetGovernor::levelOf(const GovernorLoad& load, int level) {
+    return load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
+}
+
+double BudgetGovernor::lodFixedMs(const LodLevelPreview& level) { return level.predictedMs - level.pixelMs - level.sideMs; }
+
 double BudgetGovernor::lodMs(const GovernorLoad& load, int level, int zoom) const {
     if (load.lod.levels.empty()) return 0.0;
-    const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
-    return l.predictedMs - l.pixelMs - l.sideMs + lodPixelScale_ * lodSizePart(l, zoom);
+    const LodLevelPreview& l = levelOf(load, level);
+    return lodFixedMs(l) + lodPixelScale_ * lodSizePart(l, zoom);
 }
 
 double BudgetGovernor::lodSizePart(const LodLevelPreview& l, int zoom) {
@@ -104,12 +110,12 @@ double BudgetGovernor::lodSizePart(const LodLevelPreview& l, int zoom) {
 
 void BudgetGovernor::learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost) {
     if (load.lod.levels.empty()) return;
-    const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))];
+    const LodLevelPreview& l = levelOf(load, level);
     if (l.pixelMs + l.sideMs <= 0.0) return;
     // y = what the frame took beyond the zoom model (its learnt offset left out) and LOD's
     // fixed part; x = LOD's predicted pixel and side parts at the zoom drawn. y = offset + scale x.
     const double x = lodSizePart(l, cost.zoom);
-    const double y = cost.ms - (l.predictedMs - l.pixelMs - l.sideMs) -
+    const double y = cost.ms - lodFixedMs(l) -
                      (zoomPart_->predict(load.zoom, cost.zoom) - zoomPart_->sceneOffsetMs());
     PixelFit& f = pixelFit_;
     f.w = kPixelFitMemory * f.w + 1.0;
@@ -128,7 +134,7 @@ void BudgetGovernor::learnLodPixelScale(const GovernorLoad& load, int level, con
 double BudgetGovernor::loss(const GovernorLoad& load, int zoom, int level) const {
     double px = scales_.zoom * zoomLossPx(zoom) * std::clamp(load.lod.coverage, 0.0, 1.0);
     if (!load.lod.levels.empty())
-        px += scales_.lod * load.lod.levels[std::size_t(std::clamp(level, 0, int(load.lod.levels.size()) - 1))].lossPx;
+        px += scales_.lod * levelOf(load, level).lossPx;
     return px;
 }
 
@@ -196,8 +202,8 @@ double BudgetGovernor::reactiveEstimate(const GovernorLoad& load, double ms, int
         // geometry-bound view is not promised a zoom's saving. Without a preview, all of it scales.
         double share = pixelShare_;
         if (!shareLearned_ && !load.lod.levels.empty()) {
-            const LodLevelPreview& at = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
-            share = priorPixelShare(ms, at.predictedMs - at.pixelMs - at.sideMs, zoomPixels(display, zoom_) / p1);
+            const LodLevelPreview& at = levelOf(load, level_);
+            share = priorPixelShare(ms, lodFixedMs(at), zoomPixels(display, zoom_) / p1);
         }
         auto model = [&](int z) { return (1.0 - share) + share * zoomPixels(display, z) / p1; };
         scaled = ms * model(zoom) / model(zoom_);
@@ -221,8 +227,8 @@ void BudgetGovernor::changeState(int zoom, int level, bool controlled) {
 
 BudgetGovernor::ViewLoad BudgetGovernor::viewLoad(const GovernorLoad& load) const {
     if (load.lod.levels.empty()) return {};
-    const LodLevelPreview& l = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
-    return ViewLoad{l.predictedMs - l.pixelMs - l.sideMs, lodSizePart(l, zoom_), true};
+    const LodLevelPreview& l = levelOf(load, level_);
+    return ViewLoad{lodFixedMs(l), lodSizePart(l, zoom_), true};
 }
 
 double BudgetGovernor::viewChange(const ViewLoad& coming, const std::deque<ViewLoad>& measured) const {
@@ -266,7 +272,8 @@ GovernorChoice BudgetGovernor::chooseReactive(const GovernorLoad& load) {
         const double estimate = medianMs(recent_) + change;
         if (change > budget_.band * target && estimate > overLimit) decide(load, estimate, false, true);
     }
-    const double predicted = recent_.empty() ? kNaN : medianMs(recent_) + viewChange(viewLoad(load), recentViews_);
+    // After a step recent_ is empty; without one, `change` is still this state's.
+    const double predicted = recent_.empty() ? kNaN : medianMs(recent_) + change;
     return GovernorChoice{zoom_, level_, predicted, loss(load, zoom_, level_)};
 }
 
@@ -320,7 +327,7 @@ void BudgetGovernor::observe(const FrameCost& cost) {
         // The saving the zoom model does not explain is LOD's size part's, times the factor, in
         // the predictive policy's range (on the field's sweep a zoom of 2 saved nothing of the
         // preview's 18 ms of stand-in pixels at 2 px: the factor's floor, 0.5, is then learnt).
-        const LodLevelPreview& at = load.lod.levels[std::size_t(std::clamp(level_, 0, int(load.lod.levels.size()) - 1))];
+        const LodLevelPreview& at = levelOf(load, level_);
         const double lodChange = lodSizePart(at, beforeZoom_) - lodSizePart(at, zoom_);
         const double rest = beforeMs_ - now -
                             (techniqueSizeMs(display, beforeZoom_, beforeFragments_, beforeZoom_) -

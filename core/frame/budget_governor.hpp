@@ -209,6 +209,10 @@ private:
     void learnLodPixelScale(const GovernorLoad& load, int level, const FrameCost& cost);
     // LOD's size-dependent part at zoom z: its pixel part / z^2 and its side part / z.
     static double lodSizePart(const LodLevelPreview& level, int zoom);
+    // The preview of a ladder level (clamped to the ladder; the preview must have levels), and its
+    // part no zoom shrinks (its predicted time less its pixel and side parts).
+    static const LodLevelPreview& levelOf(const GovernorLoad& load, int level);
+    static double lodFixedMs(const LodLevelPreview& level);
     double lodPixelScale_ = 1.0;
     struct PixelFit {
         double w = 0.0, x = 0.0, y = 0.0, xx = 0.0, xy = 0.0;  // decayed sums
