@@ -126,15 +126,14 @@ void SupersampledTarget::resolve(const FrameContext& frame, const Tile& tile, in
             glBindFramebuffer(GL_FRAMEBUFFER, frame.targets.outputFramebuffer());
             glViewport(tile.origin.x, tile.origin.y, size.x, size.y);
             glProgramUniform2i(average_.id(), originLocation, tile.origin.x, tile.origin.y);
+            scissorTo(Tile{}, part, 1);  // the output's own pixels
         } else {
             glNamedFramebufferTexture(averageFbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), level + 1);
             glBindFramebuffer(GL_FRAMEBUFFER, averageFbo_.id());
             glViewport(0, 0, size.x, size.y);
             glProgramUniform2i(average_.id(), originLocation, 0, 0);
+            scissorTo(tile, part, scale);
         }
-        // The last level writes the output in its own pixels, where the tile starts at its origin.
-        if (last) scissorTo(Tile{}, part, 1);
-        else scissorTo(tile, part, scale);
         drawFullscreen(frame, average_.id());
     }
     glDisable(GL_SCISSOR_TEST);
