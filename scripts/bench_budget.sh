@@ -16,11 +16,15 @@
 #
 # usage: scripts/bench_budget.sh [--out DIR] [--strata PATH] [--scenes orchard,field] [--frames N]
 #        [--mode ID] [--budget-share F] [--merged-slices] [--least-bound PX] [--size WxH] [--quick]
+#        [--oracle]
 #   --quick: 12 frames, orchard only.
 #   --merged-slices: every run with --impostor-merged-slices, so that raising the LOD bound
 #            also draws stand-ins at fewer slices (layered-impostors.md, "Levels of merged slices").
 #   --least-bound PX: the least LOD bound for every scene, in place of the scene's own.
 #   --size WxH: the image size for every scene, in place of the scene's own.
+#   --oracle: also draw the whole path at every state (zoom 1..8 x the 4 LOD ladder levels,
+#            `strata bench --budget-pin`) and print what the best frame-by-frame choice of each
+#            lever set would score (scripts/lib/budget_oracle.py): the most any policy can gain.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$root/docs/bench/budget
@@ -32,6 +36,7 @@ share=0.5
 merged=()
 least=
 sizeArg=
+oracle=0
 while [[ $# -gt 0 ]]; do
     case $1 in
         --out) out=$2; shift 2 ;;
@@ -44,7 +49,8 @@ while [[ $# -gt 0 ]]; do
         --least-bound) least=$2; shift 2 ;;
         --size) sizeArg=$2; shift 2 ;;
         --quick) frames=12; scenes=orchard; shift ;;
-        -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+        --oracle) oracle=1; shift ;;
+        -h|--help) sed -n '2,27p' "$0"; exit 0 ;;
         *) echo "bench_budget.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -100,4 +106,25 @@ for levers in ('zoom', 'lod', 'zoom,lod'):
     for policy in ('reactive', 'predictive'):
         row(levers, policy, '%s/%s-%s-%s.json' % (out, name, levers.replace(',', '+'), policy))
 PY
+    [[ $oracle == 1 ]] || continue
+    pinned=()
+    for zoom in 1 2 3 4 5 6 7 8; do
+        for level in 0 1 2 3; do
+            echo "bench_budget: $name: every frame at zoom $zoom, LOD level $level" >&2
+            json=$out/$name-pin-z$zoom-l$level.json
+            "$strata" "${common[@]}" --frame-budget-ms "$budget" --budget-levers zoom,lod --budget-pin "$zoom,$level" \
+                --json "$json" >/dev/null 2>"${json%.json}.log"
+            pinned+=("$json")
+        done
+    done
+    policies=()
+    for levers in zoom lod zoom+lod; do
+        for policy in reactive predictive; do
+            policies+=(--policy "$levers $policy=$out/$name-$levers-$policy.json")
+        done
+    done
+    echo
+    echo "$name: the best state frame by frame (oracle) beside the policies, budget $budget ms"
+    echo
+    python3 "$root/scripts/lib/budget_oracle.py" "$budget" "${pinned[@]}" "${policies[@]}"
 done

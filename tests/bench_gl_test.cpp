@@ -349,3 +349,37 @@ TEST_CASE("bench under a budget reports each frame's PSNR against the same frame
     CHECK(j["modes"][0]["budget"]["frame_psnr"].size() == 6);
     CHECK(j["modes"][0]["budget"]["frame_impostor_objects"].size() == 6);
 }
+
+TEST_CASE("bench with a pinned budget state draws every frame at that state, with each frame's PSNR") {
+    test::glContext();
+    // The same budget nothing meets, which raised the zoom above, now pinned at zoom 2: every
+    // frame at zoom 2 and no governor. The camera holds, so every frame loses the same edges.
+    GpuScene scene(makeBuiltinScene("default"));
+    BenchOptions options;
+    options.modes = {"abuffer"};
+    options.size = {64, 48};
+    options.frames = 4;
+    options.warmupFrames = 0;
+    options.settings = resolveSettings(benchModeIds(options.modes), {});
+    ZoomBudget budget;
+    budget.targetMs = 1e-6;
+    budget.maxZoom = 4;
+    budget.holdFrames = 1;
+    options.budget = budget;
+    options.budgetPin = BudgetPin{2, 0};
+    const BenchReport report = runBench(scene, options);
+    REQUIRE(report.modes.size() == 1);
+    const BenchMode& m = report.modes.front();
+    CHECK(m.frameZoom == std::vector<int>(4, 2));
+    REQUIRE(m.framePsnr.size() == 4);
+    CHECK(m.framePsnr.front() < 40.0);
+    CHECK(m.framePsnr.back() == doctest::Approx(m.framePsnr.front()).epsilon(1e-3));
+    CHECK(m.framePredictedMs == std::vector<double>(4, 0.0));
+    const nlohmann::json j = benchToJson(report);
+    CHECK(j["zoom_controller"] == "pinned");
+    CHECK(j["budget_pin"]["zoom"] == 2);
+    CHECK(j["budget_pin"]["lod_level"] == 0);
+    // A level above 0 needs the LOD lever, which needs an auto LOD controller's previews.
+    options.budgetPin = BudgetPin{1, 1};
+    CHECK_THROWS_WITH_AS(runBench(scene, options), doctest::Contains("needs the LOD lever"), std::invalid_argument);
+}

@@ -3,6 +3,7 @@
 // geometry-bound: no part of it scales with pixels). At 1280x720 the zoom part is 38.864 ms at
 // z = 1, 11.216 at z = 2, 6.099 at z = 3, 4.304 at z = 4 (zoomPixels of 1280x720, 640x360,
 // 427x240, 320x180); the four LOD levels (bounds 4, 8, 16, 32 px) take 30, 18, 10 and 6 ms.
+#include "bench/bench.hpp"
 #include "frame/budget_governor.hpp"
 
 #include <doctest/doctest.h>
@@ -93,6 +94,11 @@ TEST_CASE("budget governor: the synthetic device's times, and the levers and lad
     CHECK(to_string(parseBudgetLevers("lod,zoom")) == "zoom,lod");
     for (const char* bad : {"", "zoom,", "LOD", "zoom,lod,zoom", "technique"})
         CHECK_THROWS_WITH_AS(parseBudgetLevers(bad), doctest::Contains("not one of zoom|lod|zoom,lod"), std::invalid_argument);
+    CHECK(parseBudgetPin("2,1", 4).zoom == 2);
+    CHECK(parseBudgetPin("2,1", 4).lodLevel == 1);
+    CHECK(parseBudgetPin("16,3", 4).lodLevel == 3);
+    for (const char* bad : {"", "2", "0,0", "17,0", "2,4", "2,-1", "2,1x", "x,1", ",1"})
+        CHECK_THROWS_WITH_AS(parseBudgetPin(bad, 4), doctest::Contains("expected ZOOM,LEVEL"), std::invalid_argument);
     CHECK(LodLadder{}.bounds() == std::vector<double>{4.0, 8.0, 16.0, 32.0});
     CHECK(LodLadder{1.5, 3}.bounds() == std::vector<double>{1.5, 3.0, 6.0});
     CHECK(zoomLossPx(1) == 0.0);

@@ -71,6 +71,9 @@ expect_error "--zoom-controller: pid not in {reactive,predictive}" bench builtin
 expect_error "--budget-levers requires --frame-budget-ms" bench builtin:layers:2 --budget-levers lod
 expect_error "budget levers 'fps' are not one of zoom|lod|zoom,lod" bench builtin:layers:2 --frame-budget-ms 10 --budget-levers fps
 expect_error "--budget-levers lod needs --lod auto (the bound steers auto's choice; --lod is geometry)" bench builtin:layers:2 --frame-budget-ms 10 --budget-levers lod --lod geometry
+expect_error "--budget-pin requires --frame-budget-ms" bench builtin:layers:2 --budget-pin 2,0
+expect_error "budget pin '2,4': expected ZOOM,LEVEL with a zoom of 1..16 and a LOD ladder level of 0..3" bench builtin:layers:2 --frame-budget-ms 10 --budget-pin 2,4
+expect_error "a pinned LOD level above 0 needs the LOD lever" bench builtin:layers:2 --frame-budget-ms 10 --budget-pin 2,1 --lod geometry
 expect_error "--budget-levers lod needs --lod auto" view --frame-budget-ms 10 --budget-levers lod --lod impostors
 expect_error "--depth-tie-ulps: Value -1 not in range" render builtin:layers:2 --depth-tie-ulps -1 --out "$work/out.png"
 expect_error "--lod: fast not in {geometry,impostors,auto}" render builtin:layers:2 --lod fast --out "$work/out.png"

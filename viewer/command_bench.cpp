@@ -37,6 +37,7 @@ struct BenchArgs {
     double depthTieUlps = -1.0;  // < 0: the scene's own (Scene::depthTieUlps)
     int referenceSupersample = 1;
     bool wall = false;
+    std::string budgetPin;  // "Z,L": BenchOptions::budgetPin
 };
 
 void run(const BenchArgs& a) {
@@ -67,6 +68,7 @@ void run(const BenchArgs& a) {
         options.zoomController = a.zoom.controllerKind();
         options.levers = a.zoom.levers(a.lod.options().mode);
         options.lodLadder.basePx = a.lod.options().maxErrorPx;
+        if (!a.budgetPin.empty()) options.budgetPin = parseBudgetPin(a.budgetPin, options.lodLadder.levels);
     }
     if (!a.images.empty()) checkFolderCreatable(a.images);
     if (!a.report.empty()) checkFolderCreatable(a.report);
@@ -193,6 +195,10 @@ void registerBenchCommand(CLI::App& app) {
     cmd->add_flag("--wall", args->wall,
                   "draw each technique's frames once more without pass timers or the fragment count, timed by the "
                   "wall clock to a glFinish as the peers time theirs (a 'wall ms' table, JSON wall_ms_median)");
+    cmd->add_option("--budget-pin", args->budgetPin,
+                    "ZOOM,LEVEL: draw every frame at this zoom and LOD ladder level instead of the budget's choice, "
+                    "with the budget run's per-frame figures (scripts/bench_budget_oracle.sh)")
+        ->needs(cmd->get_option("--frame-budget-ms"));
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });
 }

@@ -44,6 +44,27 @@ std::vector<Camera> benchCameras(const GpuScene& scene, const BenchOptions& opti
 
 }  // namespace
 
+BudgetPin parseBudgetPin(const std::string& text, int ladderLevels) {
+    const auto fail = [&] {
+        return std::invalid_argument("budget pin '" + text + "': expected ZOOM,LEVEL with a zoom of 1..16 and a LOD ladder level of 0.." +
+                                     std::to_string(ladderLevels - 1));
+    };
+    const std::size_t comma = text.find(',');
+    if (comma == std::string::npos) throw fail();
+    BudgetPin pin;
+    try {
+        std::size_t used = 0;
+        pin.zoom = std::stoi(text.substr(0, comma), &used);
+        if (used != comma) throw fail();
+        pin.lodLevel = std::stoi(text.substr(comma + 1), &used);
+        if (used != text.size() - comma - 1) throw fail();
+    } catch (const std::logic_error&) {
+        throw fail();
+    }
+    if (pin.zoom < 1 || pin.zoom > 16 || pin.lodLevel < 0 || pin.lodLevel >= ladderLevels) throw fail();
+    return pin;
+}
+
 std::vector<BudgetExcursion> budgetExcursions(const std::vector<double>& ms, double targetMs, double band) {
     std::vector<BudgetExcursion> runs;
     const double limit = targetMs * (1.0 + band);
@@ -104,9 +125,13 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
     const BudgetLevers levers{options.levers.zoom || !options.lodPreview,
                               options.levers.lod && bool(options.lodPreview)};
     if (options.budget) {
-        report.zoomController = std::string(zoomControllerName(options.zoomController));
+        report.zoomController = options.budgetPin ? "pinned" : std::string(zoomControllerName(options.zoomController));
         report.budgetLevers = to_string(levers);
+        report.budgetPin = options.budgetPin;
     }
+    if (options.budgetPin && !options.budget) throw std::invalid_argument("bench: a pinned state needs a frame budget");
+    if (options.budgetPin && options.budgetPin->lodLevel > 0 && !levers.lod)
+        throw std::invalid_argument("bench: a pinned LOD level above 0 needs the LOD lever (--lod auto, --budget-levers lod)");
     // A zoomed technique is compared with the reference at zoom 1: the reference's own rows then
     // render like any other technique's, against a reference technique of their own.
     // So is a technique drawn with stand-ins (BenchOptions::lod): the reference draws geometry.
@@ -206,7 +231,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         std::unique_ptr<Technique> unconstrainedTechnique;
         FrameRenderer unconstrainedRenderer;
         if (options.budget) unconstrainedTechnique = createConfiguredTechnique(id, options.settings);
-        if (options.budget) {
+        if (options.budget && !options.budgetPin) {
             ZoomCostModel model;
             if (budgetNeedsCalibration(options.zoomController, levers))
                 model = calibrateZoomCost(*technique, options.size, options.budget->maxZoom, options.progress).model;
@@ -239,6 +264,9 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 const GovernorChoice choice = controller->choose(load);
                 frameOptions.zoom = choice.zoom;
                 if (levers.lod && !load.lod.levels.empty()) boundPx = options.lodLadder.bound(choice.lodLevel);
+            } else if (options.budgetPin) {
+                frameOptions.zoom = options.budgetPin->zoom;
+                if (levers.lod) boundPx = options.lodLadder.bound(options.budgetPin->lodLevel);
             }
             int frameImpostors = 0;
             if (options.lod) {
@@ -252,11 +280,13 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             }
             FrameResult r = renderer.render(scene, cameras[f], options.size, technique, frameOptions);
             gl::checkGl(("bench frame of " + id).c_str());
-            if (controller) {
-                const double predicted = controller->last().predictedMs;
+            if (options.budget) {
+                // A pinned state has no governor: no prediction, no loss of the rule's.
+                const double predicted = controller ? controller->last().predictedMs : 0.0;
                 mode.frameLodBoundPx.push_back(boundPx);
-                mode.frameLossPx.push_back(controller->last().lossPx);
-                controller->observe(FrameCost{frameOptions.zoom, r.gpuMs, fragmentsRasterized(r.stats), load.zoom});
+                mode.frameLossPx.push_back(controller ? controller->last().lossPx : 0.0);
+                if (controller)
+                    controller->observe(FrameCost{frameOptions.zoom, r.gpuMs, fragmentsRasterized(r.stats), load.zoom});
                 mode.frameZoom.push_back(frameOptions.zoom);
                 mode.frameMs.push_back(r.gpuMs);
                 mode.framePredictedMs.push_back(std::isfinite(predicted) ? predicted : 0.0);

@@ -35,6 +35,14 @@ struct BenchLodFrame {
     std::uint64_t impostorBytes = 0;
 };
 
+// One state of the frame budget's levers: a zoom and an index into the LOD ladder.
+struct BudgetPin {
+    int zoom = 1;
+    int lodLevel = 0;
+};
+// "Z,L" (zoom 1..16, ladder level 0..levels-1); throws std::invalid_argument naming the format.
+BudgetPin parseBudgetPin(const std::string& text, int ladderLevels);
+
 struct BenchOptions {
     std::string sceneName;                  // as given on the command line
     std::vector<std::string> modes;         // technique ids; empty = all
@@ -90,6 +98,10 @@ struct BenchOptions {
     std::function<LodPreview(const Camera&, glm::ivec2 size, const std::vector<double>& boundsPx)> lodPreview;
     BudgetLevers levers{true, false};  // what the budget steers (the LOD lever needs lodPreview)
     LodLadder lodLadder;               // the bounds it steers among
+    // Under a budget, every frame drawn at this state instead of the governor's choice: one
+    // state's frames, times and PSNRs along the path, for scripts/bench_budget_oracle.sh, which
+    // finds the best any policy could have chosen frame by frame. No governor and no calibration.
+    std::optional<BudgetPin> budgetPin;
 };
 
 // A run of consecutive frames over the budget's upper edge (target x (1 + band)).
@@ -182,6 +194,7 @@ struct BenchReport {
     std::optional<ZoomBudget> budget;
     std::string zoomController;        // "reactive" or "predictive" under a budget
     std::string budgetLevers;          // "zoom", "lod" or "zoom,lod" under a budget
+    std::optional<BudgetPin> budgetPin; // BenchOptions::budgetPin
     nlohmann::json lod;                // BenchOptions::lodReport (null without LOD)
     // A signal stopped the run: `modes` are those that completed, of `modesPlanned`.
     bool interrupted = false;

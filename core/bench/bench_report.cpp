@@ -123,6 +123,8 @@ nlohmann::json benchToJson(const BenchReport& r) {
         {"frame_budget_ms", r.budget ? finite(r.budget->targetMs) : 0.0},
         {"zoom_controller", r.zoomController},
         {"budget_levers", r.budgetLevers},
+        {"budget_pin", r.budgetPin ? nlohmann::json{{"zoom", r.budgetPin->zoom}, {"lod_level", r.budgetPin->lodLevel}}
+                                   : nlohmann::json()},
         {"lod", r.lod},
         {"interrupted", r.interrupted},
     };
@@ -143,7 +145,10 @@ std::string benchToTable(const BenchReport& r) {
         if (m.reference != r.reference && m.reference != m.id) otherReferences[m.reference] += (otherReferences[m.reference].empty() ? "" : ", ") + m.id;
     for (const auto& [reference, rows] : otherReferences) out << " (" << reference << " for " << rows << ")";
     out << "\n";
-    if (r.budget)
+    if (r.budget && r.budgetPin)
+        out << "every frame pinned at zoom " << r.budgetPin->zoom << ", LOD ladder level " << r.budgetPin->lodLevel << " ("
+            << fmt("%.2f", r.budget->targetMs) << " ms budget); errors against the reference at zoom 1\n";
+    else if (r.budget)
         out << "zoom chosen per frame by the " << r.zoomController << " controller for " << fmt("%.2f", r.budget->targetMs)
             << " ms (+-" << fmt("%.0f", r.budget->band * 100.0) << " %), zoom " << r.budget->minZoom << ".."
             << r.budget->maxZoom << ", " << r.zoomFilter << "; errors against the reference at zoom 1\n";
