@@ -379,7 +379,32 @@ TEST_CASE("bench with a pinned budget state draws every frame at that state, wit
     CHECK(j["zoom_controller"] == "pinned");
     CHECK(j["budget_pin"]["zoom"] == 2);
     CHECK(j["budget_pin"]["lod_level"] == 0);
-    // A level above 0 needs the LOD lever, which needs an auto LOD controller's previews.
+    // A level above 0 needs the LOD lever, which needs an auto LOD controller's previews; a zoom
+    // above 1 the zoom lever, within the budget's largest zoom.
     options.budgetPin = BudgetPin{1, 1};
     CHECK_THROWS_WITH_AS(runBench(scene, options), doctest::Contains("needs the LOD lever"), std::invalid_argument);
+    options.budgetPin = BudgetPin{5, 0};
+    CHECK_THROWS_WITH_AS(runBench(scene, options), doctest::Contains("the pinned zoom 5 is above --zoom-max 4"),
+                         std::invalid_argument);
+    options.levers = {false, true};
+    options.lodPreview = [](const Camera&, glm::ivec2, const std::vector<double>&) { return LodPreview{}; };
+    options.budgetPin = BudgetPin{2, 0};
+    CHECK_THROWS_WITH_AS(runBench(scene, options), doctest::Contains("needs the zoom lever"), std::invalid_argument);
+
+    // With the LOD lever, every frame, the warm-up's included, asks LOD for the pinned level's
+    // bound: the ladder's base (4 px) x 2^2 at level 2. The stand-ins themselves are LOD's
+    // (none here).
+    options.levers = {true, true};
+    options.warmupFrames = 1;
+    options.budgetPin = BudgetPin{2, 2};
+    std::vector<double> asked;
+    options.lod = [&](const Camera&, glm::ivec2, int, double maxErrorPx) {
+        asked.push_back(maxErrorPx);
+        return BenchLodFrame{};
+    };
+    const BenchReport withLod = runBench(scene, options);
+    REQUIRE(withLod.modes.size() == 1);
+    CHECK(withLod.modes.front().frameLodBoundPx == std::vector<double>(4, 16.0));
+    CHECK(withLod.modes.front().frameZoom == std::vector<int>(4, 2));
+    CHECK(asked == std::vector<double>(5, 16.0));
 }

@@ -74,6 +74,8 @@ expect_error "--budget-levers lod needs --lod auto (the bound steers auto's choi
 expect_error "--budget-pin requires --frame-budget-ms" bench builtin:layers:2 --budget-pin 2,0
 expect_error "budget pin '2,4': expected ZOOM,LEVEL with a zoom of 1..16 and a LOD ladder level of 0..3" bench builtin:layers:2 --frame-budget-ms 10 --budget-pin 2,4
 expect_error "a pinned LOD level above 0 needs the LOD lever" bench builtin:layers:2 --frame-budget-ms 10 --budget-pin 2,1 --lod geometry
+expect_error "a pinned zoom above 1 needs the zoom lever" bench builtin:layers:2 --frame-budget-ms 10 --budget-pin 2,0 --budget-levers lod
+expect_error "the pinned zoom 9 is above --zoom-max 8" bench builtin:layers:2 --frame-budget-ms 10 --budget-pin 9,0
 expect_error "--budget-levers lod needs --lod auto" view --frame-budget-ms 10 --budget-levers lod --lod impostors
 expect_error "--depth-tie-ulps: Value -1 not in range" render builtin:layers:2 --depth-tie-ulps -1 --out "$work/out.png"
 expect_error "--lod: fast not in {geometry,impostors,auto}" render builtin:layers:2 --lod fast --out "$work/out.png"
@@ -248,6 +250,20 @@ assert d['budget_levers'] == 'zoom,lod'
 assert len(b['frame_lod_bound_px']) == len(b['frame_loss_px']) == 6
 assert all(x in (4, 8, 16, 32) for x in b['frame_lod_bound_px']), b['frame_lod_bound_px']
 assert all(x >= 0 for x in b['frame_loss_px'])
+PY
+# A pinned state (the oracle's runs, scripts/bench_budget.sh --oracle): every frame at zoom 2 and
+# the ladder's level 1 (8 px), no governor, the same per-frame figures.
+if "$strata" bench builtin:layers:4 --size 48x32 --frames 3 --warmup 0 --modes ll --frame-budget-ms 5 \
+     --budget-pin 2,1 --json "$tmp/pinned.json" >/dev/null 2>&1 &&
+   python3 - "$tmp/pinned.json" <<'PY'; then ok; else bad "bench --budget-pin JSON"; fi
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d['zoom_controller'] == 'pinned' and d['budget_pin'] == {'zoom': 2, 'lod_level': 1}, d['budget_pin']
+(m,) = d['modes']
+b = m['budget']
+assert b['frame_zoom'] == [2, 2, 2], b['frame_zoom']
+assert b['frame_lod_bound_px'] == [8, 8, 8], b['frame_lod_bound_px']
+assert len(b['frame_psnr']) == len(b['frame_ms']) == 3
 PY
 # Level of detail: forced impostors on a field of 4 (the ground stays geometry: the eye is within
 # 2 of its radii), in the render summary and the bench JSON; geometry bakes nothing.

@@ -68,7 +68,11 @@ void run(const BenchArgs& a) {
         options.zoomController = a.zoom.controllerKind();
         options.levers = a.zoom.levers(a.lod.options().mode);
         options.lodLadder.basePx = a.lod.options().maxErrorPx;
-        if (!a.budgetPin.empty()) options.budgetPin = parseBudgetPin(a.budgetPin, options.lodLadder.levels);
+        // Checked before the scene loads and impostors bake (runBench checks again).
+        if (!a.budgetPin.empty()) {
+            options.budgetPin = parseBudgetPin(a.budgetPin, options.lodLadder.levels);
+            checkBudgetPin(*options.budgetPin, options.budget, options.levers);
+        }
     }
     if (!a.images.empty()) checkFolderCreatable(a.images);
     if (!a.report.empty()) checkFolderCreatable(a.report);
@@ -197,7 +201,7 @@ void registerBenchCommand(CLI::App& app) {
                   "wall clock to a glFinish as the peers time theirs (a 'wall ms' table, JSON wall_ms_median)");
     cmd->add_option("--budget-pin", args->budgetPin,
                     "ZOOM,LEVEL: draw every frame at this zoom and LOD ladder level instead of the budget's choice, "
-                    "with the budget run's per-frame figures (scripts/bench_budget_oracle.sh)")
+                    "with the budget run's per-frame figures (scripts/bench_budget.sh --oracle)")
         ->needs(cmd->get_option("--frame-budget-ms"));
     addSettingsOptions(cmd, args->settings);
     cmd->callback([args] { run(*args); });

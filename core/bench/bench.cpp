@@ -65,6 +65,17 @@ BudgetPin parseBudgetPin(const std::string& text, int ladderLevels) {
     return pin;
 }
 
+void checkBudgetPin(const BudgetPin& pin, const std::optional<ZoomBudget>& budget, BudgetLevers levers) {
+    if (!budget) throw std::invalid_argument("bench: a pinned state needs a frame budget");
+    if (pin.lodLevel > 0 && !levers.lod)
+        throw std::invalid_argument("bench: a pinned LOD level above 0 needs the LOD lever (--lod auto, --budget-levers lod)");
+    if (pin.zoom > 1 && !levers.zoom)
+        throw std::invalid_argument("bench: a pinned zoom above 1 needs the zoom lever (--budget-levers zoom)");
+    if (pin.zoom > budget->maxZoom)
+        throw std::invalid_argument("bench: the pinned zoom " + std::to_string(pin.zoom) + " is above --zoom-max " +
+                                    std::to_string(budget->maxZoom));
+}
+
 std::vector<BudgetExcursion> budgetExcursions(const std::vector<double>& ms, double targetMs, double band) {
     std::vector<BudgetExcursion> runs;
     const double limit = targetMs * (1.0 + band);
@@ -129,9 +140,11 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
         report.budgetLevers = to_string(levers);
         report.budgetPin = options.budgetPin;
     }
-    if (options.budgetPin && !options.budget) throw std::invalid_argument("bench: a pinned state needs a frame budget");
-    if (options.budgetPin && options.budgetPin->lodLevel > 0 && !levers.lod)
-        throw std::invalid_argument("bench: a pinned LOD level above 0 needs the LOD lever (--lod auto, --budget-levers lod)");
+    if (options.budgetPin) checkBudgetPin(*options.budgetPin, options.budget, levers);
+    // A pinned run draws its state from the warm-up on: its first timed frame is not the first
+    // at that zoom (the targets are sized before it).
+    const double pinnedBoundPx =
+        options.budgetPin && levers.lod ? options.lodLadder.bound(options.budgetPin->lodLevel) : 0.0;
     // A zoomed technique is compared with the reference at zoom 1: the reference's own rows then
     // render like any other technique's, against a reference technique of their own.
     // So is a technique drawn with stand-ins (BenchOptions::lod): the reference draws geometry.
@@ -209,10 +222,10 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
 
         FrameOptions frameOptions;
         frameOptions.countFragments = true;
-        frameOptions.zoom = options.budget ? 1 : options.zoom;
+        frameOptions.zoom = options.budgetPin ? options.budgetPin->zoom : options.budget ? 1 : options.zoom;
         frameOptions.zoomFilter = options.zoomFilter;
         if (options.lod)
-            frameOptions.standIns = options.lod(cameras.front(), options.size, options.warmupFrames, 0.0).standIns;
+            frameOptions.standIns = options.lod(cameras.front(), options.size, options.warmupFrames, pinnedBoundPx).standIns;
         for (int w = 0; w < options.warmupFrames; ++w) renderer.render(scene, cameras.front(), options.size, technique, frameOptions);
         gl::checkGl(("bench warm-up of " + id).c_str());
 
@@ -266,7 +279,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 if (levers.lod && !load.lod.levels.empty()) boundPx = options.lodLadder.bound(choice.lodLevel);
             } else if (options.budgetPin) {
                 frameOptions.zoom = options.budgetPin->zoom;
-                if (levers.lod) boundPx = options.lodLadder.bound(options.budgetPin->lodLevel);
+                boundPx = pinnedBoundPx;
             }
             int frameImpostors = 0;
             if (options.lod) {

@@ -42,6 +42,10 @@ struct BudgetPin {
 };
 // "Z,L" (zoom 1..16, ladder level 0..levels-1); throws std::invalid_argument naming the format.
 BudgetPin parseBudgetPin(const std::string& text, int ladderLevels);
+// Throws std::invalid_argument, one line, where a pin cannot be drawn as asked: without a budget,
+// a level above 0 without the LOD lever, a zoom above 1 without the zoom lever or above the
+// budget's largest zoom.
+void checkBudgetPin(const BudgetPin& pin, const std::optional<ZoomBudget>& budget, BudgetLevers levers);
 
 struct BenchOptions {
     std::string sceneName;                  // as given on the command line
@@ -98,9 +102,10 @@ struct BenchOptions {
     std::function<LodPreview(const Camera&, glm::ivec2 size, const std::vector<double>& boundsPx)> lodPreview;
     BudgetLevers levers{true, false};  // what the budget steers (the LOD lever needs lodPreview)
     LodLadder lodLadder;               // the bounds it steers among
-    // Under a budget, every frame drawn at this state instead of the governor's choice: one
-    // state's frames, times and PSNRs along the path, for scripts/bench_budget_oracle.sh, which
-    // finds the best any policy could have chosen frame by frame. No governor and no calibration.
+    // Under a budget, every frame (warm-up included) drawn at this state instead of the governor's
+    // choice: one state's frames, times and PSNRs along the path, for `scripts/bench_budget.sh
+    // --oracle` (scripts/lib/budget_oracle.py), which finds the best state frame by frame. No
+    // governor and no calibration.
     std::optional<BudgetPin> budgetPin;
 };
 
@@ -192,7 +197,7 @@ struct BenchReport {
     std::string zoomFilter = "nearest";
     int referenceSupersample = 1;
     std::optional<ZoomBudget> budget;
-    std::string zoomController;        // "reactive" or "predictive" under a budget
+    std::string zoomController;        // "reactive", "predictive" or "pinned" under a budget
     std::string budgetLevers;          // "zoom", "lod" or "zoom,lod" under a budget
     std::optional<BudgetPin> budgetPin; // BenchOptions::budgetPin
     nlohmann::json lod;                // BenchOptions::lodReport (null without LOD)

@@ -5,14 +5,17 @@ Reads one bench JSON per pinned state (strata bench --budget-pin Z,L: every fram
 and LOD ladder level L, with each frame's time and PSNR against the unconstrained frame) and,
 frame by frame, picks the state an oracle would: among the states whose measured time is within
 the budget's band (target x 1.1), the one with the highest PSNR; where none is, the fastest (as
-the governor's rule does). It knows every frame's cost before drawing it, so no causal policy
-beats it, up to the noise of one draw per state and frame. Done for each lever set (the zoom
-alone at the least bound, LOD alone at zoom 1, both), it says how much a joint policy can gain
-over each lever alone on this path and budget.
+the governor's rule does). It knows every frame's cost before drawing it, so it draws the most
+frames within the band, and on those frames no causal policy scores a higher PSNR, up to the
+noise of one draw per state and frame. (On a frame nothing fits, a policy drawing a slower,
+better state over the band can score more there.) Done for each lever set (the zoom alone at
+the least bound, LOD alone at zoom 1, both), it says how much a joint policy can gain over each
+lever alone on this path and budget.
 
 usage: budget_oracle.py BUDGET_MS PINNED.json... [--policy LABEL=RUN.json ...]
 Prints a markdown table on stdout.
 """
+import argparse
 import json
 import statistics
 import sys
@@ -49,18 +52,18 @@ def oracle(states, allowed, frames, edge):
 
 
 def main(argv):
-    if len(argv) < 3 or argv[1] in ('-h', '--help'):
-        print(__doc__)
-        return 0 if len(argv) > 1 else 2
-    budget = float(argv[1])
-    pinned, policies = [], []
-    args = iter(argv[2:])
-    for a in args:
-        if a == '--policy':
-            label, path = next(args).split('=', 1)
-            policies.append((label, path))
-        else:
-            pinned.append(a)
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('budget', type=float, help='the frame budget in ms')
+    parser.add_argument('pinned', nargs='+', help='one bench JSON per pinned state')
+    parser.add_argument('--policy', action='append', default=[], metavar='LABEL=RUN.json',
+                        help='a budget run to show beside the oracle')
+    args = parser.parse_args(argv[1:])
+    budget, pinned = args.budget, args.pinned
+    policies = []
+    for p in args.policy:
+        if '=' not in p:
+            parser.error("--policy '%s': expected LABEL=RUN.json" % p)
+        policies.append(tuple(p.split('=', 1)))
     states, frames = load_pinned(pinned)
     edge = budget * 1.1
     zooms = sorted({z for z, _ in states})
