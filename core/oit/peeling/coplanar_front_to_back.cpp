@@ -11,12 +11,15 @@
 //           check passed anywhere) + resolve (full screen). Where the count is one the colour
 //           sum is the fragment, so a scene without coplanarity costs one geometry pass a layer.
 //   f2b-3p: depth pass (geometry, GL_GREATER: the next anchor) + band (the far edge of the
-//           layer's tie band as depth) + counting pass (no shading) + shading pass (the ids
-//           found) + resolve. The counting and shading passes test GL_GEQUAL against the band in
-//           hardware, so what lies behind the layer is rejected before they shade it. The band is
-//           a full-screen pass of its own only in the first iteration; after that the resolve
+//           layer's tie band as depth) + counting pass (id min, id max, count; colour sum) +
+//           check + shading pass (the ids found, only if the check passed anywhere) + resolve.
+//           The counting and shading passes test GL_GEQUAL against the band in hardware, so
+//           what lies behind the layer is rejected before they shade it. The band is a
+//           full-screen pass of its own only in the first iteration; after that the resolve
 //           writes it for the state it leaves (a full-screen pass less a layer: f2b-3p / f2b on
-//           builtin:layers:8 and 16 at 256x256, 2.07-2.26 -> 1.97-2.08 on llvmpipe).
+//           builtin:layers:8 and 16 at 256x256, 2.07-2.26 -> 1.97-2.08 on llvmpipe). As in
+//           f2b-2p, a layer of one fragment gets its colour from the counting pass's sum, so
+//           where nothing is coplanar the shading pass is a full-screen check instead.
 // Both start with an initialisation pass (the first anchors, and the total by GL_SAMPLES_PASSED)
 // and end with peel_composite. The loop stops once every fragment is captured (the captured
 // count comes from occlusion queries, no atomics), when an iteration captures nothing, or at
@@ -75,15 +78,11 @@ public:
                     if (iteration == 0) band(frame);
                 }
                 count(frame);
-                std::uint64_t captured = 0;
-                if (threePass_) {
-                    captured = extract(frame);
-                    resolve(frame);
-                } else {
-                    const std::uint64_t coplanar = check(frame);
-                    if (coplanar > 0) extract(frame);
-                    captured = resolve(frame) + coplanar;
-                }
+                // A pixel with two or more captures its id-min and id-max fragments, one with one
+                // fragment that fragment (its colour is the counting pass's sum).
+                const std::uint64_t coplanar = check(frame);
+                if (coplanar > 0) extract(frame);
+                const std::uint64_t captured = resolve(frame) + coplanar;
                 return PeelStep{captured, captured};
             });
         }
@@ -114,15 +113,15 @@ private:
             p.next = buildSceneProgram("oit/peeling/coplanar_next.frag.glsl");
             // The counting and shading passes test against the layer band's far edge (band()).
             p.band = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/coplanar_band.frag.glsl"});
-            p.count = buildSceneProgram("oit/peeling/coplanar_count.frag.glsl", {{"BAND_DEPTH", ""}});
+            p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"BAND_DEPTH", ""}, {"SUM_COLOR", ""}});
             p.extract = scene("oit/peeling/coplanar_extract.frag.glsl", {{"BAND_DEPTH", ""}});
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}});
         } else {
             p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
-            p.extract = scene("oit/peeling/coplanar_extract.frag.glsl", {{"COPLANAR_ONLY", ""}});
-            p.check = fullscreen("oit/peeling/coplanar_check.frag.glsl");
+            p.extract = scene("oit/peeling/coplanar_extract.frag.glsl");
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl");
         }
+        p.check = fullscreen("oit/peeling/coplanar_check.frag.glsl");
         p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl");
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
@@ -153,8 +152,7 @@ private:
             return gl::createFramebuffer(colors);
         };
         initFbo_ = gl::createFramebuffer({state_.id()});
-        countFbo_ = threePass_ ? gl::createFramebuffer({count_.id()})
-                               : withRgb({count_.id(), minColor_.id()}, {minOpacity_.id()});
+        countFbo_ = withRgb({count_.id(), minColor_.id()}, {minOpacity_.id()});
         extractFbo_ = withRgb({minColor_.id(), maxColor_.id()}, {minOpacity_.id(), maxOpacity_.id()});
         resolveFbo_ = withRgb({accum_.id(), layer_.id(), state_.id()}, {accumPasses_.id(), layerPasses_.id()});
         if (threePass_) {
@@ -197,12 +195,10 @@ private:
         glBindTextureUnit(gpu::BIND_COPLANAR_ACCUM_PASSES, accumPasses_.id());
     }
 
-    // Zeroes the id-min fragment's texels (and the id-max one's): "none" for ADD and MAX.
-    void clearFragments(bool max) {
-        for (const gl::Texture* t : {&minColor_, &minOpacity_, &maxColor_, &maxOpacity_}) {
-            const bool isMax = t == &maxColor_ || t == &maxOpacity_;
-            if (*t && isMax == max) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-        }
+    // Zeroes the id-min fragment's texels, the counting pass's colour sum: "none" for ADD.
+    void clearColorSum() {
+        for (const gl::Texture* t : {&minColor_, &minOpacity_})
+            if (*t) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
     }
 
     // MAX of the depth into the state's r (the other channels masked): the first anchors.
@@ -261,14 +257,14 @@ private:
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p count" : "f2b-2p count");
         const float countClear[4] = {kNoId, kNoId, kNoId, 0.0f};
         glClearTexImage(count_.id(), 0, GL_RGBA, GL_FLOAT, countClear);
-        if (!threePass_) clearFragments(false);
+        clearColorSum();
         glBindFramebuffer(GL_FRAMEBUFFER, countFbo_.id());
         layerDepthTest(frame);
         bindTextures(frame);
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE);
         glBlendEquationSeparatei(0, GL_MAX, GL_FUNC_ADD);  // ids and anchor: MAX; count: ADD
-        glBlendEquationi(1, GL_FUNC_ADD);                  // f2b-2p: colour sum
+        glBlendEquationi(1, GL_FUNC_ADD);                  // colour sum
         glBlendEquationi(2, GL_FUNC_ADD);                  // and opacity sum (rgb)
         skipper_.draw(frame, programs_->count, stats_);
         glBlendEquation(GL_FUNC_ADD);
@@ -277,9 +273,10 @@ private:
         ++stats_.passes;
     }
 
-    // f2b-2p: pixels with two or more left in the layer (their colour targets zeroed).
+    // Pixels with two or more left in the layer (their colour targets zeroed, for the
+    // extraction's MAX blending).
     std::uint64_t check(const FrameContext& frame) {
-        gl::ScopedPass pass(frame.timer, "f2b-2p check");
+        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p check" : "f2b-2p check");
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
         bindTextures(frame);
@@ -291,24 +288,19 @@ private:
         return gl::queryResult(samples_);
     }
 
-    // The id-min and id-max fragments' colours; returns the fragments extracted (f2b-3p, late
-    // tests; f2b-2p's count comes from the check and resolve instead).
-    std::uint64_t extract(const FrameContext& frame) {
+    // The id-min and id-max fragments' colours where the check found two or more (and zeroed
+    // both targets; the resolve reads them nowhere else).
+    void extract(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p shade" : "f2b-2p extract");
-        if (threePass_) clearFragments(false);
-        clearFragments(true);
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
         layerDepthTest(frame);
         bindTextures(frame);
         glEnable(GL_BLEND);
         glBlendEquation(GL_MAX);
-        if (threePass_) glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         skipper_.draw(frame, programs_->extract, stats_);
-        if (threePass_) glEndQuery(GL_SAMPLES_PASSED);
         glBlendEquation(GL_FUNC_ADD);
         glDisable(GL_BLEND);
         ++stats_.passes;
-        return threePass_ ? gl::queryResult(samples_) : 0;
     }
 
     // Returns the pixels that captured at least one fragment.
@@ -378,13 +370,13 @@ TechniqueEntry f2b2pEntry() {
 
 TechniqueEntry f2b3pEntry() {
     TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
-                       "3 + sum over layers of 4*ceil(C/2) (depth, tie-test count, shading, resolve per "
-                       "iteration; the first also a band pass, later ones get it from the resolve); no "
-                       "coplanarity: 4D+3; Table 1: 3C(Zall)/2",
+                       "3 + sum over layers of 4*ceil(C/2) + floor(C/2) (depth, tie-test count, check, resolve "
+                       "per iteration, and shading where two or more are left; the first also a band pass, later "
+                       "ones get it from the resolve); no coplanarity: 4D+3; Table 1: 3C(Zall)/2",
                        "w*h*72 B at precision=16: as f2b-2p + next-anchor and band depths (4 each); w*h*104 B "
                        "at 32; + four more RGBA targets in a scene with coloured filters",
                        "coplanarity-aware f2b with a depth pass, a tie-test counting pass and a shading pass "
-                       "per iteration"};
+                       "per iteration (the shading only where a layer holds two or more)"};
     info.rgbTransmittance = true;
     return techniqueEntry<peeling::CoplanarFrontToBack>(info, true);
 }

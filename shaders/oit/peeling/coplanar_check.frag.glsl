@@ -1,5 +1,5 @@
 #version 450 core
-// f2b-2p, after counting: passes (GL_SAMPLES_PASSED) where the layer holds two or more
+// f2b-2p / f2b-3p, after counting: passes (GL_SAMPLES_PASSED) where the layer holds two or more
 // fragments still to extract, and zeroes the colour targets there for the extraction's MAX
 // blending. No pixel passes: no coplanarity left, the extraction pass is not issued.
 #include "peel_bindings.h"

@@ -7,10 +7,10 @@
 //   the anchor of the next layer, so f2b-2p needs no depth pass.
 // BAND_DEPTH (f2b-3p): the depth attachment holds the layer band's far edge (coplanar_band), not
 //   the opaque depth, so the opaque test is done here; fragments behind the band never run.
-// SUM_COLOR (f2b-2p): the layer's fragments add their colour into target 1 (with
+// SUM_COLOR: the layer's fragments add their colour into target 1 (with
 //   STRATA_RGB_TRANSMITTANCE their opacity into target 2, coplanar_fragment.glsl). Where the
 //   count is 1, that sum is the fragment: the pixel needs no extraction pass (no coplanarity,
-//   no cost).
+//   no cost). f2b-3p's sum is of the band's survivors, its layer only.
 #include "surface.glsl"
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"

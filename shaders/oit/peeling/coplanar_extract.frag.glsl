@@ -1,12 +1,10 @@
 #version 450 core
-// f2b-2p / f2b-3p extraction (f2b-3p: its shading pass): the fragments of the layer whose ids
-// the counting pass found, the smallest into target 0 and the largest into target 1 (with
-// STRATA_RGB_TRANSMITTANCE their opacities into targets 2 and 3; coplanar_fragment.glsl) (MAX
-// blending over targets cleared to 0: at most one fragment per pixel writes each, since a
-// pixel has one fragment per (object, primitive)).
-// COPLANAR_ONLY (f2b-2p): only pixels with two or more; a single fragment came with its colour.
-// Without it (f2b-3p) no early tests: GL_SAMPLES_PASSED then counts exactly the fragments
-// extracted (discarded ones never reach the late test).
+// f2b-2p / f2b-3p extraction (f2b-3p: its shading pass), at pixels whose layer holds two or
+// more fragments: those whose ids the counting pass found, the smallest into target 0 and the
+// largest into target 1 (with STRATA_RGB_TRANSMITTANCE their opacities into targets 2 and 3;
+// coplanar_fragment.glsl) (MAX blending over targets the check zeroed: at most one fragment
+// per pixel writes each, since a pixel has one fragment per (object, primitive)). A single
+// fragment came with its colour (the counting pass's SUM_COLOR).
 // BAND_DEPTH (f2b-3p): the depth attachment holds the layer band's far edge (coplanar_band), not
 // the opaque depth, so the opaque test is done here. The shader writes no memory and no depth,
 // so a driver still tests depth before it runs and only the layer's fragments are shaded.
@@ -15,9 +13,7 @@
 #include "coplanar_ids.glsl"
 #include "coplanar_fragment.glsl"
 
-#ifdef COPLANAR_ONLY
 STRATA_EARLY_TESTS_NO_SIDE_EFFECTS  // common/scene_prelude.glsl
-#endif
 layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 #ifdef BAND_DEPTH
 layout(binding = BIND_OPAQUE_DEPTH) uniform sampler2D uOpaqueDepth;
@@ -33,9 +29,7 @@ layout(location = 3) out vec4 outMaxOpacity;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 count = texelFetch(uCount, pixel, 0);
-#ifdef COPLANAR_ONLY
     if (count.a < 1.5) discard;
-#endif
     float anchor = texelFetch(uState, pixel, 0).r;
     float z = gl_FragCoord.z;
 #ifdef BAND_DEPTH
