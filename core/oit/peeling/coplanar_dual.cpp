@@ -4,9 +4,9 @@
 // fragments of each in tie order (coplanar_layer.glsl), so up to four fragments an iteration.
 //
 // Per iteration: counting pass (geometry: per side id min, id max, count and colour sum; the
-// next anchors from the fragments between) + four check draws (full screen, occlusion queries:
-// per side the pixels with one or more and with two or more, the latter zeroing the colour
-// targets) + extraction (geometry, only where a side holds two or more) + resolve (full
+// next anchors from the fragments between) + check (full screen: per side the pixels with one
+// or more and with two or more in two atomic counters, zeroing the colour targets of a side with
+// two or more) + extraction (geometry, only where a side holds two or more) + resolve (full
 // screen). Starts with an initialisation pass (MAX/MIN blending: nearest and farthest, the
 // total by GL_SAMPLES_PASSED) and ends with peel_composite (DUAL).
 //
@@ -16,6 +16,7 @@
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "gl/pass_counters.hpp"
 #include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/coplanar_ids.hpp"
@@ -113,12 +114,7 @@ private:
             p.resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl");
         }
         p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl", {{"DUAL", ""}});
-        p.side = glGetUniformLocation(p.check.id(), "uSide");
-        p.minCount = glGetUniformLocation(p.check.id(), "uMinCount");
-        if (!samples_) {
-            samples_ = gl::createQuery(GL_SAMPLES_PASSED);
-            for (gl::Query& q : checkQueries_) q = gl::createQuery(GL_SAMPLES_PASSED);
-        }
+        if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
 
     void ensureTargets(glm::ivec2 size, ColorModel model) {
@@ -226,35 +222,23 @@ private:
         gl::ScopedPass pass(frame.timer, "dual-2p check");
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
-        glDisable(GL_BLEND);
+        // Zero (src alpha 1) or keep (0) each target: dst x (1 - src alpha), colour and alpha.
+        glEnable(GL_BLEND);
+        glBlendEquation(GL_FUNC_ADD);
+        glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
         bindTextures();
-        const GLuint program = programs_->check.id();
-        Checked c;
-        TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
-        for (int side = 0; side < 2; ++side) {
-            for (int minCount : {2, 1}) {
-                // Two or more: zero this side's two colour targets (and opacity targets) there.
-                // One or more: count only. Targets: front pair, back pair (, the same in opacity).
-                for (GLuint buffer = 0; buffer < (rgb() ? 8u : 4u); ++buffer) {
-                    const GLboolean write = minCount == 2 && int(buffer % 4 / 2) == side;
-                    glColorMaski(buffer, write, write, write, write);
-                }
-                glProgramUniform1i(program, programs_->side, side);
-                glProgramUniform1f(program, programs_->minCount, float(minCount));
-                const gl::Query& q = checkQueries_[std::size_t(side * 2 + (minCount == 2 ? 0 : 1))];
-                glBeginQuery(GL_SAMPLES_PASSED, q.id());
-                drawFullscreen(frame, program);
-                glEndQuery(GL_SAMPLES_PASSED);
-            }
+        checkCounters_.reset();
+        checkCounters_.bind(gpu::BIND_COUNTERS);
+        {
+            TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
+            drawFullscreen(frame, programs_->check.id());
         }
-        // Read once all four draws are queued: one wait, not one per draw.
-        for (int side = 0; side < 2; ++side) {
-            c.coplanar += gl::queryResult(checkQueries_[std::size_t(side * 2)]);
-            c.any += gl::queryResult(checkQueries_[std::size_t(side * 2 + 1)]);
-        }
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        checkCounters_.fence();
+        glBlendFunc(GL_ONE, GL_ZERO);
+        glDisable(GL_BLEND);
         ++stats_.passes;
-        return c;
+        const auto counts = checkCounters_.read();
+        return Checked{counts[1], counts[0]};
     }
 
     void extract(const FrameContext& frame) {
@@ -305,13 +289,12 @@ private:
     struct Programs {
         SceneProgram init, count, extract;
         gl::Program check, resolve[2], composite;  // resolve[1]: the RGB build's back-side draw
-        GLint side = -1, minCount = -1;
     };
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
-    std::array<gl::Query, 4> checkQueries_;  // per side: two or more, one or more
+    gl::PassCounters checkCounters_;  // sides with two or more, sides with one or more
     glm::ivec2 size_{0, 0};
     Side side_[2];
     gl::Texture bound_;

@@ -1,14 +1,22 @@
 #version 450 core
-// dual-2p, after counting, one draw per side and threshold under GL_SAMPLES_PASSED: passes where
-// side uSide (0 front, 1 back) counted at least uMinCount fragments. With uMinCount 2 the host
-// lets it zero that side's colour targets (and opacity targets, STRATA_RGB_TRANSMITTANCE) there (for the extraction's MAX blending); with 1 it
-// writes nothing. The four counts give the fragments captured without atomics.
+// dual-2p, after counting, one full-screen draw: per side (front, back) the pixels with one or
+// more fragments counted and with two or more, tallied in two atomic counters with one atomic per
+// subgroup (subgroup_counter.glsl), from which the host knows the fragments captured and whether
+// to extract. A side with two or more has its colour targets (and opacity targets,
+// STRATA_RGB_TRANSMITTANCE) zeroed here, for the extraction's MAX blending; a side with fewer
+// keeps them: it holds its one fragment's colour, the counting pass's sum. One output zeroes or
+// keeps every target through the host's blend, dst x (1 - src alpha) + 0, with src alpha 1 or 0.
+// Pixels where neither side holds two are discarded after counting (the usual case: no
+// coplanarity, no writes). It was four draws, one per side and threshold under occlusion
+// queries: at 256x256 on llvmpipe a full-screen draw has a fixed part of about 0.2 ms.
+#include "bindings.h"
 #include "peel_bindings.h"
+#include "oit/subgroup_counter.glsl"
 
 layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uFrontCount;
 layout(binding = BIND_COPLANAR_COUNT + BIND_COPLANAR_BACK_OFFSET) uniform sampler2D uBackCount;
-uniform int uSide;
-uniform float uMinCount;
+layout(binding = BIND_COUNTERS, offset = 0) uniform atomic_uint uCoplanarSides;  // sides with two or more
+layout(binding = BIND_COUNTERS, offset = 4) uniform atomic_uint uCountedSides;   // sides with one or more
 layout(location = 0) out vec4 outFrontMin;
 layout(location = 1) out vec4 outFrontMax;
 layout(location = 2) out vec4 outBackMin;
@@ -22,16 +30,24 @@ layout(location = 7) out vec4 outBackMaxOpacity;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    float count = uSide == 0 ? texelFetch(uFrontCount, pixel, 0).a : texelFetch(uBackCount, pixel, 0).a;
-    if (count < uMinCount - 0.5) discard;
-    outFrontMin = vec4(0.0);
-    outFrontMax = vec4(0.0);
-    outBackMin = vec4(0.0);
-    outBackMax = vec4(0.0);
+    float front = texelFetch(uFrontCount, pixel, 0).a;
+    float back = texelFetch(uBackCount, pixel, 0).a;
+    bool frontCoplanar = front > 1.5, backCoplanar = back > 1.5;
+    subgroupCounterCount(uCoplanarSides, frontCoplanar);
+    subgroupCounterCount(uCoplanarSides, backCoplanar);
+    subgroupCounterCount(uCountedSides, front > 0.5);
+    subgroupCounterCount(uCountedSides, back > 0.5);
+    if (!frontCoplanar && !backCoplanar) discard;
+    vec4 frontOut = vec4(0.0, 0.0, 0.0, frontCoplanar ? 1.0 : 0.0);
+    vec4 backOut = vec4(0.0, 0.0, 0.0, backCoplanar ? 1.0 : 0.0);
+    outFrontMin = frontOut;
+    outFrontMax = frontOut;
+    outBackMin = backOut;
+    outBackMax = backOut;
 #ifdef STRATA_RGB_TRANSMITTANCE
-    outFrontMinOpacity = vec4(0.0);
-    outFrontMaxOpacity = vec4(0.0);
-    outBackMinOpacity = vec4(0.0);
-    outBackMaxOpacity = vec4(0.0);
+    outFrontMinOpacity = frontOut;
+    outFrontMaxOpacity = frontOut;
+    outBackMinOpacity = backOut;
+    outBackMaxOpacity = backOut;
 #endif
 }
