@@ -318,15 +318,15 @@ TEST_CASE("advise measures each configuration against the reference and recommen
     CHECK((limited[0].candidate.assignments.empty() && limited[1].candidate.assignments.empty()));
 }
 
-TEST_CASE("bench under a budget reports each frame's PSNR against the same frame without one") {
-    test::glContext();
-    // A budget nothing meets: the reactive controller raises the zoom every frame it may. The first
-    // frame (zoom 1, geometry) equals its unconstrained render; a zoomed one loses the edges.
-    GpuScene scene(makeBuiltinScene("default"));
+namespace {
+
+// abuffer at 64x48, no warm-up, under a budget nothing meets (1e-6 ms), zoom 1..4, a hold of one
+// frame: a reactive controller raises the zoom every frame it may.
+BenchOptions unreachableBudgetRun(int frames) {
     BenchOptions options;
     options.modes = {"abuffer"};
     options.size = {64, 48};
-    options.frames = 6;
+    options.frames = frames;
     options.warmupFrames = 0;
     options.settings = resolveSettings(benchModeIds(options.modes), {});
     ZoomBudget budget;
@@ -335,6 +335,17 @@ TEST_CASE("bench under a budget reports each frame's PSNR against the same frame
     budget.maxZoom = 4;
     budget.holdFrames = 1;
     options.budget = budget;
+    return options;
+}
+
+}  // namespace
+
+TEST_CASE("bench under a budget reports each frame's PSNR against the same frame without one") {
+    test::glContext();
+    // A budget nothing meets: the reactive controller raises the zoom every frame it may. The first
+    // frame (zoom 1, geometry) equals its unconstrained render; a zoomed one loses the edges.
+    GpuScene scene(makeBuiltinScene("default"));
+    BenchOptions options = unreachableBudgetRun(6);
     const BenchReport report = runBench(scene, options);
     REQUIRE(report.modes.size() == 1);
     const BenchMode& m = report.modes.front();
@@ -355,17 +366,7 @@ TEST_CASE("bench with a pinned budget state draws every frame at that state, wit
     // The same budget nothing meets, which raised the zoom above, now pinned at zoom 2: every
     // frame at zoom 2 and no governor. The camera holds, so every frame loses the same edges.
     GpuScene scene(makeBuiltinScene("default"));
-    BenchOptions options;
-    options.modes = {"abuffer"};
-    options.size = {64, 48};
-    options.frames = 4;
-    options.warmupFrames = 0;
-    options.settings = resolveSettings(benchModeIds(options.modes), {});
-    ZoomBudget budget;
-    budget.targetMs = 1e-6;
-    budget.maxZoom = 4;
-    budget.holdFrames = 1;
-    options.budget = budget;
+    BenchOptions options = unreachableBudgetRun(4);
     options.budgetPin = BudgetPin{2, 0};
     const BenchReport report = runBench(scene, options);
     REQUIRE(report.modes.size() == 1);
