@@ -137,6 +137,12 @@ private:
             s.layerPasses = gl::createTexture2D(rgba, size.x, size.y);
             s.accumPasses = gl::createTexture2D(rgba, size.x, size.y);
         }
+        // The check zeroes a side's targets as dst x 0 (a blend that keeps the other side), and
+        // only the extraction writes the max ones: new storage is undefined, and a NaN in it
+        // would survive x 0. The min ones are cleared by every counting pass.
+        for (Side& s : side_)
+            for (const gl::Texture* t : {&s.maxColor, &s.maxOpacity})
+                if (*t) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
         bound_ = gl::createTexture2D(GL_RG32F, size.x, size.y);
         const Side &f = side_[0], &b = side_[1];
         initFbo_ = gl::createFramebuffer({f.state.id(), b.state.id()});

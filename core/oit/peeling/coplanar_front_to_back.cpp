@@ -288,8 +288,9 @@ private:
         return gl::queryResult(samples_);
     }
 
-    // The id-min and id-max fragments' colours where the check found two or more (and zeroed
-    // both targets; the resolve reads them nowhere else).
+    // The id-min and id-max fragments' colours where the check found two or more and zeroed
+    // both targets (the resolve reads the max target nowhere else, and the min target elsewhere
+    // as the counting pass's sum).
     void extract(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p shade" : "f2b-2p extract");
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
@@ -370,7 +371,7 @@ TechniqueEntry f2b2pEntry() {
 
 TechniqueEntry f2b3pEntry() {
     TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
-                       "3 + sum over layers of 4*ceil(C/2) + floor(C/2) (depth, tie-test count, check, resolve "
+                       "3 + sum over layers of (4*ceil(C/2) + floor(C/2)) (depth, tie-test count, check, resolve "
                        "per iteration, and shading where two or more are left; the first also a band pass, later "
                        "ones get it from the resolve); no coplanarity: 4D+3; Table 1: 3C(Zall)/2",
                        "w*h*72 B at precision=16: as f2b-2p + next-anchor and band depths (4 each); w*h*104 B "
