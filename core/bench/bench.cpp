@@ -267,7 +267,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
             // last one rendered when its output is read.
             if (!isReference) referenceFor(reference, referenceId, f);
             GovernorLoad load;
-            double boundPx = 0.0;  // the LOD options' own
+            double boundPx = pinnedBoundPx;  // 0: the LOD options' own
             if (controller) {
                 const Camera& c = cameras[f];
                 load.zoom.displaySize = options.size;
@@ -277,10 +277,7 @@ BenchReport runBench(const GpuScene& scene, const BenchOptions& options) {
                 const GovernorChoice choice = controller->choose(load);
                 frameOptions.zoom = choice.zoom;
                 if (levers.lod && !load.lod.levels.empty()) boundPx = options.lodLadder.bound(choice.lodLevel);
-            } else if (options.budgetPin) {
-                frameOptions.zoom = options.budgetPin->zoom;
-                boundPx = pinnedBoundPx;
-            }
+            }  // a pinned run keeps the zoom and bound it warmed up with
             int frameImpostors = 0;
             if (options.lod) {
                 const auto lodStart = std::chrono::steady_clock::now();
