@@ -77,23 +77,25 @@ TEST_CASE("K coincident quads: every variant captures all K fragments in object 
 }
 
 TEST_CASE("two fragments per iteration: f2b-2p peels K copies in ceil(K/2) iterations") {
-    // f2b-2p: init + per iteration (count, check, extraction where two or more are left,
-    // resolve) + composite. K = 5: iterations with 5, 3, 1 left; the last needs no extraction.
+    // f2b-2p: init + per iteration (count, resolve; an extraction and a second resolve where two
+    // or more are left) + composite. K = 5: iterations with 5, 3, 1 left; the last extracts
+    // nothing. So 2C passes a layer of C, the paper's 2C(Zall).
     Fixture f(makeCoplanarScene(5, 0.5f));
     auto r = test::renderWith(*f.gpu, f.camera, {8, 8}, "f2b-2p");
-    CHECK(r.result.stats.passes == 1 + (4 + 4 + 3) + 1);
-    // No coplanarity: D layers cost D iterations of count, check and resolve.
+    CHECK(r.result.stats.passes == 1 + (4 + 4 + 2) + 1);
+    // No coplanarity: D layers cost D iterations of count and resolve.
     Fixture layers(makeLayersScene(4, 0.3f));
     auto l = test::renderWith(*layers.gpu, layers.camera, {8, 8}, "f2b-2p");
-    CHECK(l.result.stats.passes == 1 + 3 * 4 + 1);
-    // f2b-3p: depth, band, count, check and resolve in the first iteration, and in the three
-    // after it the same without the band (each resolve writes the next one); no shading pass
-    // where every layer holds one fragment.
+    CHECK(l.result.stats.passes == 1 + 2 * 4 + 1);
+    // f2b-3p: depth, band, count and resolve in the first iteration, and in the three after it
+    // the same without the band (each resolve writes the next one); no shading pass where every
+    // layer holds one fragment.
     auto l3 = test::renderWith(*layers.gpu, layers.camera, {8, 8}, "f2b-3p");
-    CHECK(l3.result.stats.passes == 1 + 5 + 4 * 3 + 1);
-    // K = 5 coplanar: the shading pass in the iterations with 5 and 3 left, not with 1.
+    CHECK(l3.result.stats.passes == 1 + 4 + 3 * 3 + 1);
+    // K = 5 coplanar: the shading pass and a second resolve in the iterations with 5 and 3 left,
+    // not with 1.
     auto r3 = test::renderWith(*f.gpu, f.camera, {8, 8}, "f2b-3p");
-    CHECK(r3.result.stats.passes == 1 + (6 + 5 + 4) + 1);
+    CHECK(r3.result.stats.passes == 1 + (6 + 5 + 3) + 1);
 }
 
 TEST_CASE("z-fighting cubes, separated cubes and round-off shells equal the reference, forward and reversed") {

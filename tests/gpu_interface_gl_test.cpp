@@ -253,6 +253,9 @@ std::vector<ProgramCase> programCases() {
         {"uState", tex(BIND_COPLANAR_STATE)},         {"uCount", tex(BIND_COPLANAR_COUNT)},
         {"uMinColor", tex(BIND_COPLANAR_MIN_COLOR)},  {"uMaxColor", tex(BIND_COPLANAR_MAX_COLOR)},
         {"uLayer", tex(BIND_COPLANAR_LAYER)},         {"uAccum", tex(BIND_COPLANAR_ACCUM)}};
+    // The first resolve of an iteration tallies pixels with two or more and with one.
+    const std::map<std::string, Binding> coplanarResolveFirst =
+        with(coplanarResolve, {{"uCoplanarPixels", kCounters}, {"uSinglePixels", kCounters}});
     const GLuint back = BIND_COPLANAR_BACK_OFFSET;
     const std::map<std::string, Binding> coplanarDualResolve = {
         {"uFrontState", tex(BIND_COPLANAR_STATE)},        {"uBackState", tex(BIND_COPLANAR_STATE + back)},
@@ -389,11 +392,13 @@ std::vector<ProgramCase> programCases() {
          {{"uState", tex(BIND_COPLANAR_STATE)}, {"uCount", tex(BIND_COPLANAR_COUNT)},
           {"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"CoplanarIdBase", ssbo(BIND_COPLANAR_ID_BASE)}}},
         {{full, "oit/peeling/coplanar_band.frag.glsl"}, {}, {{"uState", tex(BIND_COPLANAR_STATE)}}},
-        {{full, "oit/peeling/coplanar_check.frag.glsl"}, {}, {{"uCount", tex(BIND_COPLANAR_COUNT)}}},
         {{scene, "oit/peeling/coplanar_next.frag.glsl"}, {},
          {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uState", tex(BIND_COPLANAR_STATE)}}},
-        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {}, coplanarResolve},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {}, coplanarResolveFirst},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"COPLANAR_PIXELS", ""}}, coplanarResolve},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}},
+         with(coplanarResolveFirst, {{"uNextDepth", tex(BIND_COPLANAR_NEXT_DEPTH)}})},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}, {"COPLANAR_PIXELS", ""}},
          with(coplanarResolve, {{"uNextDepth", tex(BIND_COPLANAR_NEXT_DEPTH)}})},
         {{scene, "oit/peeling/coplanar_dual_count.frag.glsl"}, {},
          {{"uFrontState", tex(BIND_COPLANAR_STATE)}, {"uBackState", tex(BIND_COPLANAR_STATE + BIND_COPLANAR_BACK_OFFSET)},
@@ -407,7 +412,7 @@ std::vector<ProgramCase> programCases() {
           {"uCoplanarSides", kCounters}, {"uCountedSides", kCounters}}},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {}, coplanarDualResolve},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}},
-         with(coplanarResolve, coplanarRgb("u", 0))},
+         with(coplanarResolveFirst, coplanarRgb("u", 0))},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_FRONT", ""}},
          with(dualResolveFront, coplanarRgb("uFront", 0))},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}},

@@ -7,19 +7,22 @@
 //
 // Per iteration:
 //   f2b-2p: counting pass (geometry: id min, id max, count, next layer's anchor; colour sum) +
-//           check (full screen: pixels with two or more) + extraction (geometry, only if the
-//           check passed anywhere) + resolve (full screen). Where the count is one the colour
-//           sum is the fragment, so a scene without coplanarity costs one geometry pass a layer.
+//           resolve (full screen) of the pixels whose layer holds one fragment left, which
+//           tallies those holding two or more; only if there are any, an extraction (geometry)
+//           and a second resolve of just those. Where the count is one the colour sum is the
+//           fragment, so a scene without coplanarity costs one geometry and one full-screen pass
+//           a layer, and a layer of C coplanar fragments 2C passes (Table 1: 2C(Zall)).
 //   f2b-3p: depth pass (geometry, GL_GREATER: the next anchor) + band (the far edge of the
 //           layer's tie band as depth) + counting pass (id min, id max, count; colour sum) +
-//           check + shading pass (the ids found, only if the check passed anywhere) + resolve.
+//           resolve of the pixels with one, and where any hold two or more a shading pass (the
+//           ids found) and their resolve.
 //           The counting and shading passes test GL_GEQUAL against the band in hardware, so
 //           what lies behind the layer is rejected before they shade it. The band is a
 //           full-screen pass of its own only in the first iteration; after that the resolve
 //           writes it for the state it leaves (a full-screen pass less a layer: f2b-3p / f2b on
 //           builtin:layers:8 and 16 at 256x256, 2.07-2.26 -> 1.97-2.08 on llvmpipe). As in
 //           f2b-2p, a layer of one fragment gets its colour from the counting pass's sum, so
-//           where nothing is coplanar the shading pass is a full-screen check instead.
+//           where nothing is coplanar there is no shading pass.
 // Both start with an initialisation pass (the first anchors, and the total by GL_SAMPLES_PASSED)
 // and end with peel_composite. The loop stops once every fragment is captured (the captured
 // count comes from occlusion queries, no atomics), when an iteration captures nothing, or at
@@ -31,6 +34,7 @@
 #include "oit/technique.hpp"
 
 #include "common/bindings.h"
+#include "gl/pass_counters.hpp"
 #include "oit/color_model.hpp"
 #include "oit/draw_transparent.hpp"
 #include "oit/peeling/coplanar_ids.hpp"
@@ -60,7 +64,7 @@ public:
         clearAccumulation(accum_.id(), rgb() ? accumPasses_.id() : 0);
         clearAccumulation(layer_.id(), rgb() ? layerPasses_.id() : 0);
         for (GLuint p : {programs_->count.id(), programs_->extract.id(), programs_->next.id(), programs_->band.id(),
-                         threePass_ ? programs_->resolve.id() : 0u})
+                         threePass_ ? programs_->resolve.id() : 0u, threePass_ ? programs_->resolveCoplanar.id() : 0u})
             if (p) setDepthOrderUniforms(frame, p);
 
         loop.setTotal(initialise(frame));
@@ -78,11 +82,14 @@ public:
                     if (iteration == 0) band(frame);
                 }
                 count(frame);
-                // A pixel with two or more captures its id-min and id-max fragments, one with one
-                // fragment that fragment (its colour is the counting pass's sum).
-                const std::uint64_t coplanar = check(frame);
-                if (coplanar > 0) extract(frame);
-                const std::uint64_t captured = resolve(frame) + coplanar;
+                // A pixel with one fragment left captures it (its colour is the counting pass's
+                // sum), one with two or more its id-min and id-max fragments.
+                const Resolved r = resolveSingles(frame);
+                if (r.coplanarPixels > 0) {
+                    extract(frame);
+                    resolveCoplanar(frame);
+                }
+                const std::uint64_t captured = r.singlePixels + 2 * r.coplanarPixels;
                 return PeelStep{captured, captured};
             });
         }
@@ -116,12 +123,14 @@ private:
             p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"BAND_DEPTH", ""}, {"SUM_COLOR", ""}});
             p.extract = scene("oit/peeling/coplanar_extract.frag.glsl", {{"BAND_DEPTH", ""}});
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}});
+            p.resolveCoplanar = fullscreen("oit/peeling/coplanar_resolve.frag.glsl",
+                                           {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}, {"COPLANAR_PIXELS", ""}});
         } else {
             p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
             p.extract = scene("oit/peeling/coplanar_extract.frag.glsl");
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl");
+            p.resolveCoplanar = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"COPLANAR_PIXELS", ""}});
         }
-        p.check = fullscreen("oit/peeling/coplanar_check.frag.glsl");
         p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl");
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
     }
@@ -273,26 +282,13 @@ private:
         ++stats_.passes;
     }
 
-    // Pixels with two or more left in the layer (their colour targets zeroed, for the
-    // extraction's MAX blending).
-    std::uint64_t check(const FrameContext& frame) {
-        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p check" : "f2b-2p check");
-        glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
-        glViewport(0, 0, frame.size.x, frame.size.y);
-        bindTextures(frame);
-        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
-        TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
-        drawFullscreen(frame, programs_->check.id());
-        glEndQuery(GL_SAMPLES_PASSED);
-        ++stats_.passes;
-        return gl::queryResult(samples_);
-    }
-
-    // The id-min and id-max fragments' colours where the check found two or more and zeroed
-    // both targets (the resolve reads the max target nowhere else, and the min target elsewhere
-    // as the counting pass's sum).
+    // The id-min and id-max fragments' colours by MAX blending into zeroed targets, for the
+    // pixels the first resolve left (two or more in the layer). The min target's sums are spent
+    // by then: that resolve read them where the layer held one.
     void extract(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p shade" : "f2b-2p extract");
+        for (const gl::Texture* t : {&minColor_, &maxColor_, &minOpacity_, &maxOpacity_})
+            if (*t) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, nullptr);
         glBindFramebuffer(GL_FRAMEBUFFER, extractFbo_.id());
         layerDepthTest(frame);
         bindTextures(frame);
@@ -304,22 +300,39 @@ private:
         ++stats_.passes;
     }
 
-    // Returns the pixels that captured at least one fragment.
-    std::uint64_t resolve(const FrameContext& frame) {
+    struct Resolved {
+        std::uint64_t coplanarPixels = 0;  // left for the extraction: two or more in the layer
+        std::uint64_t singlePixels = 0;    // resolved: one fragment in the layer
+    };
+
+    // The pixels whose layer holds one fragment; tallies them and those holding more.
+    Resolved resolveSingles(const FrameContext& frame) {
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p resolve" : "f2b-2p resolve");
+        resolveCounters_.reset();
+        resolveCounters_.bind(gpu::BIND_COUNTERS);
+        drawResolve(frame, programs_->resolve.id());
+        resolveCounters_.fence();
+        const auto counts = resolveCounters_.read();
+        return Resolved{counts[0], counts[1]};
+    }
+
+    // The pixels the first resolve left, after their extraction.
+    void resolveCoplanar(const FrameContext& frame) {
+        gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p resolve coplanar" : "f2b-2p resolve coplanar");
+        drawResolve(frame, programs_->resolveCoplanar.id());
+    }
+
+    void drawResolve(const FrameContext& frame, GLuint program) {
         glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_.id());
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
         bindTextures(frame);
         glTextureBarrier();  // it reads its own texel of three (rgb: five) of its attachments
-        glBeginQuery(GL_SAMPLES_PASSED, samples_.id());
         TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         // f2b-3p: the next iteration's band depth too (BAND_OUT), in place of a band pass.
-        if (threePass_) drawFullscreenDepth(frame, programs_->resolve.id());
-        else drawFullscreen(frame, programs_->resolve.id());
-        glEndQuery(GL_SAMPLES_PASSED);
+        if (threePass_) drawFullscreenDepth(frame, program);
+        else drawFullscreen(frame, program);
         ++stats_.passes;
-        return gl::queryResult(samples_);
     }
 
     void composite(const FrameContext& frame) {
@@ -336,13 +349,14 @@ private:
 
     struct Programs {
         SceneProgram init, next, count, extract;
-        gl::Program check, resolve, composite, band;
+        gl::Program resolve, resolveCoplanar, composite, band;
     };
     bool threePass_;
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
+    gl::PassCounters resolveCounters_;  // pixels with two or more left, pixels with one
     glm::ivec2 size_{0, 0};
     gl::Texture state_, count_, minColor_, maxColor_, layer_, accum_, nextDepth_, bandDepth_;
     gl::Texture minOpacity_, maxOpacity_, layerPasses_, accumPasses_;  // the RGB build's second texels
@@ -358,8 +372,9 @@ namespace strata {
 
 TechniqueEntry f2b2pEntry() {
     TechniqueInfo info{"f2b-2p", "coplanarity", true, true,
-                       "1 + sum over layers of 3*ceil(C/2) (+1 extraction per iteration with C >= 2 left) + 1; "
-                       "no coplanarity: 3D+2 (init + D x (count, check, resolve) + composite); Table 1: 2C(Zall)",
+                       "1 + sum over layers of 2C (count and resolve per iteration; an extraction and a second resolve "
+                       "in those with C >= 2 left) + 1; no coplanarity: 2D+2 (init + D x (count, resolve) + composite); "
+                       "Table 1: 2C(Zall)",
                        "w*h*64 B at precision=16: state and count RGBA32F (16 each) + min, max, layer and "
                        "accumulation RGBA16F (8 each); w*h*96 B at 32; + four more RGBA targets in a scene with "
                        "coloured filters; Table 1: 12 words (10 modern)",
@@ -371,9 +386,9 @@ TechniqueEntry f2b2pEntry() {
 
 TechniqueEntry f2b3pEntry() {
     TechniqueInfo info{"f2b-3p", "coplanarity", true, true,
-                       "3 + sum over layers of (4*ceil(C/2) + floor(C/2)) (depth, tie-test count, check, resolve "
-                       "per iteration, and shading where two or more are left; the first also a band pass, later "
-                       "ones get it from the resolve); no coplanarity: 4D+3; Table 1: 3C(Zall)/2",
+                       "3 + sum over layers of (3*ceil(C/2) + 2*floor(C/2)) (depth, tie-test count and resolve per "
+                       "iteration, and shading and a second resolve where two or more are left; the first also a "
+                       "band pass, later ones get it from the resolve); no coplanarity: 3D+3; Table 1: 3C(Zall)/2",
                        "w*h*72 B at precision=16: as f2b-2p + next-anchor and band depths (4 each); w*h*104 B "
                        "at 32; + four more RGBA targets in a scene with coloured filters",
                        "coplanarity-aware f2b with a depth pass, a tie-test counting pass and a shading pass "
