@@ -465,6 +465,12 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}}, with(lists, anchor)},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"ANCHOR", ""}}, with(fabLayer, anchor)},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}, {"ANCHOR", ""}}, with(kbLayer, anchor)},
+        // A layer that stored nothing: the anchors alone, no storage declared or bound.
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}}, anchor},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}}, anchor},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"},
+         {{"LAYER_FAB", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}, {"STRATA_RGB_TRANSMITTANCE", ""}},
+         with(anchor, layerAccum)},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"DUAL", ""}}, lists},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"DUAL", ""}}, fabLayer},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}, {"STRATA_RGB_TRANSMITTANCE", ""}},

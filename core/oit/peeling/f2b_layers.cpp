@@ -100,6 +100,9 @@ private:
         gl::Defines anchored = withColorModel(storage_.defines(), model);
         anchored["ANCHOR"] = "";
         p.resolve = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
+        // Where a layer's capture stored nothing anywhere (no coplanarity): the anchors alone.
+        anchored["ANCHORS_ONLY"] = "";
+        p.resolveAnchors = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/layer_resolve.frag.glsl"}, anchored);
         p.composite = buildFullscreenProgram("oit/peeling/peel_composite.frag.glsl", model);
         if (total_) return;
         anchors_ = gl::createQuery(GL_SAMPLES_PASSED);
@@ -211,7 +214,7 @@ private:
     std::uint64_t resolve(const FrameContext& frame, int set, bool anyStored, TechniqueStats& stats) {
         gl::ScopedPass pass(frame.timer, id_ + " resolve");
         glBindFramebuffer(GL_FRAMEBUFFER, accumFbo_.id());
-        const GLuint program = programs_->resolve.id();
+        const GLuint program = anyStored ? programs_->resolve.id() : programs_->resolveAnchors.id();
         if (rgb()) {
             // The resolve reads and writes its own texel of both targets (layer_resolve.frag.glsl).
             glBindTextureUnit(gpu::BIND_PEEL_ACCUM, accum_.id());
@@ -222,8 +225,7 @@ private:
             glBlendEquation(GL_FUNC_ADD);
             glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // under
         }
-        storage_.bindForResolve(program);
-        glProgramUniform1i(program, glGetUniformLocation(program, "uAnyStored"), anyStored);
+        if (anyStored) storage_.bindForResolve(program);  // ANCHORS_ONLY declares no storage
         glBindTextureUnit(gpu::BIND_ANCHOR, anchor_[set].id());
         glBeginQuery(GL_SAMPLES_PASSED, anchors_.id());
         TransparentAreaScissor scissor(frame);  // nothing was stored outside it: a no-op there
@@ -250,7 +252,7 @@ private:
 
     struct Programs {
         SceneProgram depth, capture, anchor;
-        gl::Program band, resolve, composite;
+        gl::Program band, resolve, resolveAnchors, composite;
     };
     std::string id_;
     LayerStorage storage_;
