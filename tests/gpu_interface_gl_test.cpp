@@ -253,9 +253,12 @@ std::vector<ProgramCase> programCases() {
         {"uState", tex(BIND_COPLANAR_STATE)},         {"uCount", tex(BIND_COPLANAR_COUNT)},
         {"uMinColor", tex(BIND_COPLANAR_MIN_COLOR)},  {"uMaxColor", tex(BIND_COPLANAR_MAX_COLOR)},
         {"uLayer", tex(BIND_COPLANAR_LAYER)},         {"uAccum", tex(BIND_COPLANAR_ACCUM)}};
-    // The first resolve of an iteration tallies pixels with two or more and with one.
-    const std::map<std::string, Binding> coplanarResolveFirst =
+    // The first resolve of an iteration tallies pixels with two or more and with one, and
+    // resolves only the latter: no id-max fragment or open id range to read.
+    std::map<std::string, Binding> coplanarResolveFirst =
         with(coplanarResolve, {{"uCoplanarPixels", kCounters}, {"uSinglePixels", kCounters}});
+    coplanarResolveFirst.erase("uMaxColor");
+    coplanarResolveFirst.erase("uState");
     const GLuint back = BIND_COPLANAR_BACK_OFFSET;
     const std::map<std::string, Binding> coplanarDualResolve = {
         {"uFrontState", tex(BIND_COPLANAR_STATE)},        {"uBackState", tex(BIND_COPLANAR_STATE + back)},
@@ -412,7 +415,11 @@ std::vector<ProgramCase> programCases() {
           {"uCoplanarSides", kCounters}, {"uCountedSides", kCounters}}},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {}, coplanarDualResolve},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}},
-         with(coplanarResolveFirst, coplanarRgb("u", 0))},
+         [&] {
+             auto b = with(coplanarResolveFirst, coplanarRgb("u", 0));
+             b.erase("uMaxOpacity");
+             return b;
+         }()},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_FRONT", ""}},
          with(dualResolveFront, coplanarRgb("uFront", 0))},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}},

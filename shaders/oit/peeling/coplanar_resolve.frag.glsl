@@ -12,7 +12,9 @@
 // the pixels whose layer holds one fragment left (its colour is the counting pass's sum) and
 // tallies in atomic counters (subgroup_counter.glsl) those with one and those with two or more,
 // which it leaves untouched. Only where that tally of two or more is not zero does the host
-// extract and draw the second, COPLANAR_PIXELS, which resolves just those. So where nothing is
+// extract and draw the second, COPLANAR_PIXELS, which resolves just those (and alone reads the
+// id-max fragment and the state: the first's branches for them are compiled out, since llvmpipe
+// runs every branch for every lane, masked). So where nothing is
 // coplanar an iteration is the counting pass and one full-screen pass; a separate full-screen
 // check before the resolve cost f2b-2p 5.1 of 55.9 ms on builtin:layers:16 at 256x256 (llvmpipe).
 // NEXT_FROM_DEPTH (f2b-3p): the next anchor is the depth pass's, not the count target's b.
@@ -28,10 +30,12 @@
 #include "layer_tie.glsl"
 #endif
 
-layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(binding = BIND_COPLANAR_COUNT) uniform sampler2D uCount;
 layout(binding = BIND_COPLANAR_MIN_COLOR) uniform sampler2D uMinColor;
+#ifdef COPLANAR_PIXELS
+layout(binding = BIND_COPLANAR_STATE) uniform sampler2D uState;
 layout(binding = BIND_COPLANAR_MAX_COLOR) uniform sampler2D uMaxColor;
+#endif
 layout(binding = BIND_COPLANAR_LAYER) uniform sampler2D uLayer;
 layout(binding = BIND_COPLANAR_ACCUM) uniform sampler2D uAccum;
 #ifdef NEXT_FROM_DEPTH
@@ -46,7 +50,9 @@ layout(location = 1) out vec4 outLayer;
 layout(location = 2) out vec4 outState;
 #ifdef STRATA_RGB_TRANSMITTANCE
 layout(binding = BIND_COPLANAR_MIN_OPACITY) uniform sampler2D uMinOpacity;
+#ifdef COPLANAR_PIXELS
 layout(binding = BIND_COPLANAR_MAX_OPACITY) uniform sampler2D uMaxOpacity;
+#endif
 layout(binding = BIND_COPLANAR_LAYER_PASSES) uniform sampler2D uLayerPasses;
 layout(binding = BIND_COPLANAR_ACCUM_PASSES) uniform sampler2D uAccumPasses;
 layout(location = 3) out vec4 outAccumPasses;
@@ -64,11 +70,20 @@ void main() {
     subgroupCounterCount(uSinglePixels, single);
     if (!single) discard;
 #endif
-    vec4 state = texelFetch(uState, pixel, 0);
     Partial accum = merged(FETCH_PARTIAL(uAccum, uAccumPasses, pixel), FETCH_FRAGMENT(uMinColor, uMinOpacity, pixel));
     Partial layer = FETCH_PARTIAL(uLayer, uLayerPasses, pixel);
-    if (count.a > 1.5) layer = merged(FETCH_FRAGMENT(uMaxColor, uMaxOpacity, pixel), layer);
-    if (count.a < 2.5) {
+    vec4 state;
+#ifdef COPLANAR_PIXELS
+    layer = merged(FETCH_FRAGMENT(uMaxColor, uMaxOpacity, pixel), layer);
+    bool layerDone = count.a < 2.5;  // two were left, both taken now
+    // Else the same anchor, the open id range narrowed to (min, max).
+    if (!layerDone) state = vec4(texelFetch(uState, pixel, 0).r, -count.r, count.g, 0.0);
+#else
+    // The one fragment left. A build of its own, not a branch on the count: llvmpipe fetches
+    // and merges in every branch for every lane.
+    const bool layerDone = true;
+#endif
+    if (layerDone) {
         accum = merged(accum, layer);
         layer = kEmptyPartial;
 #ifdef NEXT_FROM_DEPTH
@@ -77,8 +92,6 @@ void main() {
 #else
         state = vec4(hasAnchor(count.b) ? count.b : kNoAnchor, 0.0, kAllIds, 0.0);
 #endif
-    } else {
-        state = vec4(state.r, -count.r, count.g, 0.0);
     }
     outAccum = colorTexel(accum);
     outLayer = colorTexel(layer);
