@@ -282,6 +282,14 @@ std::vector<ProgramCase> programCases() {
         if (front || name == "uBackCount") dualResolveFront.emplace(name, binding);
         if (!front || name == "uFrontCount" || name == "uFrontState") dualResolveBack.emplace(name, binding);
     }
+    // The builds for an iteration where no side holds two or more read no id-max fragment and no
+    // state (the RGB back draw still reads the front state, for the bound).
+    auto onePerSide = [](std::map<std::string, Binding> b, bool keepFrontState = false) {
+        for (const char* name : {"uFrontMax", "uBackMax", "uFrontMaxOpacity", "uBackMaxOpacity", "uBackState"})
+            b.erase(name);
+        if (!keepFrontState) b.erase("uFrontState");
+        return b;
+    };
     const std::map<std::string, Binding> layerAccum = {{"uAccum", tex(BIND_PEEL_ACCUM)},
                                                        {"uAccumPasses", tex(BIND_PEEL_ACCUM_FILTER)}};
     const std::map<std::string, Binding> layerBackAccum = {{"uBackAccum", tex(BIND_PEEL_BACK_ACCUM)},
@@ -414,6 +422,7 @@ std::vector<ProgramCase> programCases() {
          {{"uFrontCount", tex(BIND_COPLANAR_COUNT)}, {"uBackCount", tex(BIND_COPLANAR_COUNT + BIND_COPLANAR_BACK_OFFSET)},
           {"uCoplanarSides", kCounters}, {"uCountedSides", kCounters}}},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {}, coplanarDualResolve},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"ONE_PER_SIDE", ""}}, onePerSide(coplanarDualResolve)},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}},
          [&] {
              auto b = with(coplanarResolveFirst, coplanarRgb("u", 0));
@@ -424,6 +433,12 @@ std::vector<ProgramCase> programCases() {
          with(dualResolveFront, coplanarRgb("uFront", 0))},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}},
          with(dualResolveBack, coplanarRgb("uBack", back))},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"},
+         {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_FRONT", ""}, {"ONE_PER_SIDE", ""}},
+         onePerSide(with(dualResolveFront, coplanarRgb("uFront", 0)))},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"},
+         {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}, {"ONE_PER_SIDE", ""}},
+         onePerSide(with(dualResolveBack, coplanarRgb("uBack", back)), true)},
         // buffers
         {{scene, "oit/buffers/fab_store.frag.glsl"}, {},
          {{"uCounts", image(BIND_PIXEL_COUNTS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)},

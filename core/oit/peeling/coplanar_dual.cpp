@@ -75,7 +75,7 @@ public:
                 count(frame);
                 const Checked c = check(frame);
                 if (c.coplanar > 0) extract(frame);
-                resolve(frame);
+                resolve(frame, c.coplanar > 0);
                 return PeelStep{c.coplanar + c.any, c.coplanar + c.any};
             });
         }
@@ -107,11 +107,21 @@ private:
         p.count = buildSceneProgram("oit/peeling/coplanar_dual_count.frag.glsl", withColorModel({}, model));
         p.extract = buildSceneProgram("oit/peeling/coplanar_dual_extract.frag.glsl", withColorModel({}, model));
         p.check = fullscreen("oit/peeling/coplanar_dual_check.frag.glsl");
-        if (model == ColorModel::RgbTransmittance) {
-            p.resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", {{"RESOLVE_FRONT", ""}});
-            p.resolve[1] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", {{"RESOLVE_BACK", ""}});
-        } else {
-            p.resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl");
+        // Each also as the build for an iteration where no side holds two or more (ONE_PER_SIDE).
+        for (const bool one : {false, true}) {
+            gl::Program* resolve = one ? p.resolveOnes : p.resolve;
+            const gl::Defines onePerSide = one ? gl::Defines{{"ONE_PER_SIDE", ""}} : gl::Defines{};
+            auto with = [&](const char* side) {
+                gl::Defines d = onePerSide;
+                if (side) d[side] = "";
+                return d;
+            };
+            if (model == ColorModel::RgbTransmittance) {
+                resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", with("RESOLVE_FRONT"));
+                resolve[1] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", with("RESOLVE_BACK"));
+            } else {
+                resolve[0] = fullscreen("oit/peeling/coplanar_dual_resolve.frag.glsl", with(nullptr));
+            }
         }
         p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl", {{"DUAL", ""}});
         if (!samples_) samples_ = gl::createQuery(GL_SAMPLES_PASSED);
@@ -260,7 +270,8 @@ private:
         ++stats_.passes;
     }
 
-    void resolve(const FrameContext& frame) {
+    // anyCoplanar: whether the check found a side holding two or more anywhere.
+    void resolve(const FrameContext& frame, bool anyCoplanar) {
         gl::ScopedPass pass(frame.timer, "dual-2p resolve");
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
@@ -271,7 +282,7 @@ private:
         for (int draw = 0; draw < (rgb() ? 2 : 1); ++draw) {
             glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_[draw].id());
             glTextureBarrier();
-            drawFullscreen(frame, programs_->resolve[draw].id());
+            drawFullscreen(frame, (anyCoplanar ? programs_->resolve : programs_->resolveOnes)[draw].id());
         }
         ++stats_.passes;
     }
@@ -294,7 +305,8 @@ private:
 
     struct Programs {
         SceneProgram init, count, extract;
-        gl::Program check, resolve[2], composite;  // resolve[1]: the RGB build's back-side draw
+        // resolve[1]: the RGB build's back-side draw; resolveOnes: where no side holds two or more
+        gl::Program check, resolve[2], resolveOnes[2], composite;
     };
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'

@@ -11,7 +11,19 @@
 // two texels (coplanar_layer.glsl), more targets than the eight draw buffers GL guarantees, so
 // the host draws the sides apart: RESOLVE_FRONT, then RESOLVE_BACK, which writes the bound from
 // the front state the first draw left.
+// ONE_PER_SIDE: the build the host draws when the check found no side holding two or more
+// anywhere (no coplanarity: every iteration). It reads no id-max fragment and no state (a layer
+// left open by an earlier iteration still closes). A build of its own, not a branch on the
+// count: llvmpipe fetches and merges in every branch for every lane, masked.
 #include "coplanar_layer.glsl"
+
+#ifdef ONE_PER_SIDE
+#define TWO_OR_MORE(count) false
+#define THREE_OR_MORE(count) false
+#else
+#define TWO_OR_MORE(count) ((count).a > 1.5)
+#define THREE_OR_MORE(count) ((count).a > 2.5)
+#endif
 
 #if !defined(RESOLVE_FRONT) && !defined(RESOLVE_BACK)
 #define RESOLVE_FRONT
@@ -70,35 +82,44 @@ struct Side {
 
 Side resolveFront(ivec2 pixel, vec4 count) {
     Side s = Side(FETCH_PARTIAL(uFrontAccum, uFrontAccumPasses, pixel),
-                  FETCH_PARTIAL(uFrontLayer, uFrontLayerPasses, pixel), texelFetch(uFrontState, pixel, 0));
+                  FETCH_PARTIAL(uFrontLayer, uFrontLayerPasses, pixel), vec4(0.0));
     if (count.a > 0.5) s.accum = merged(s.accum, FETCH_FRAGMENT(uFrontMin, uFrontMinOpacity, pixel));
-    if (count.a > 1.5) s.layer = merged(FETCH_FRAGMENT(uFrontMax, uFrontMaxOpacity, pixel), s.layer);
-    if (count.a < 2.5) {
+#ifndef ONE_PER_SIDE
+    if (TWO_OR_MORE(count)) s.layer = merged(FETCH_FRAGMENT(uFrontMax, uFrontMaxOpacity, pixel), s.layer);
+#endif
+    if (!THREE_OR_MORE(count)) {
         s.accum = merged(s.accum, s.layer);
         s.layer = kEmptyPartial;
         s.state = vec4(hasAnchor(count.b) ? count.b : kNoAnchor, 0.0, kAllIds, 0.0);
     } else {
-        s.state = vec4(s.state.r, -count.r, count.g, 0.0);
+#ifndef ONE_PER_SIDE
+        s.state = vec4(texelFetch(uFrontState, pixel, 0).r, -count.r, count.g, 0.0);
+#endif
     }
     return s;
 }
 
 Side resolveBack(ivec2 pixel, vec4 count) {
     Side s = Side(FETCH_PARTIAL(uBackAccum, uBackAccumPasses, pixel),
-                  FETCH_PARTIAL(uBackLayer, uBackLayerPasses, pixel), texelFetch(uBackState, pixel, 0));
-    if (count.a > 1.5) {
+                  FETCH_PARTIAL(uBackLayer, uBackLayerPasses, pixel), vec4(0.0));
+#ifndef ONE_PER_SIDE
+    if (TWO_OR_MORE(count)) {
         s.accum = merged(FETCH_FRAGMENT(uBackMax, uBackMaxOpacity, pixel), s.accum);
         s.layer = merged(s.layer, FETCH_FRAGMENT(uBackMin, uBackMinOpacity, pixel));
-    } else if (count.a > 0.5) {
+    } else
+#endif
+    if (count.a > 0.5) {
         // The only one: its colour sum.
         s.accum = merged(FETCH_FRAGMENT(uBackMin, uBackMinOpacity, pixel), s.accum);
     }
-    if (count.a < 2.5) {
+    if (!THREE_OR_MORE(count)) {
         s.accum = merged(s.layer, s.accum);
         s.layer = kEmptyPartial;
         s.state = vec4(hasAnchor(-count.b) ? -count.b : kNoAnchor, 0.0, kAllIds, 0.0);
     } else {
-        s.state = vec4(s.state.r, -count.r, count.g, 0.0);
+#ifndef ONE_PER_SIDE
+        s.state = vec4(texelFetch(uBackState, pixel, 0).r, -count.r, count.g, 0.0);
+#endif
     }
     return s;
 }
