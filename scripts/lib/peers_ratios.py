@@ -20,6 +20,14 @@ ROWS = [
     ('f2b-2p / f2b', 'strata f2b-2p', 'strata f2b', 1.3),
     ('f2b-3p / f2b', 'strata f2b-3p', 'strata f2b', 2.0),
     ('dual-2p / dual', 'strata dual-2p', 'strata dual', 1.3),
+    # The coplanarity-aware storage variants against their bases (the same 1.3x aim).
+    ('f2b-ll / f2b', 'strata f2b-ll', 'strata f2b', 1.3),
+    ('f2b-fab / f2b', 'strata f2b-fab', 'strata f2b', 1.3),
+    ('f2b-kb / f2b', 'strata f2b-kb', 'strata f2b', 1.3),
+    ('dual-ll / dual', 'strata dual-ll', 'strata dual', 1.3),
+    ('dual-fab / dual', 'strata dual-fab', 'strata dual', 1.3),
+    ('bun-ll / bun', 'strata bun-ll', 'strata bun', 1.3),
+    ('abuffer-volume / abuffer', 'strata abuffer-volume', 'strata abuffer', 1.5),
 ]
 
 

@@ -22,10 +22,10 @@ void main() {
     float z = gl_FragCoord.z;
     outMinMax = vec2(-2.0);
     if (z > nearest || z < farthest) return;
-    if (inLayer(z, nearest))
-        storeLayerFragment(pixel, 0, storedSurfaceColor().words);
-    else if (inLayer(z, farthest))
-        storeLayerFragment(pixel, 1, storedSurfaceColor().words);
-    else
+    int side = inLayer(z, nearest) ? 0 : (inLayer(z, farthest) ? 1 : -1);
+    if (side < 0) {
         outMinMax = vec2(z, -z);
+        return;
+    }
+    storeLayerFragment(pixel, side, storedSurfaceColor().words);
 }
