@@ -27,7 +27,6 @@ ROWS = [
     ('dual-ll / dual', 'strata dual-ll', 'strata dual', 1.3),
     ('dual-fab / dual', 'strata dual-fab', 'strata dual', 1.3),
     ('bun-ll / bun', 'strata bun-ll', 'strata bun', 1.3),
-    ('abuffer-volume / abuffer', 'strata abuffer-volume', 'strata abuffer', 1.5),
 ]
 
 

@@ -8,8 +8,9 @@
 // or more and with two or more in two atomic counters, zeroing the colour targets of a side with
 // two or more) + extraction (geometry, only where a side holds two or more) + resolve (full
 // screen; where no side holds two or more anywhere, a build that reads no id-max fragment and
-// no state: llvmpipe would fetch them for every pixel behind a branch). Starts with an initialisation pass (MAX/MIN blending: nearest and farthest, the
-// total by GL_SAMPLES_PASSED) and ends with peel_composite (DUAL).
+// no state: llvmpipe would fetch them for every pixel behind a branch). Starts with an
+// initialisation pass (MAX/MIN blending: nearest and farthest, the total by GL_SAMPLES_PASSED)
+// and ends with peel_composite (DUAL).
 //
 // In a scene with coloured filters (oit/color_model.hpp) every colour target gains a second
 // one (coplanar_layer.glsl), and the resolve draws the two sides apart (twelve targets in all,

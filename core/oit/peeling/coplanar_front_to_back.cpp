@@ -25,8 +25,8 @@
 //           where nothing is coplanar there is no shading pass.
 // Both start with an initialisation pass (the first anchors, and the total by GL_SAMPLES_PASSED)
 // and end with peel_composite. The loop stops once every fragment is captured (the captured
-// count comes from occlusion queries, no atomics), when an iteration captures nothing, or at
-// max_passes (an overflow).
+// count comes from the first resolve's two atomic counters, one atomic per subgroup of a
+// full-screen pass), when an iteration captures nothing, or at max_passes (an overflow).
 //
 // In a scene with coloured filters (oit/color_model.hpp) every colour target gains a second
 // one (coplanar_layer.glsl): each fragment's opacity and each partial's transmittance per

@@ -17,12 +17,11 @@
 // count: llvmpipe fetches and merges in every branch for every lane, masked.
 #include "coplanar_layer.glsl"
 
+// Whether more than the two this iteration takes were left on a side: its layer stays open.
 #ifdef ONE_PER_SIDE
-#define TWO_OR_MORE(count) false
-#define THREE_OR_MORE(count) false
+#define MORE_LEFT(count) false
 #else
-#define TWO_OR_MORE(count) ((count).a > 1.5)
-#define THREE_OR_MORE(count) ((count).a > 2.5)
+#define MORE_LEFT(count) ((count).a > 2.5)
 #endif
 
 #if !defined(RESOLVE_FRONT) && !defined(RESOLVE_BACK)
@@ -85,16 +84,13 @@ Side resolveFront(ivec2 pixel, vec4 count) {
                   FETCH_PARTIAL(uFrontLayer, uFrontLayerPasses, pixel), vec4(0.0));
     if (count.a > 0.5) s.accum = merged(s.accum, FETCH_FRAGMENT(uFrontMin, uFrontMinOpacity, pixel));
 #ifndef ONE_PER_SIDE
-    if (TWO_OR_MORE(count)) s.layer = merged(FETCH_FRAGMENT(uFrontMax, uFrontMaxOpacity, pixel), s.layer);
+    if (count.a > 1.5) s.layer = merged(FETCH_FRAGMENT(uFrontMax, uFrontMaxOpacity, pixel), s.layer);
+    if (MORE_LEFT(count)) s.state = vec4(texelFetch(uFrontState, pixel, 0).r, -count.r, count.g, 0.0);
 #endif
-    if (!THREE_OR_MORE(count)) {
+    if (!MORE_LEFT(count)) {
         s.accum = merged(s.accum, s.layer);
         s.layer = kEmptyPartial;
         s.state = vec4(hasAnchor(count.b) ? count.b : kNoAnchor, 0.0, kAllIds, 0.0);
-    } else {
-#ifndef ONE_PER_SIDE
-        s.state = vec4(texelFetch(uFrontState, pixel, 0).r, -count.r, count.g, 0.0);
-#endif
     }
     return s;
 }
@@ -103,7 +99,7 @@ Side resolveBack(ivec2 pixel, vec4 count) {
     Side s = Side(FETCH_PARTIAL(uBackAccum, uBackAccumPasses, pixel),
                   FETCH_PARTIAL(uBackLayer, uBackLayerPasses, pixel), vec4(0.0));
 #ifndef ONE_PER_SIDE
-    if (TWO_OR_MORE(count)) {
+    if (count.a > 1.5) {
         s.accum = merged(FETCH_FRAGMENT(uBackMax, uBackMaxOpacity, pixel), s.accum);
         s.layer = merged(s.layer, FETCH_FRAGMENT(uBackMin, uBackMinOpacity, pixel));
     } else
@@ -112,14 +108,13 @@ Side resolveBack(ivec2 pixel, vec4 count) {
         // The only one: its colour sum.
         s.accum = merged(FETCH_FRAGMENT(uBackMin, uBackMinOpacity, pixel), s.accum);
     }
-    if (!THREE_OR_MORE(count)) {
+#ifndef ONE_PER_SIDE
+    if (MORE_LEFT(count)) s.state = vec4(texelFetch(uBackState, pixel, 0).r, -count.r, count.g, 0.0);
+#endif
+    if (!MORE_LEFT(count)) {
         s.accum = merged(s.layer, s.accum);
         s.layer = kEmptyPartial;
         s.state = vec4(hasAnchor(-count.b) ? -count.b : kNoAnchor, 0.0, kAllIds, 0.0);
-    } else {
-#ifndef ONE_PER_SIDE
-        s.state = vec4(texelFetch(uBackState, pixel, 0).r, -count.r, count.g, 0.0);
-#endif
     }
     return s;
 }
