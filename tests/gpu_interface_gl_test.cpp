@@ -407,9 +407,11 @@ std::vector<ProgramCase> programCases() {
          {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uState", tex(BIND_COPLANAR_STATE)}}},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {}, coplanarResolveFirst},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"COPLANAR_PIXELS", ""}}, coplanarResolve},
-        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}},
+        // f2b-3p's builds: the next anchor from its depth pass, the band's far edge written out.
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}},
          with(coplanarResolveFirst, {{"uNextDepth", tex(BIND_COPLANAR_NEXT_DEPTH)}})},
-        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}, {"COPLANAR_PIXELS", ""}},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"},
+         {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}, {"COPLANAR_PIXELS", ""}},
          with(coplanarResolve, {{"uNextDepth", tex(BIND_COPLANAR_NEXT_DEPTH)}})},
         {{scene, "oit/peeling/coplanar_dual_count.frag.glsl"}, {},
          {{"uFrontState", tex(BIND_COPLANAR_STATE)}, {"uBackState", tex(BIND_COPLANAR_STATE + BIND_COPLANAR_BACK_OFFSET)},
@@ -429,6 +431,8 @@ std::vector<ProgramCase> programCases() {
              b.erase("uMaxOpacity");
              return b;
          }()},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"COPLANAR_PIXELS", ""}},
+         with(coplanarResolve, coplanarRgb("u", 0))},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_FRONT", ""}},
          with(dualResolveFront, coplanarRgb("uFront", 0))},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}},
@@ -490,6 +494,10 @@ std::vector<ProgramCase> programCases() {
         // A layer that stored nothing: the anchors alone, no storage declared or bound.
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_LIST", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}}, anchor},
         {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_KB", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}}, anchor},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"}, {{"LAYER_FAB", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}}, anchor},
+        {{full, "oit/peeling/layer_resolve.frag.glsl"},
+         {{"LAYER_LIST", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}, {"STRATA_RGB_TRANSMITTANCE", ""}},
+         with(anchor, layerAccum)},
         {{full, "oit/peeling/layer_resolve.frag.glsl"},
          {{"LAYER_FAB", ""}, {"ANCHOR", ""}, {"ANCHORS_ONLY", ""}, {"STRATA_RGB_TRANSMITTANCE", ""}},
          with(anchor, layerAccum)},

@@ -2,12 +2,15 @@
 // f2b-2p / f2b-3p extraction (f2b-3p: its shading pass), at pixels whose layer holds two or
 // more fragments: those whose ids the counting pass found, the smallest into target 0 and the
 // largest into target 1 (with STRATA_RGB_TRANSMITTANCE their opacities into targets 2 and 3;
-// coplanar_fragment.glsl) (MAX blending over targets the check zeroed: at most one fragment
-// per pixel writes each, since a pixel has one fragment per (object, primitive)). A single
-// fragment came with its colour (the counting pass's SUM_COLOR).
+// coplanar_fragment.glsl) (MAX blending over targets the host zeroed with glClearTexImage: at
+// most one fragment per pixel writes each, since a pixel has one fragment per (object,
+// primitive)). A single fragment came with its colour (the counting pass's SUM_COLOR), and the
+// resolve before this pass took it: such pixels are discarded here by their count.
 // BAND_DEPTH (f2b-3p): the depth attachment holds the layer band's far edge (coplanar_band), not
 // the opaque depth, so the opaque test is done here. The shader writes no memory and no depth,
-// so a driver still tests depth before it runs and only the layer's fragments are shaded.
+// so a driver still tests depth before it runs and, where a layer holds two or more, only the
+// layer's fragments are shaded. At a pixel the first resolve closed, the band has moved to the
+// next layer already (BAND_OUT); its fragments there cost one count fetch, then the discard.
 #include "surface.glsl"
 #include "coplanar_layer.glsl"
 #include "coplanar_ids.glsl"

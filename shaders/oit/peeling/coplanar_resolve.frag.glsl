@@ -14,9 +14,10 @@
 // which it leaves untouched. Only where that tally of two or more is not zero does the host
 // extract and draw the second, COPLANAR_PIXELS, which resolves just those (and alone reads the
 // id-max fragment and the state: the first's branches for them are compiled out, since llvmpipe
-// runs every branch for every lane, masked). So where nothing is
-// coplanar an iteration is the counting pass and one full-screen pass; a separate full-screen
-// check before the resolve cost f2b-2p 5.1 of 55.9 ms on builtin:layers:16 at 256x256 (llvmpipe).
+// runs every branch for every lane, masked). So where nothing is coplanar an iteration of f2b-2p
+// is the counting pass and one full-screen pass (f2b-3p: its depth pass too); a separate
+// full-screen check before the resolve cost f2b-2p 5.1 of 55.9 ms on builtin:layers:16 at
+// 256x256 (llvmpipe).
 // NEXT_FROM_DEPTH (f2b-3p): the next anchor is the depth pass's, not the count target's b.
 // BAND_OUT (f2b-3p): also writes the far edge of the state's layer as depth, what the band pass
 //   (coplanar_band.frag.glsl) writes, so only the first iteration needs that pass. Where this
