@@ -262,14 +262,17 @@ TEST_CASE("skipping is conservative: skip on and off agree on intersecting and c
     for (const std::string spec : {"cubes:separated", "volumes", "cubes", "default"}) {
         CAPTURE(spec);
         Fixture f(makeBuiltinScene(spec));
-        glm::ivec2 size(40, 30);
-        for (const std::string id : {"f2b", "f2b2", "dual"}) {
-            CAPTURE(id);
-            auto without = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
-            auto with = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));
-            CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
-            CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
-            CHECK(with.result.stats.passes == without.result.stats.passes);
+        // 41x29: odd edges, where the bound's reduction reads 2x2 texels past the last block.
+        for (const glm::ivec2 size : {glm::ivec2(40, 30), glm::ivec2(41, 29)}) {
+            CAPTURE(size);
+            for (const std::string id : {"f2b", "f2b2", "dual"}) {
+                CAPTURE(id);
+                auto without = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=0"}));
+                auto with = test::renderWith(*f.gpu, f.camera, size, *test::makeTechnique(id, {"skip_peeled=1"}));
+                CHECK(compareImages(with.image, without.image).maxAbsError == 0.0);
+                CHECK(with.result.stats.fragmentsCaptured == without.result.stats.fragmentsCaptured);
+                CHECK(with.result.stats.passes == without.result.stats.passes);
+            }
         }
     }
 }

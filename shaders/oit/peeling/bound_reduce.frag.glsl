@@ -4,6 +4,11 @@
 // over each uBlock x uBlock block of pixels. The maximum is the conservative side for both
 // tests in bounds_query.frag.glsl, so an object tested against its screen rectangle here is
 // culled only if a per-pixel test would cull it too, at 1 / uBlock^2 of the fill.
+// The block is read 2x2 texels at a time with textureGather (f2b's skip queries on
+// builtin:layers:16 at 256x256: 4.8 -> 4.2 ms a frame on llvmpipe, the culling unchanged). At
+// an odd edge a gather also reads a texel past the block, wrapped or clamped: a larger maximum,
+// still the conservative side. A depth texture gathers (d, 0, 0, 1) per texel, as texelFetch
+// reads it.
 #include "peel_bindings.h"
 
 layout(binding = BIND_PEEL_PREVIOUS) uniform sampler2D uRemaining;
@@ -15,7 +20,13 @@ void main() {
     ivec2 base = ivec2(gl_FragCoord.xy) * uBlock;
     ivec2 end = min(base + uBlock, size);
     vec2 m = vec2(-3.0);  // below every value the bound takes (depths in [0, 1], -2 for none)
-    for (int y = base.y; y < end.y; ++y)
-        for (int x = base.x; x < end.x; ++x) m = max(m, texelFetch(uRemaining, ivec2(x, y), 0).rg);
+    vec2 invSize = 1.0 / vec2(size);
+    for (int y = base.y; y < end.y; y += 2)
+        for (int x = base.x; x < end.x; x += 2) {
+            vec2 corner = vec2(x + 1, y + 1) * invSize;
+            vec4 r = textureGather(uRemaining, corner, 0);
+            vec4 g = textureGather(uRemaining, corner, 1);
+            m = max(m, vec2(max(max(r.x, r.y), max(r.z, r.w)), max(max(g.x, g.y), max(g.z, g.w))));
+        }
     outMax = m;
 }
