@@ -382,6 +382,7 @@ std::vector<ProgramCase> programCases() {
          {{"uOpaqueColor", tex(BIND_OPAQUE_COLOR)}, {"uBucketDepths", tex(BIND_PEEL_LAYER)},
           {"uColors", tex(BIND_PEEL_ACCUM)}, {"uCaptured", kCounters}}},
         {{full, "oit/peeling/bound_reduce.frag.glsl"}, {}, {{"uRemaining", tex(BIND_PEEL_PREVIOUS)}}},
+        {{full, "oit/peeling/bound_reduce.frag.glsl"}, {{"NEAR_BOUND_ONLY", ""}}, {{"uRemaining", tex(BIND_PEEL_PREVIOUS)}}},
         {{"oit/peeling/bounds_rect.vert.glsl", "oit/peeling/bounds_query.frag.glsl"}, {},
          {{"uReducedBound", tex(BIND_PEEL_PREVIOUS)}}},
         // coplanarity-aware peeling (f2b-2p, f2b-3p, dual-2p)

@@ -29,12 +29,15 @@ GLuint ObjectSkipper::nextQuery() {
 void ObjectSkipper::ensurePrograms() {
     if (reduceProgram_) return;
     reduceProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bound_reduce.frag.glsl"});
+    reduceNearProgram_ = gl::buildProgram({"common/fullscreen.vert.glsl", "oit/peeling/bound_reduce.frag.glsl"},
+                                          {{"NEAR_BOUND_ONLY", ""}});
     rectProgram_ = gl::buildProgram({"oit/peeling/bounds_rect.vert.glsl", "oit/peeling/bounds_query.frag.glsl"});
     rectLocation_ = glGetUniformLocation(rectProgram_.id(), "uRect");
     sidesLocation_ = glGetUniformLocation(rectProgram_.id(), "uSides");
     boxFarLocation_ = glGetUniformLocation(rectProgram_.id(), "uBoxFar");
     boxNearLocation_ = glGetUniformLocation(rectProgram_.id(), "uBoxNear");
-    glProgramUniform1i(reduceProgram_.id(), glGetUniformLocation(reduceProgram_.id(), "uBlock"), kBlock);
+    for (const gl::Program* p : {&reduceProgram_, &reduceNearProgram_})
+        glProgramUniform1i(p->id(), glGetUniformLocation(p->id(), "uBlock"), kBlock);
     emptyVao_ = gl::VertexArray::create();
 }
 
@@ -96,7 +99,10 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     glBindFramebuffer(GL_FRAMEBUFFER, reduceFbo_.id());
     glViewport(0, 0, reducedSize_.x, reducedSize_.y);
     glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, remaining);
-    glUseProgram(reduceProgram_.id());
+    int sideBits = 0;
+    for (RemainingSide side : sides) sideBits |= side == RemainingSide::NotNearerThanR ? 1 : 2;
+    // A bound whose g no query reads is reduced in r alone (half the texel reads).
+    glUseProgram((sideBits == 1 ? reduceNearProgram_ : reduceProgram_).id());
     if (!queriedBlocks_.empty()) {
         glEnable(GL_SCISSOR_TEST);
         glScissor(queriedBlocks_.origin.x, queriedBlocks_.origin.y, queriedBlocks_.size.x, queriedBlocks_.size.y);
@@ -110,8 +116,6 @@ void ObjectSkipper::query(const FrameContext& frame, GLuint remaining, const std
     glBindTextureUnit(gpu::BIND_PEEL_PREVIOUS, reduced_.id());
     const GLuint program = rectProgram_.id();
     glUseProgram(program);
-    int sideBits = 0;
-    for (RemainingSide side : sides) sideBits |= side == RemainingSide::NotNearerThanR ? 1 : 2;
     glProgramUniform1i(program, sidesLocation_, sideBits);
     for (int o : frame.transparentOrder) {
         if (culled_[o] || frame.boundsOf(o).empty()) continue;

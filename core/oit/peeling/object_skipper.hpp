@@ -86,7 +86,7 @@ private:
     std::vector<gl::Query> pool_;
     std::size_t poolUsed_ = 0;
     std::uint64_t queryDraws_ = 0;
-    gl::Program reduceProgram_, rectProgram_;
+    gl::Program reduceProgram_, reduceNearProgram_, rectProgram_;  // reduceNear: r alone
     GLint rectLocation_ = -1, sidesLocation_ = -1, boxFarLocation_ = -1, boxNearLocation_ = -1;
     gl::VertexArray emptyVao_;
     glm::ivec2 reducedSize_{0, 0};
