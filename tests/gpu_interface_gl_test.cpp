@@ -408,6 +408,12 @@ std::vector<ProgramCase> programCases() {
          {{"uOpaqueDepth", tex(BIND_OPAQUE_DEPTH)}, {"uState", tex(BIND_COPLANAR_STATE)}}},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {}, coplanarResolveFirst},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"COPLANAR_PIXELS", ""}}, coplanarResolve},
+        {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NO_OPEN_LAYER", ""}},
+         [&] {
+             auto b = coplanarResolveFirst;
+             b.erase("uLayer");
+             return b;
+         }()},
         // f2b-3p's builds: the next anchor from its depth pass, the band's far edge written out.
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}},
          with(coplanarResolveFirst, {{"uNextDepth", tex(BIND_COPLANAR_NEXT_DEPTH)}})},

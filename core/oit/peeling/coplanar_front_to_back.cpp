@@ -64,8 +64,10 @@ public:
         clearAccumulation(accum_.id(), rgb() ? accumPasses_.id() : 0);
         clearAccumulation(layer_.id(), rgb() ? layerPasses_.id() : 0);
         for (GLuint p : {programs_->count.id(), programs_->extract.id(), programs_->next.id(), programs_->band.id(),
-                         threePass_ ? programs_->resolve.id() : 0u, threePass_ ? programs_->resolveCoplanar.id() : 0u})
+                         threePass_ ? programs_->resolve.id() : 0u, threePass_ ? programs_->resolveNoOpenLayer.id() : 0u,
+                         threePass_ ? programs_->resolveCoplanar.id() : 0u})
             if (p) setDepthOrderUniforms(frame, p);
+        layerOpen_ = false;  // cleared above: no far part is open until a second resolve runs
 
         loop.setTotal(initialise(frame));
         if (loop.total() > 0) {
@@ -88,6 +90,7 @@ public:
                 if (r.coplanarPixels > 0) {
                     extract(frame);
                     resolveCoplanar(frame);
+                    layerOpen_ = true;  // where three or more were left, the far part stays open
                 }
                 const std::uint64_t captured = r.singlePixels + 2 * r.coplanarPixels;
                 return PeelStep{captured, captured};
@@ -123,12 +126,15 @@ private:
             p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"BAND_DEPTH", ""}, {"SUM_COLOR", ""}});
             p.extract = scene("oit/peeling/coplanar_extract.frag.glsl", {{"BAND_DEPTH", ""}});
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}});
+            p.resolveNoOpenLayer = fullscreen("oit/peeling/coplanar_resolve.frag.glsl",
+                                              {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}, {"NO_OPEN_LAYER", ""}});
             p.resolveCoplanar = fullscreen("oit/peeling/coplanar_resolve.frag.glsl",
                                            {{"NEXT_FROM_DEPTH", ""}, {"BAND_OUT", ""}, {"COPLANAR_PIXELS", ""}});
         } else {
             p.count = scene("oit/peeling/coplanar_count.frag.glsl", {{"NEXT_ANCHOR", ""}, {"SUM_COLOR", ""}});
             p.extract = scene("oit/peeling/coplanar_extract.frag.glsl");
             p.resolve = fullscreen("oit/peeling/coplanar_resolve.frag.glsl");
+            p.resolveNoOpenLayer = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"NO_OPEN_LAYER", ""}});
             p.resolveCoplanar = fullscreen("oit/peeling/coplanar_resolve.frag.glsl", {{"COPLANAR_PIXELS", ""}});
         }
         p.composite = fullscreen("oit/peeling/peel_composite.frag.glsl");
@@ -310,7 +316,17 @@ private:
         gl::ScopedPass pass(frame.timer, threePass_ ? "f2b-3p resolve" : "f2b-2p resolve");
         resolveCounters_.reset();
         resolveCounters_.bind(gpu::BIND_COUNTERS);
-        drawResolve(frame, programs_->resolve.id());
+        if (layerOpen_) {
+            drawResolve(frame, programs_->resolve.id());
+        } else {
+            // The far part's targets (draw buffers 1, and 4 with coloured filters) keep their
+            // clear: NO_OPEN_LAYER writes nothing meaningful there.
+            glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            if (rgb()) glColorMaski(4, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            drawResolve(frame, programs_->resolveNoOpenLayer.id());
+            glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            if (rgb()) glColorMaski(4, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        }
         resolveCounters_.fence();
         const auto counts = resolveCounters_.read();
         return Resolved{counts[0], counts[1]};
@@ -349,9 +365,11 @@ private:
 
     struct Programs {
         SceneProgram init, next, count, extract;
-        gl::Program resolve, resolveCoplanar, composite, band;
+        // resolveNoOpenLayer: the first resolve while no far part is open (NO_OPEN_LAYER)
+        gl::Program resolve, resolveNoOpenLayer, resolveCoplanar, composite, band;
     };
     bool threePass_;
+    bool layerOpen_ = false;  // this frame: a second resolve ran, so a far part may be open
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp

@@ -18,6 +18,9 @@
 // is the counting pass and one full-screen pass (f2b-3p: its depth pass too); a separate
 // full-screen check before the resolve cost f2b-2p 5.1 of 55.9 ms on builtin:layers:16 at
 // 256x256 (llvmpipe).
+// NO_OPEN_LAYER (first draw only): the build the host draws while no second draw has run this
+//   frame, so no pixel has a layer's far part open: it neither reads nor writes that target
+//   (the host masks it), which keeps its clear, the empty partial.
 // NEXT_FROM_DEPTH (f2b-3p): the next anchor is the depth pass's, not the count target's b.
 // BAND_OUT (f2b-3p): also writes the far edge of the state's layer as depth, what the band pass
 //   (coplanar_band.frag.glsl) writes, so only the first iteration needs that pass. Where this
@@ -72,7 +75,11 @@ void main() {
     if (!single) discard;
 #endif
     Partial accum = merged(FETCH_PARTIAL(uAccum, uAccumPasses, pixel), FETCH_FRAGMENT(uMinColor, uMinOpacity, pixel));
+#ifdef NO_OPEN_LAYER
+    Partial layer = kEmptyPartial;
+#else
     Partial layer = FETCH_PARTIAL(uLayer, uLayerPasses, pixel);
+#endif
     vec4 state;
 #ifdef COPLANAR_PIXELS
     layer = merged(FETCH_FRAGMENT(uMaxColor, uMaxOpacity, pixel), layer);
