@@ -432,6 +432,13 @@ std::vector<ProgramCase> programCases() {
           {"uCoplanarSides", kCounters}, {"uCountedSides", kCounters}}},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {}, coplanarDualResolve},
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"ONE_PER_SIDE", ""}}, onePerSide(coplanarDualResolve)},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"}, {{"ONE_PER_SIDE", ""}, {"NO_OPEN_LAYER", ""}},
+         [&] {
+             auto b = onePerSide(coplanarDualResolve);
+             b.erase("uFrontLayer");
+             b.erase("uBackLayer");
+             return b;
+         }()},
         {{full, "oit/peeling/coplanar_resolve.frag.glsl"}, {{"STRATA_RGB_TRANSMITTANCE", ""}},
          [&] {
              auto b = with(coplanarResolveFirst, coplanarRgb("u", 0));
@@ -450,6 +457,14 @@ std::vector<ProgramCase> programCases() {
         {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"},
          {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}, {"ONE_PER_SIDE", ""}},
          onePerSide(with(dualResolveBack, coplanarRgb("uBack", back)), true)},
+        {{full, "oit/peeling/coplanar_dual_resolve.frag.glsl"},
+         {{"STRATA_RGB_TRANSMITTANCE", ""}, {"RESOLVE_BACK", ""}, {"ONE_PER_SIDE", ""}, {"NO_OPEN_LAYER", ""}},
+         [&] {
+             auto b = onePerSide(with(dualResolveBack, coplanarRgb("uBack", back)), true);
+             b.erase("uBackLayer");
+             b.erase("uBackLayerPasses");
+             return b;
+         }()},
         // buffers
         {{scene, "oit/buffers/fab_store.frag.glsl"}, {},
          {{"uCounts", image(BIND_PIXEL_COUNTS)}, {"FragmentEntries", ssbo(BIND_ENTRIES)},

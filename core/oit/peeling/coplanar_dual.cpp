@@ -60,6 +60,7 @@ public:
             clearAccumulation(s.accum.id(), rgb() ? s.accumPasses.id() : 0);
             clearAccumulation(s.layer.id(), rgb() ? s.layerPasses.id() : 0);
         }
+        layerOpen_ = false;  // cleared above: none open until an iteration leaves one
         glClearTexImage(bound_.id(), 0, GL_RGBA, GL_FLOAT, nothingLeft);
         setDepthOrderUniforms(frame, programs_->count.id());
         setDepthOrderUniforms(frame, programs_->extract.id());
@@ -92,6 +93,9 @@ public:
     }
 
 private:
+    // The resolve's builds (coplanar_dual_resolve.frag.glsl).
+    enum ResolveBuild { kFullResolve, kOnePerSide, kOnePerSideNoOpenLayer, kResolveBuilds };
+
     struct Checked {
         std::uint64_t any = 0;       // pixel-sides with one or more counted
         std::uint64_t coplanar = 0;  // pixel-sides with two or more
@@ -109,12 +113,14 @@ private:
         p.count = buildSceneProgram("oit/peeling/coplanar_dual_count.frag.glsl", withColorModel({}, model));
         p.extract = buildSceneProgram("oit/peeling/coplanar_dual_extract.frag.glsl", withColorModel({}, model));
         p.check = fullscreen("oit/peeling/coplanar_dual_check.frag.glsl");
-        // Each also as the build for an iteration where no side holds two or more (ONE_PER_SIDE).
-        for (const bool one : {false, true}) {
-            gl::Program* resolve = one ? p.resolveOnes : p.resolve;
-            const gl::Defines onePerSide = one ? gl::Defines{{"ONE_PER_SIDE", ""}} : gl::Defines{};
+        // Each as three builds: the full one, one for an iteration where no side holds two or more
+        // (ONE_PER_SIDE), and one for such an iteration before any layer part was left open.
+        const gl::Defines builds[kResolveBuilds] = {
+            {}, {{"ONE_PER_SIDE", ""}}, {{"ONE_PER_SIDE", ""}, {"NO_OPEN_LAYER", ""}}};
+        for (int b = 0; b < kResolveBuilds; ++b) {
+            gl::Program* resolve = p.resolve[b];
             auto with = [&](const char* side) {
-                gl::Defines d = onePerSide;
+                gl::Defines d = builds[b];
                 if (side) d[side] = "";
                 return d;
             };
@@ -274,6 +280,8 @@ private:
 
     // anyCoplanar: whether the check found a side holding two or more anywhere.
     void resolve(const FrameContext& frame, bool anyCoplanar) {
+        const int build = anyCoplanar ? kFullResolve : (layerOpen_ ? kOnePerSide : kOnePerSideNoOpenLayer);
+        if (anyCoplanar) layerOpen_ = true;  // where three or more were left, a layer part stays open
         gl::ScopedPass pass(frame.timer, "dual-2p resolve");
         glViewport(0, 0, frame.size.x, frame.size.y);
         glDisable(GL_BLEND);
@@ -281,10 +289,16 @@ private:
         TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         // Each draw reads its own texel of its attachments; the RGB build's back draw, the
         // state its front draw wrote.
+        // NO_OPEN_LAYER writes nothing meaningful to the layer parts: they keep their clear.
+        // Their draw buffers: 1 and 3 in the one draw, 1 and 4 (their passes) in each RGB draw.
+        const GLuint layerBuffers[2] = {1, rgb() ? 4u : 3u};
         for (int draw = 0; draw < (rgb() ? 2 : 1); ++draw) {
             glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_[draw].id());
             glTextureBarrier();
-            drawFullscreen(frame, (anyCoplanar ? programs_->resolve : programs_->resolveOnes)[draw].id());
+            if (build == kOnePerSideNoOpenLayer)
+                for (GLuint i : layerBuffers) glColorMaski(i, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            drawFullscreen(frame, programs_->resolve[build][draw].id());
+            for (GLuint i : layerBuffers) glColorMaski(i, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         ++stats_.passes;
     }
@@ -307,14 +321,15 @@ private:
 
     struct Programs {
         SceneProgram init, count, extract;
-        // resolve[1]: the RGB build's back-side draw; resolveOnes: where no side holds two or more
-        gl::Program check, resolve[2], resolveOnes[2], composite;
+        // resolve[build][1]: the RGB build's back-side draw
+        gl::Program check, resolve[kResolveBuilds][2], composite;
     };
     int allocatedPrecision_ = 0;
     ColorModel model_ = ColorModel::Scalar;  // the targets'
     ProgramsPerColorModel<Programs> programs_;  // oit/color_model.hpp
     gl::Query samples_;
     gl::PassCounters checkCounters_;  // sides with two or more, sides with one or more
+    bool layerOpen_ = false;          // this frame: a full resolve ran, so a layer part may be open
     glm::ivec2 size_{0, 0};
     Side side_[2];
     gl::Texture bound_;

@@ -15,7 +15,16 @@
 // anywhere (no coplanarity: every iteration). It reads no id-max fragment and no state (a layer
 // left open by an earlier iteration still closes). A build of its own, not a branch on the
 // count: llvmpipe fetches and merges in every branch for every lane, masked.
+// NO_OPEN_LAYER (with ONE_PER_SIDE): also no layer part open on either side, which holds until
+// the frame's first iteration with two or more on a side: the build reads no layer part and
+// the host masks those targets, which keep their clear, the empty partial.
 #include "coplanar_layer.glsl"
+
+#ifdef NO_OPEN_LAYER
+#define FETCH_LAYER_PART(colors, passes, pixel) kEmptyPartial
+#else
+#define FETCH_LAYER_PART(colors, passes, pixel) FETCH_PARTIAL(colors, passes, pixel)
+#endif
 
 // Whether more than the two this iteration takes were left on a side: its layer stays open.
 #ifdef ONE_PER_SIDE
@@ -81,7 +90,7 @@ struct Side {
 
 Side resolveFront(ivec2 pixel, vec4 count) {
     Side s = Side(FETCH_PARTIAL(uFrontAccum, uFrontAccumPasses, pixel),
-                  FETCH_PARTIAL(uFrontLayer, uFrontLayerPasses, pixel), vec4(0.0));
+                  FETCH_LAYER_PART(uFrontLayer, uFrontLayerPasses, pixel), vec4(0.0));
     if (count.a > 0.5) s.accum = merged(s.accum, FETCH_FRAGMENT(uFrontMin, uFrontMinOpacity, pixel));
 #ifndef ONE_PER_SIDE
     if (count.a > 1.5) s.layer = merged(FETCH_FRAGMENT(uFrontMax, uFrontMaxOpacity, pixel), s.layer);
@@ -97,7 +106,7 @@ Side resolveFront(ivec2 pixel, vec4 count) {
 
 Side resolveBack(ivec2 pixel, vec4 count) {
     Side s = Side(FETCH_PARTIAL(uBackAccum, uBackAccumPasses, pixel),
-                  FETCH_PARTIAL(uBackLayer, uBackLayerPasses, pixel), vec4(0.0));
+                  FETCH_LAYER_PART(uBackLayer, uBackLayerPasses, pixel), vec4(0.0));
 #ifndef ONE_PER_SIDE
     if (count.a > 1.5) {
         s.accum = merged(FETCH_FRAGMENT(uBackMax, uBackMaxOpacity, pixel), s.accum);
