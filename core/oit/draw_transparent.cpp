@@ -43,6 +43,14 @@ TransparentAreaScissor::~TransparentAreaScissor() {
     if (on_) glDisable(GL_SCISSOR_TEST);
 }
 
+MaskedDrawBuffers::MaskedDrawBuffers(std::vector<GLuint> buffers) : buffers_(std::move(buffers)) {
+    for (GLuint i : buffers_) glColorMaski(i, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+}
+
+MaskedDrawBuffers::~MaskedDrawBuffers() {
+    for (GLuint i : buffers_) glColorMaski(i, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
 void drawFullscreen(const FrameContext& frame, GLuint program) {
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);

@@ -44,6 +44,20 @@ private:
     bool on_ = false;
 };
 
+// Masks colour writes to the given draw buffers of the bound framebuffer in its scope, for a
+// shader build that leaves those targets as they are (the coplanarity variants' NO_OPEN_LAYER
+// resolves): what it writes there is not kept. Unmasked after.
+class MaskedDrawBuffers {
+public:
+    explicit MaskedDrawBuffers(std::vector<GLuint> buffers);
+    ~MaskedDrawBuffers();
+    MaskedDrawBuffers(const MaskedDrawBuffers&) = delete;
+    MaskedDrawBuffers& operator=(const MaskedDrawBuffers&) = delete;
+
+private:
+    std::vector<GLuint> buffers_;
+};
+
 // Sets the uniforms of shaders/oit/ordered_composite.glsl (the tie rule of
 // render/depth_order.hpp) on a resolve program: the camera's n / (f - n) and the scene's
 // relative tie tolerance.

@@ -289,16 +289,15 @@ private:
         TransparentAreaScissor scissor(frame);  // nothing was counted outside it: a no-op there
         // Each draw reads its own texel of its attachments; the RGB build's back draw, the
         // state its front draw wrote.
-        // NO_OPEN_LAYER writes nothing meaningful to the layer parts: they keep their clear.
-        // Their draw buffers: 1 and 3 in the one draw, 1 and 4 (their passes) in each RGB draw.
-        const GLuint layerBuffers[2] = {1, rgb() ? 4u : 3u};
+        // NO_OPEN_LAYER leaves the layer parts their clear, the empty partial. Their draw
+        // buffers: 1 and 3 in the one draw, 1 and 4 (their passes) in each RGB draw.
+        std::vector<GLuint> layerParts;
+        if (build == kOnePerSideNoOpenLayer) layerParts = {1, rgb() ? 4u : 3u};
         for (int draw = 0; draw < (rgb() ? 2 : 1); ++draw) {
             glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_[draw].id());
             glTextureBarrier();
-            if (build == kOnePerSideNoOpenLayer)
-                for (GLuint i : layerBuffers) glColorMaski(i, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            MaskedDrawBuffers keep(layerParts);
             drawFullscreen(frame, programs_->resolve[build][draw].id());
-            for (GLuint i : layerBuffers) glColorMaski(i, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         ++stats_.passes;
     }

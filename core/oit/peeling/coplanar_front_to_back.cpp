@@ -320,12 +320,9 @@ private:
             drawResolve(frame, programs_->resolve.id());
         } else {
             // The far part's targets (draw buffers 1, and 4 with coloured filters) keep their
-            // clear: NO_OPEN_LAYER writes nothing meaningful there.
-            glColorMaski(1, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            if (rgb()) glColorMaski(4, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            // clear, the empty partial.
+            MaskedDrawBuffers farPart(rgb() ? std::vector<GLuint>{1, 4} : std::vector<GLuint>{1});
             drawResolve(frame, programs_->resolveNoOpenLayer.id());
-            glColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            if (rgb()) glColorMaski(4, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         resolveCounters_.fence();
         const auto counts = resolveCounters_.read();

@@ -16,8 +16,9 @@
 // ANCHORS_ONLY (with ANCHOR): the build the host draws when the capture stored nothing anywhere,
 // f2b's blend of the anchors, without the storage. It is a build of its own, not a uniform's
 // branch: llvmpipe runs every branch of a shader for every lane, masked, so the storage reads
-// behind a uniform that skipped them still cost their time (f2b-ll's resolve on builtin:layers:16 at 256x256: 12.7 ms
-// with the branch, 5.8 as a build of its own, f2b's blend 5.4).
+// behind a uniform that skipped them still cost their time (f2b-ll's resolve on
+// builtin:layers:16 at 256x256: 12.7 ms with the branch, 5.8 as a build of its own, f2b's
+// blend 5.4).
 #include "bindings.h"
 #include "peel_bindings.h"
 #include "oit/packed_color.glsl"
