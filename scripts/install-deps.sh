@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Strata builds, tests and plots with, when any is missing.
 # With --test, also what only the test tree needs: a browser and an HTML validator for the demo
-# report's test (tests/report_browser_test.sh). Safe to run repeatedly: it does nothing when
-# everything is present.
+# report's test (tests/report_browser_test.sh). With --peers, also what
+# ../shared/tools/peers/peers.sh builds its VTK peer with (issue 25's side-by-side runs). Safe to
+# run repeatedly: it does nothing when everything is present.
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -13,8 +14,9 @@ packages=(
 )
 case "${1:-}" in
   --test) packages+=(chromium tidy) ;;
+  --peers) packages+=(libvtk9-dev libopenmpi-dev) ;;
   "") ;;
-  *) echo "usage: install-deps.sh [--test]" >&2; exit 2 ;;
+  *) echo "usage: install-deps.sh [--test | --peers]" >&2; exit 2 ;;
 esac
 missing=()
 for p in "${packages[@]}"; do

@@ -35,7 +35,7 @@ TEST_CASE("device defaults: Mesa's software rasterizers are software, a GPU is n
 
 TEST_CASE("device defaults: dual finds its range by atomics on a hardware renderer only") {
     const std::vector<std::string> ids = {"f2b", "dual", "abuffer"};
-    CHECK(deviceDefaultSettings(ids, kLlvmpipe).empty());
+    CHECK(deviceDefaultSettings(ids, kLlvmpipe).empty());  // none of these has a software default
     const auto hardware = deviceDefaultSettings(ids, kH200);
     REQUIRE(hardware.size() == 1);
     CHECK(hardware[0].text == "dual.atomic_range=1");
@@ -59,4 +59,18 @@ TEST_CASE("device defaults: --set and presets override them, and techniques with
     // Without dual among the ids the default is left out, so resolving cannot fail on it.
     CHECK(deviceDefaultSettings({"f2b", "abuffer"}, kH200).empty());
     CHECK_NOTHROW(resolveSettingsForDevice({"f2b"}, {}, kH200));
+}
+
+TEST_CASE("device defaults: wboit accumulates in 32-bit floats on a software renderer only") {
+    const std::vector<std::string> ids = {"wboit", "dual"};
+    const auto software = deviceDefaultSettings(ids, kLlvmpipe);
+    REQUIRE(software.size() == 1);
+    CHECK(software[0].text == "wboit.precision=32");
+    CHECK(software[0].origin.find("llvmpipe") != std::string::npos);
+    CHECK(valueOf(resolveSettingsForDevice(ids, {}, kLlvmpipe), "wboit", "precision") == 32);
+    CHECK(valueOf(resolveSettingsForDevice(ids, {}, kH200), "wboit", "precision") == 16);
+    CHECK(valueOf(resolveSettings(ids, {}), "wboit", "precision") == 16);  // the struct's default
+    // The user's choice still wins, and dual keeps its own default on llvmpipe.
+    CHECK(valueOf(resolveSettingsForDevice(ids, {{"wboit.precision=16", "--set"}}, kLlvmpipe), "wboit", "precision") == 16);
+    CHECK(valueOf(resolveSettingsForDevice(ids, {}, kLlvmpipe), "dual", "atomic_range") == 0);
 }

@@ -6,9 +6,14 @@ namespace strata {
 
 std::vector<SettingAssignment> deviceDefaultSettings(const std::vector<std::string>& ids, const gl::DeviceInfo& device) {
     std::vector<SettingAssignment> out;
-    if (device.software()) return out;
+    auto has = [&ids](const char* id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); };
+    if (device.software()) {
+        const std::string origin = "the default on a software renderer (" + device.renderer + ")";
+        if (has("wboit")) out.push_back({"wboit.precision=32", origin});
+        return out;
+    }
     const std::string origin = "the default on a hardware renderer (" + device.renderer + ")";
-    if (std::find(ids.begin(), ids.end(), "dual") != ids.end()) out.push_back({"dual.atomic_range=1", origin});
+    if (has("dual")) out.push_back({"dual.atomic_range=1", origin});
     return out;
 }
 
