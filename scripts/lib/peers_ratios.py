@@ -3,9 +3,14 @@
 (and over Strata's own base technique), one cell per layer count with every run's ratio, and the
 issue's aim beside it. Below 1 is faster.
 
-usage: peers_ratios.py RUN.txt [RUN.txt ...]   (each the stdout of one peers.sh run)
+usage: peers_ratios.py [--median] RUN.txt [RUN.txt ...]   (each the stdout of one peers.sh run)
+
+--median: each cell is the median of the runs' ratios and their range, "0.62 (0.57-0.71)", for
+a host that moves single runs by more than the differences looked for (a run's ratio is read
+within that run; the median is taken over the ratios, not over the times).
 """
 import re
+import statistics
 import sys
 
 # (row label, numerator, denominator, aim)
@@ -61,6 +66,11 @@ def main(paths):
     if not paths or paths[0] in ('-h', '--help'):
         print(__doc__)
         return 0 if paths else 2
+    median = paths[0] == '--median'
+    if median:
+        paths = paths[1:]
+        if not paths:
+            sys.exit('peers_ratios.py: --median needs at least one run')
     runs = [parse(p) for p in paths]
     layer_counts = sorted(runs[0])
     print('| Strata / peer | ' + ' | '.join('%d layers' % l for l in layer_counts) + ' | aim |')
@@ -71,8 +81,12 @@ def main(paths):
             ratios = []
             for run in runs:
                 t = run.get(l, {})
-                ratios.append('%.2f' % (t[num] / t[den]) if num in t and den in t and t[den] > 0 else '-')
-            cells.append(', '.join(ratios))
+                ratios.append(t[num] / t[den] if num in t and den in t and t[den] > 0 else None)
+            known = [r for r in ratios if r is not None]
+            if median:
+                cells.append('%.2f (%.2f-%.2f)' % (statistics.median(known), min(known), max(known)) if known else '-')
+            else:
+                cells.append(', '.join('-' if r is None else '%.2f' % r for r in ratios))
         print('| %s | %s | %s |' % (label, ' | '.join(cells), aim))
     return 0
 
